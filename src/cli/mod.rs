@@ -1,0 +1,105 @@
+//! Command-line interface: argument parsing and dispatch. Each subcommand
+//! lives in its own file and only calls the library's public API.
+
+mod demo;
+mod info;
+
+use clap::{Parser, Subcommand};
+use medax::shape::{Shape2d, ShapeError, ShapeOptions};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// medax: medial axes, Voronoi diagrams and offsets of shapes bounded by arcs and segments.
+#[derive(Parser)]
+#[command(version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+/// Options shared by commands that read a shape.
+#[derive(clap::Args)]
+struct ShapeArgs {
+    /// Shape file: .json (medax loops), .dxf (ASCII) or .svg.
+    shape: PathBuf,
+    /// Absolute touching tolerance in model units (default: 1e-9 × bounding-box diagonal).
+    #[arg(long)]
+    tolerance: Option<f64>,
+    /// Joint angle tolerance in radians (smooth vs corner).
+    #[arg(long, default_value_t = 1e-6)]
+    angle_tolerance: f64,
+    /// Gap closed when chaining DXF/SVG pieces into loops (default: 1e-6 × diagonal).
+    #[arg(long)]
+    chain_tolerance: Option<f64>,
+}
+
+impl ShapeArgs {
+    fn load(&self) -> Result<Shape2d, ShapeError> {
+        let opts = ShapeOptions {
+            tolerance: self.tolerance,
+            angle_tolerance: self.angle_tolerance,
+            chain_tolerance: self.chain_tolerance,
+            ..ShapeOptions::default()
+        };
+        Shape2d::from_file(&self.shape, &opts)
+    }
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Validate a shape and report loops, elements, joints, area and extent.
+    Info {
+        #[command(flatten)]
+        shape: ShapeArgs,
+    },
+    /// Draw a shape as SVG (arcs stay exact arcs).
+    Draw {
+        #[command(flatten)]
+        shape: ShapeArgs,
+        /// Output SVG file.
+        #[arg(short, long)]
+        output: PathBuf,
+        /// Picture width in pixels.
+        #[arg(long, default_value_t = 900.0)]
+        width: f64,
+    },
+    /// Run the demo: validate and draw the embedded demo shape (the default).
+    Demo {
+        /// Output SVG file.
+        #[arg(short, long, default_value = "medax-demo.svg")]
+        output: PathBuf,
+    },
+}
+
+/// Prints an error the way every subcommand does and picks the exit code:
+/// 1 for invalid input, 3 for I/O problems.
+fn fail(context: &Path, e: &ShapeError) -> ExitCode {
+    eprintln!("medax: {}: {e}", context.display());
+    match e {
+        ShapeError::Io { .. } => ExitCode::from(3),
+        _ => ExitCode::from(1),
+    }
+}
+
+fn write_file(path: &Path, text: &str) -> Result<(), ExitCode> {
+    std::fs::write(path, text).map_err(|e| {
+        eprintln!("medax: cannot write {}: {e}", path.display());
+        ExitCode::from(3)
+    })
+}
+
+/// Entry point of the binary.
+pub fn run() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command.unwrap_or(Command::Demo {
+        output: "medax-demo.svg".into(),
+    }) {
+        Command::Info { shape } => info::run(&shape),
+        Command::Draw { shape, output, width } => match shape.load() {
+            Ok(s) => write_file(&output, &s.to_svg(width)).map(|_| println!("wrote {}", output.display())),
+            Err(e) => Err(fail(&shape.shape, &e)),
+        },
+        Command::Demo { output } => demo::run(&output),
+    };
+    result.err().unwrap_or(ExitCode::SUCCESS)
+}

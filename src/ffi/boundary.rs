@@ -1,0 +1,104 @@
+//! The panic boundary and pointer checks every export goes through, so each
+//! exported function reads: check arguments, call the core, convert.
+
+use super::last_error::{set_last_error, FfiError};
+use super::status::mx_status;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+/// Runs `f`, turning its error or a panic into a status and the thread's
+/// last error. No panic unwinds into C.
+pub(crate) fn guard(f: impl FnOnce() -> Result<(), FfiError>) -> mx_status {
+    // The closure only touches data it owns or that C lent for this call;
+    // after a panic nothing of it is used again, so unwind safety holds.
+    match catch_unwind(AssertUnwindSafe(f)) {
+        Ok(Ok(())) => mx_status::MX_OK,
+        Ok(Err(e)) => {
+            let s = e.info.status;
+            set_last_error(e);
+            s
+        }
+        Err(payload) => {
+            let what = payload
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "unknown panic".into());
+            set_last_error(FfiError::new(
+                mx_status::MX_ERR_PANIC,
+                format!("internal error in medax (please report with the input): {what}"),
+            ));
+            mx_status::MX_ERR_PANIC
+        }
+    }
+}
+
+pub(crate) fn null_arg(name: &str) -> FfiError {
+    FfiError::new(mx_status::MX_ERR_NULL_ARGUMENT, format!("argument `{name}` is NULL"))
+}
+
+/// A shared reference from a C pointer, or a NULL-argument error.
+///
+/// # Safety
+/// `p` must be NULL or valid for reads for the duration of the call.
+pub(crate) unsafe fn deref<'a, T>(p: *const T, name: &str) -> Result<&'a T, FfiError> {
+    // SAFETY: per the contract above.
+    unsafe { p.as_ref() }.ok_or_else(|| null_arg(name))
+}
+
+/// A slice from a C pointer and length; NULL is allowed only for length 0.
+///
+/// # Safety
+/// `p` must be NULL or point to `len` readable, initialised `T`s.
+pub(crate) unsafe fn slice<'a, T>(p: *const T, len: usize, name: &str) -> Result<&'a [T], FfiError> {
+    if len == 0 {
+        return Ok(&[]);
+    }
+    if p.is_null() {
+        return Err(null_arg(name));
+    }
+    // SAFETY: non-NULL and, per the contract, `len` elements long.
+    Ok(unsafe { std::slice::from_raw_parts(p, len) })
+}
+
+/// Writes `v` through an out-pointer that was checked to be non-NULL.
+///
+/// # Safety
+/// `out` must be non-NULL and valid for writes.
+pub(crate) unsafe fn write_out<T>(out: *mut T, v: T) {
+    // SAFETY: per the contract above.
+    unsafe { out.write(v) }
+}
+
+/// Checks an out-pointer for NULL before any work is done.
+pub(crate) fn check_out<T>(out: *mut T, name: &str) -> Result<(), FfiError> {
+    if out.is_null() {
+        Err(null_arg(name))
+    } else {
+        Ok(())
+    }
+}
+
+/// A UTF-8 string from a NUL-terminated C string.
+///
+/// # Safety
+/// `p` must be NULL or a valid NUL-terminated string.
+pub(crate) unsafe fn c_str<'a>(p: *const std::ffi::c_char, name: &str) -> Result<&'a str, FfiError> {
+    if p.is_null() {
+        return Err(null_arg(name));
+    }
+    // SAFETY: non-NULL and NUL-terminated per the contract.
+    let s = unsafe { std::ffi::CStr::from_ptr(p) };
+    s.to_str().map_err(|_| {
+        FfiError::new(
+            mx_status::MX_ERR_INVALID_ARGUMENT,
+            format!("argument `{name}` is not valid UTF-8"),
+        )
+    })
+}
+
+pub(crate) fn index_error(what: &str, index: usize, len: usize) -> FfiError {
+    FfiError::new(
+        mx_status::MX_ERR_INDEX_OUT_OF_RANGE,
+        format!("{what} index {index} is out of range (0..{len})"),
+    )
+}

@@ -1,0 +1,24 @@
+//! The C ABI. Thin by design: convert C arguments, validate them, call the
+//! Rust API, convert the result. No geometry lives here.
+//!
+//! Conventions (every export follows them):
+//! * fallible functions return [`mx_status`]; `MX_OK` = 0;
+//! * out-parameters are written only on success;
+//! * failures record a thread-local message and [`mx_error_info`];
+//! * no panic crosses the boundary (it becomes `MX_ERR_PANIC`);
+//! * `_free(NULL)` is a no-op; const handles may be shared between threads.
+//!
+//! This is the only module allowed `unsafe` code.
+
+mod boundary;
+mod handles;
+mod last_error;
+mod shape2d;
+mod status;
+mod version;
+
+pub use handles::*;
+pub use last_error::*;
+pub use shape2d::*;
+pub use status::*;
+pub use version::*;

@@ -1,0 +1,603 @@
+//! C functions for 2D shapes: create, inspect, draw, free. Mirrors
+//! `crate::shape`; no geometry is computed here.
+
+use super::boundary::{c_str, check_out, deref, guard, index_error, slice, write_out};
+use super::last_error::FfiError;
+use super::status::mx_status;
+use crate::io::Format;
+use crate::kernel::Point;
+use crate::shape::{Element, ElementSpec, JointKind, Shape2d, ShapeOptions, Vertex};
+use std::ffi::c_char;
+
+/// A validated 2D shape: an outer loop and holes of segments and circular
+/// arcs. Opaque; create with `mx_shape2d_from_*`, release with
+/// `mx_shape2d_free`. Immutable: a `const mx_shape2d*` may be used from
+/// several threads at once.
+#[allow(non_camel_case_types)]
+pub struct mx_shape2d {
+    pub(crate) inner: Shape2d,
+}
+
+/// Tolerances for building shapes. Initialise with `mx_shape_options_default`
+/// (which sets `struct_size`), then change fields. Lengths in model units.
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct mx_shape_options {
+    /// `sizeof(mx_shape_options)` as the caller was compiled; lets later
+    /// versions add fields without breaking old callers.
+    pub struct_size: usize,
+    /// Absolute touching / zero-length tolerance; 0 = `relative_tolerance`
+    /// times the bounding-box diagonal.
+    pub tolerance: f64,
+    /// Relative tolerance used when `tolerance` is 0. Default 1e-9.
+    pub relative_tolerance: f64,
+    /// Joint angle tolerance in radians (smooth vs corner). Default 1e-6.
+    pub angle_tolerance: f64,
+    /// Arcs with a sagitta at most this become segments; negative = same as
+    /// the touching tolerance (default).
+    pub flatten_sagitta: f64,
+    /// Gap closed when chaining loose elements; 0 = 1e-6 × diagonal (default).
+    pub chain_tolerance: f64,
+}
+
+/// `mx_element.kind` of a line segment.
+pub const MX_ELEMENT_SEGMENT: u32 = 0;
+/// `mx_element.kind` of a circular arc.
+pub const MX_ELEMENT_ARC: u32 = 1;
+
+/// One boundary element. As output all fields are set. As input
+/// (`mx_shape2d_from_elements`), a segment reads `x0 y0 x1 y1`; an arc reads
+/// `x0 y0 x1 y1 cx cy ccw` (start, end, centre, direction; start == end is a
+/// full circle) and ignores `bulge` and `radius`.
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct mx_element {
+    /// `MX_ELEMENT_SEGMENT` or `MX_ELEMENT_ARC`.
+    pub kind: u32,
+    /// Non-zero when the arc runs counter-clockwise (0 for segments).
+    pub ccw: u32,
+    /// Start point x.
+    pub x0: f64,
+    /// Start point y.
+    pub y0: f64,
+    /// End point x.
+    pub x1: f64,
+    /// End point y.
+    pub y1: f64,
+    /// Arc centre x (0 for segments).
+    pub cx: f64,
+    /// Arc centre y (0 for segments).
+    pub cy: f64,
+    /// Arc radius (0 for segments).
+    pub radius: f64,
+    /// tan(sweep/4), positive counter-clockwise (0 for segments).
+    pub bulge: f64,
+}
+
+/// An axis-aligned box, model units.
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct mx_bbox {
+    /// Smallest x.
+    pub xmin: f64,
+    /// Smallest y.
+    pub ymin: f64,
+    /// Largest x.
+    pub xmax: f64,
+    /// Largest y.
+    pub ymax: f64,
+}
+
+/// `mx_joint` value: tangent-continuous joint.
+pub const MX_JOINT_SMOOTH: u32 = 0;
+/// `mx_joint` value: convex corner (interior angle below 180°).
+pub const MX_JOINT_CONVEX: u32 = 1;
+/// `mx_joint` value: reflex corner (interior angle above 180°).
+pub const MX_JOINT_REFLEX: u32 = 2;
+
+/// Format argument: guess from the file extension or content.
+pub const MX_FORMAT_AUTO: u32 = 0;
+/// Format argument: medax shape JSON.
+pub const MX_FORMAT_JSON: u32 = 1;
+/// Format argument: ASCII DXF.
+pub const MX_FORMAT_DXF: u32 = 2;
+/// Format argument: SVG document or path data.
+pub const MX_FORMAT_SVG: u32 = 3;
+
+/// Fills `out` with the default options (and its `struct_size`).
+///
+/// # Safety
+/// `out` must be NULL or point to a writable `mx_shape_options`.
+#[no_mangle]
+pub unsafe extern "C" fn mx_shape_options_default(out: *mut mx_shape_options) -> mx_status {
+    guard(|| {
+        check_out(out, "out")?;
+        let d = ShapeOptions::default();
+        let o = mx_shape_options {
+            struct_size: std::mem::size_of::<mx_shape_options>(),
+            tolerance: 0.0,
+            relative_tolerance: d.relative_tolerance,
+            angle_tolerance: d.angle_tolerance,
+            flatten_sagitta: -1.0,
+            chain_tolerance: 0.0,
+        };
+        // SAFETY: checked non-NULL above.
+        unsafe { write_out(out, o) };
+        Ok(())
+    })
+}
+
+/// Options from C; NULL means defaults.
+unsafe fn options(p: *const mx_shape_options) -> Result<ShapeOptions, FfiError> {
+    if p.is_null() {
+        return Ok(ShapeOptions::default());
+    }
+    // SAFETY: non-NULL; the caller promises a readable struct of at least
+    // `struct_size` bytes, which we check covers every field we read.
+    let o = unsafe { &*p };
+    if o.struct_size < std::mem::size_of::<mx_shape_options>() {
+        return Err(FfiError::new(
+            mx_status::MX_ERR_INVALID_ARGUMENT,
+            format!(
+                "mx_shape_options.struct_size = {} is smaller than this library's {}; call mx_shape_options_default first",
+                o.struct_size,
+                std::mem::size_of::<mx_shape_options>()
+            ),
+        ));
+    }
+    let opt_len = |v: f64| if v > 0.0 { Some(v) } else { None };
+    let opts = ShapeOptions {
+        tolerance: opt_len(o.tolerance),
+        relative_tolerance: o.relative_tolerance,
+        angle_tolerance: o.angle_tolerance,
+        flatten_sagitta: if o.flatten_sagitta < 0.0 {
+            None
+        } else {
+            Some(o.flatten_sagitta)
+        },
+        chain_tolerance: opt_len(o.chain_tolerance),
+    };
+    opts.check()?;
+    Ok(opts)
+}
+
+fn publish(out: *mut *mut mx_shape2d, shape: Shape2d) {
+    let h = Box::into_raw(Box::new(mx_shape2d { inner: shape }));
+    // SAFETY: every caller checked `out` for NULL before building the shape.
+    unsafe { write_out(out, h) };
+}
+
+/// Creates a shape from bulge loops. `xyb` holds `x, y, bulge` triples for
+/// all loops back to back (`xyb_len` doubles = 3 × total vertices);
+/// `loop_lengths[i]` is the vertex count of loop `i`; loop 0 is the outer
+/// boundary, the rest are holes. Bulge = tan(sweep/4) of the element from a
+/// vertex to the next (cyclic), positive counter-clockwise. Orientation is
+/// normalised (see `mx_shape2d_loop_reversed`). `options` may be NULL.
+/// On failure `*out` is untouched and the last error names the element.
+///
+/// # Safety
+/// Pointers must be NULL or valid for the given lengths; `out` writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_shape2d_from_bulges(
+    xyb: *const f64,
+    xyb_len: usize,
+    loop_lengths: *const usize,
+    loop_count: usize,
+    options: *const mx_shape_options,
+    out: *mut *mut mx_shape2d,
+) -> mx_status {
+    guard(|| {
+        check_out(out, "out")?;
+        // SAFETY: caller contract on pointer/length pairs.
+        let (data, lens, opts) = unsafe {
+            (
+                slice(xyb, xyb_len, "xyb")?,
+                slice(loop_lengths, loop_count, "loop_lengths")?,
+                self::options(options)?,
+            )
+        };
+        let total = lens.iter().try_fold(0usize, |a, &n| a.checked_add(n));
+        if total.and_then(|t| t.checked_mul(3)) != Some(data.len()) {
+            return Err(FfiError::new(
+                mx_status::MX_ERR_INVALID_ARGUMENT,
+                format!(
+                    "xyb_len = {} but the loop lengths add up to {:?} vertices (3 doubles each)",
+                    data.len(),
+                    total
+                ),
+            ));
+        }
+        let mut loops = Vec::with_capacity(lens.len());
+        let mut at = 0;
+        for &n in lens {
+            let vs = data[at..at + 3 * n]
+                .chunks_exact(3)
+                .map(|c| Vertex {
+                    p: Point::new(c[0], c[1]),
+                    bulge: c[2],
+                })
+                .collect();
+            loops.push(vs);
+            at += 3 * n;
+        }
+        publish(out, Shape2d::from_bulge_loops(loops, &opts)?);
+        Ok(())
+    })
+}
+
+/// Creates a shape from explicit segments and arcs (see `mx_element` for the
+/// fields read). `elements` holds all loops back to back; `loop_lengths[i]`
+/// is the element count of loop `i`; loop 0 is the outer boundary.
+/// Consecutive elements must meet within the chaining tolerance.
+///
+/// # Safety
+/// Pointers must be NULL or valid for the given lengths; `out` writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_shape2d_from_elements(
+    elements: *const mx_element,
+    element_count: usize,
+    loop_lengths: *const usize,
+    loop_count: usize,
+    options: *const mx_shape_options,
+    out: *mut *mut mx_shape2d,
+) -> mx_status {
+    guard(|| {
+        check_out(out, "out")?;
+        // SAFETY: caller contract on pointer/length pairs.
+        let (elems, lens, opts) = unsafe {
+            (
+                slice(elements, element_count, "elements")?,
+                slice(loop_lengths, loop_count, "loop_lengths")?,
+                self::options(options)?,
+            )
+        };
+        if lens.iter().try_fold(0usize, |a, &n| a.checked_add(n)) != Some(elems.len()) {
+            return Err(FfiError::new(
+                mx_status::MX_ERR_INVALID_ARGUMENT,
+                format!("element_count = {} does not match the sum of loop_lengths", elems.len()),
+            ));
+        }
+        let mut loops = Vec::with_capacity(lens.len());
+        let mut at = 0;
+        for (li, &n) in lens.iter().enumerate() {
+            let mut specs = Vec::with_capacity(n);
+            for (i, e) in elems[at..at + n].iter().enumerate() {
+                let (a, b) = (Point::new(e.x0, e.y0), Point::new(e.x1, e.y1));
+                specs.push(match e.kind {
+                    MX_ELEMENT_SEGMENT => ElementSpec::Segment { a, b },
+                    MX_ELEMENT_ARC => ElementSpec::ArcPoints {
+                        a,
+                        b,
+                        center: Point::new(e.cx, e.cy),
+                        ccw: e.ccw != 0,
+                    },
+                    k => {
+                        return Err(FfiError::new(
+                            mx_status::MX_ERR_INVALID_ARGUMENT,
+                            format!("loop {li} element {i}: unknown kind {k}"),
+                        ))
+                    }
+                });
+            }
+            loops.push(specs);
+            at += n;
+        }
+        publish(out, Shape2d::from_elements(&loops, &opts)?);
+        Ok(())
+    })
+}
+
+fn format_of(code: u32) -> Result<Option<Format>, FfiError> {
+    match code {
+        MX_FORMAT_AUTO => Ok(None),
+        MX_FORMAT_JSON => Ok(Some(Format::Json)),
+        MX_FORMAT_DXF => Ok(Some(Format::Dxf)),
+        MX_FORMAT_SVG => Ok(Some(Format::Svg)),
+        other => Err(FfiError::new(
+            mx_status::MX_ERR_INVALID_ARGUMENT,
+            format!("unknown format {other}"),
+        )),
+    }
+}
+
+/// Reads a shape file (JSON, DXF or SVG; `MX_FORMAT_AUTO` picks by extension,
+/// then content). `path` is UTF-8.
+///
+/// # Safety
+/// `path` must be NULL or NUL-terminated; `options` NULL or valid; `out` writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_shape2d_from_file(
+    path: *const c_char,
+    format: u32,
+    options: *const mx_shape_options,
+    out: *mut *mut mx_shape2d,
+) -> mx_status {
+    guard(|| {
+        check_out(out, "out")?;
+        // SAFETY: caller contract.
+        let (path, opts) = unsafe { (c_str(path, "path")?, self::options(options)?) };
+        let shape = match format_of(format)? {
+            None => Shape2d::from_file(path, &opts)?,
+            Some(f) => {
+                let text = std::fs::read(path).map_err(|e| {
+                    FfiError::from(crate::shape::ShapeError::Io {
+                        path: path.into(),
+                        message: e.to_string(),
+                    })
+                })?;
+                Shape2d::from_str_as(&String::from_utf8_lossy(&text), f, &opts)?
+            }
+        };
+        publish(out, shape);
+        Ok(())
+    })
+}
+
+/// Parses a shape from a NUL-terminated string in the given format
+/// (`MX_FORMAT_AUTO` guesses from the content).
+///
+/// # Safety
+/// `text` must be NULL or NUL-terminated; `options` NULL or valid; `out` writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_shape2d_from_string(
+    text: *const c_char,
+    format: u32,
+    options: *const mx_shape_options,
+    out: *mut *mut mx_shape2d,
+) -> mx_status {
+    guard(|| {
+        check_out(out, "out")?;
+        // SAFETY: caller contract.
+        let (text, opts) = unsafe { (c_str(text, "text")?, self::options(options)?) };
+        let f = format_of(format)?.unwrap_or_else(|| crate::shape::sniff(text));
+        publish(out, Shape2d::from_str_as(text, f, &opts)?);
+        Ok(())
+    })
+}
+
+/// Releases a shape. NULL is a no-op.
+///
+/// # Safety
+/// `shape` must be NULL or a shape from medax not yet freed.
+#[no_mangle]
+pub unsafe extern "C" fn mx_shape2d_free(shape: *mut mx_shape2d) {
+    if !shape.is_null() {
+        // SAFETY: per the contract, it came from Box::into_raw in `publish`.
+        drop(unsafe { Box::from_raw(shape) });
+    }
+}
+
+/// Runs `f` on a shape handle and writes its result to `out`.
+unsafe fn query<T>(
+    shape: *const mx_shape2d,
+    out: *mut T,
+    f: impl FnOnce(&Shape2d) -> Result<T, FfiError>,
+) -> mx_status {
+    guard(|| {
+        check_out(out, "out")?;
+        // SAFETY: caller contract: NULL or a live handle.
+        let s = unsafe { deref(shape, "shape")? };
+        let v = f(&s.inner)?;
+        // SAFETY: checked non-NULL above.
+        unsafe { write_out(out, v) };
+        Ok(())
+    })
+}
+
+fn loop_of(s: &Shape2d, l: usize) -> Result<&crate::shape::Loop, FfiError> {
+    s.loops().get(l).ok_or_else(|| index_error("loop", l, s.loops().len()))
+}
+
+/// Number of loops (1 + number of holes).
+///
+/// # Safety
+/// `shape` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_shape2d_loop_count(shape: *const mx_shape2d, out: *mut usize) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { query(shape, out, |s| Ok(s.loops().len())) }
+}
+
+/// Number of elements (= vertices) of loop `loop_index`.
+///
+/// # Safety
+/// `shape` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_shape2d_loop_size(
+    shape: *const mx_shape2d,
+    loop_index: usize,
+    out: *mut usize,
+) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { query(shape, out, |s| Ok(loop_of(s, loop_index)?.len())) }
+}
+
+/// Writes 1 to `out` when loop `loop_index` was given in the other
+/// orientation and was reversed (outer loops are stored counter-clockwise,
+/// holes clockwise); stored element `k` of an n-element reversed loop is
+/// input element `(n - 2 - k) mod n`.
+///
+/// # Safety
+/// `shape` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_shape2d_loop_reversed(
+    shape: *const mx_shape2d,
+    loop_index: usize,
+    out: *mut u32,
+) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe {
+        query(shape, out, |s| {
+            loop_of(s, loop_index)?;
+            Ok(s.was_reversed(loop_index) as u32)
+        })
+    }
+}
+
+/// Copies loop `loop_index` as `x, y, bulge` triples into `xyb`
+/// (`capacity` doubles; needs 3 × `mx_shape2d_loop_size`) and writes the
+/// number of vertices to `written`. Fails with `MX_ERR_BUFFER_TOO_SMALL`
+/// (nothing written) when the buffer is short.
+///
+/// # Safety
+/// `xyb` NULL or `capacity` writable doubles; `written` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_shape2d_loop_vertices(
+    shape: *const mx_shape2d,
+    loop_index: usize,
+    xyb: *mut f64,
+    capacity: usize,
+    written: *mut usize,
+) -> mx_status {
+    guard(|| {
+        check_out(written, "written")?;
+        // SAFETY: caller contract.
+        let s = unsafe { deref(shape, "shape")? };
+        let l = loop_of(&s.inner, loop_index)?;
+        let need = 3 * l.len();
+        if capacity < need {
+            return Err(FfiError::new(
+                mx_status::MX_ERR_BUFFER_TOO_SMALL,
+                format!("loop {loop_index} needs {need} doubles, buffer holds {capacity}"),
+            ));
+        }
+        check_out(xyb, "xyb")?;
+        for (i, v) in l.vertices().iter().enumerate() {
+            // SAFETY: i*3+2 < need <= capacity, and `xyb` holds `capacity` doubles.
+            unsafe {
+                *xyb.add(3 * i) = v.p.x;
+                *xyb.add(3 * i + 1) = v.p.y;
+                *xyb.add(3 * i + 2) = v.bulge;
+            }
+        }
+        // SAFETY: checked non-NULL.
+        unsafe { write_out(written, l.len()) };
+        Ok(())
+    })
+}
+
+/// Element `index` of loop `loop_index` (stored orientation) with all its
+/// geometry.
+///
+/// # Safety
+/// `shape` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_shape2d_element(
+    shape: *const mx_shape2d,
+    loop_index: usize,
+    index: usize,
+    out: *mut mx_element,
+) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe {
+        query(shape, out, |s| {
+            let l = loop_of(s, loop_index)?;
+            if index >= l.len() {
+                return Err(index_error("element", index, l.len()));
+            }
+            let e = l.element(index);
+            let (a, b) = (e.start(), e.end());
+            let mut m = mx_element {
+                x0: a.x,
+                y0: a.y,
+                x1: b.x,
+                y1: b.y,
+                ..Default::default()
+            };
+            if let Element::Arc(arc) = e {
+                m.kind = MX_ELEMENT_ARC;
+                m.ccw = arc.is_ccw() as u32;
+                m.cx = arc.center.x;
+                m.cy = arc.center.y;
+                m.radius = arc.radius;
+                m.bulge = arc.bulge;
+            }
+            Ok(m)
+        })
+    }
+}
+
+/// The joint at vertex `index` of loop `loop_index`: `MX_JOINT_SMOOTH`,
+/// `MX_JOINT_CONVEX` or `MX_JOINT_REFLEX` (seen from the shape's interior).
+///
+/// # Safety
+/// `shape` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_shape2d_joint(
+    shape: *const mx_shape2d,
+    loop_index: usize,
+    index: usize,
+    out: *mut u32,
+) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe {
+        query(shape, out, |s| {
+            let l = loop_of(s, loop_index)?;
+            if index >= l.len() {
+                return Err(index_error("vertex", index, l.len()));
+            }
+            Ok(match s.joint(loop_index, index) {
+                JointKind::Smooth => MX_JOINT_SMOOTH,
+                JointKind::Convex => MX_JOINT_CONVEX,
+                JointKind::Reflex => MX_JOINT_REFLEX,
+            })
+        })
+    }
+}
+
+/// Tight bounding box of the boundary (arcs included exactly).
+///
+/// # Safety
+/// `shape` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_shape2d_bbox(shape: *const mx_shape2d, out: *mut mx_bbox) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe {
+        query(shape, out, |s| {
+            let b = s.bbox();
+            Ok(mx_bbox {
+                xmin: b.min.x,
+                ymin: b.min.y,
+                xmax: b.max.x,
+                ymax: b.max.y,
+            })
+        })
+    }
+}
+
+/// Enclosed area (outer minus holes), square model units; arcs exact.
+///
+/// # Safety
+/// `shape` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_shape2d_area(shape: *const mx_shape2d, out: *mut f64) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { query(shape, out, |s| Ok(s.area())) }
+}
+
+/// The absolute length tolerance the shape was validated with (model units).
+///
+/// # Safety
+/// `shape` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_shape2d_tolerance(shape: *const mx_shape2d, out: *mut f64) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { query(shape, out, |s| Ok(s.tolerance())) }
+}
+
+/// Writes a picture of the shape (SVG, arcs exact) to `path`.
+///
+/// # Safety
+/// `shape` NULL or a live handle; `path` NULL or NUL-terminated.
+#[no_mangle]
+pub unsafe extern "C" fn mx_shape2d_write_svg(shape: *const mx_shape2d, path: *const c_char) -> mx_status {
+    guard(|| {
+        // SAFETY: caller contract.
+        let (s, path) = unsafe { (deref(shape, "shape")?, c_str(path, "path")?) };
+        std::fs::write(path, s.inner.to_svg(900.0))
+            .map_err(|e| FfiError::new(mx_status::MX_ERR_IO, format!("cannot write {path}: {e}")))
+    })
+}

@@ -1,0 +1,721 @@
+//! ASCII DXF reader: LWPOLYLINE, POLYLINE/VERTEX/SEQEND, LINE, ARC and CIRCLE
+//! entities of the ENTITIES section, as raw plain data.
+//!
+//! A DXF file is a sequence of group code/value line pairs. Only the ENTITIES
+//! section is read (a bare entity list with no SECTION structure is accepted
+//! too); HEADER, TABLES, BLOCKS, OBJECTS and the rest are skipped, so block
+//! definitions and the INSERTs that place them are not expanded. Unknown
+//! entities and unknown group codes are ignored, because real files carry many
+//! of both. Z values are ignored: everything is read in the XY plane, in the
+//! drawing's model units.
+//!
+//! Mirrored entities: CAD programs often write 2D entities with the extrusion
+//! direction (groups 210/220/230) set to (0, 0, -1). ARC, CIRCLE, LWPOLYLINE
+//! and 2D POLYLINE coordinates are in the entity's object coordinate system,
+//! whose x axis is then the world's -x. When group 230 is negative the reader
+//! maps them to world coordinates: x is negated, arc angles `a` become
+//! `180° - a` with start and end swapped (so arcs stay counter-clockwise), and
+//! bulges change sign (the mirror reverses the turning direction). LINE
+//! endpoints are world coordinates in DXF, so LINE is never mirrored. Other
+//! (tilted) extrusion directions are read as if they were +Z.
+//!
+//! Every error is a [`ParseError`] with the 1-based line of the offending group
+//! code or value and column 1. Numbers are parsed with Rust's `f64` parser
+//! after trimming; "inf" and "nan" are passed through for the shape layer to
+//! reject.
+
+use super::{Format, ParseError, RawArc, RawCircle, RawDrawing, RawLine, RawPolyline, RawVertex};
+
+/// POLYLINE flag bits of 3D polylines, polygon meshes and polyface meshes,
+/// which have no place in a 2D shape and are skipped.
+const POLYLINE_NOT_2D: i64 = 8 | 16 | 64;
+/// VERTEX flag bit of spline frame control points: they are not on the curve.
+const VERTEX_SPLINE_FRAME: i64 = 16;
+
+/// Reads an ASCII DXF drawing into raw polylines, lines, arcs and circles in
+/// model units, in file order; `source` fields are the 1-based line of each
+/// entity's `0` group code. See the module documentation for what is read and
+/// how mirrored (extrusion 0, 0, -1) entities are handled.
+///
+/// # Errors
+///
+/// Binary DXF; a group code that is not an integer; a number or flag value
+/// that does not parse; a file ending between a group code and its value; an
+/// entity missing a required group (e.g. a LINE without 11).
+pub fn read_dxf(text: &str) -> Result<RawDrawing, ParseError> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    if text.starts_with("AutoCAD Binary DXF") {
+        return Err(error(
+            1,
+            "binary DXF is not supported; save the drawing as ASCII DXF".into(),
+        ));
+    }
+    let mut pairs = Pairs::new(text);
+    let mut reader = Reader::default();
+    // A record is a `0 NAME` pair and the non-zero groups after it; it can only
+    // be interpreted once the next `0` pair (or the end) shows it is complete.
+    let mut head: Option<Pair> = None;
+    let mut groups: Vec<Pair> = Vec::new();
+    loop {
+        let next = pairs.next_pair()?;
+        if let Some(p) = next {
+            if p.code != 0 {
+                // Groups before the first `0` (e.g. 999 comments) belong to nothing.
+                if head.is_some() {
+                    groups.push(p);
+                }
+                continue;
+            }
+        }
+        if let Some(h) = head.take() {
+            reader.record(&h, &groups)?;
+        }
+        groups.clear();
+        match next {
+            // Anything after EOF is not part of the drawing.
+            Some(p) if p.value.trim().eq_ignore_ascii_case("EOF") => break,
+            Some(p) => head = Some(p),
+            None => break,
+        }
+    }
+    reader.flush_polyline();
+    Ok(reader.out)
+}
+
+fn error(line: usize, message: String) -> ParseError {
+    ParseError {
+        format: Format::Dxf,
+        line,
+        column: 1,
+        message,
+    }
+}
+
+/// Quotes a file value for a message, shortened so that a huge garbage line
+/// does not produce a huge message.
+fn shown(value: &str) -> String {
+    const MAX: usize = 40;
+    let v = value.trim();
+    match v.char_indices().nth(MAX) {
+        Some((cut, _)) => format!("{:?}...", &v[..cut]),
+        None => format!("{v:?}"),
+    }
+}
+
+/// One group: code, raw value, and the 1-based line of the code (the value is
+/// on the next line).
+#[derive(Debug, Clone, Copy)]
+struct Pair<'a> {
+    code: i32,
+    value: &'a str,
+    line: usize,
+}
+
+/// Splits the text into group code/value pairs, one pair at a time.
+struct Pairs<'a> {
+    rest: &'a str,
+    line: usize,
+    eol: char,
+}
+
+impl<'a> Pairs<'a> {
+    fn new(text: &'a str) -> Pairs<'a> {
+        // Files from classic Mac OS end lines with a bare CR.
+        let eol = if !text.contains('\n') && text.contains('\r') {
+            '\r'
+        } else {
+            '\n'
+        };
+        Pairs {
+            rest: text,
+            line: 0,
+            eol,
+        }
+    }
+
+    fn next_line(&mut self) -> Option<&'a str> {
+        if self.rest.is_empty() {
+            return None;
+        }
+        let (l, rest) = self.rest.split_once(self.eol).unwrap_or((self.rest, ""));
+        self.rest = rest;
+        self.line += 1;
+        Some(l.strip_suffix('\r').unwrap_or(l))
+    }
+
+    fn next_pair(&mut self) -> Result<Option<Pair<'a>>, ParseError> {
+        let Some(code) = self.next_line() else { return Ok(None) };
+        let line = self.line;
+        let code = code.trim();
+        // Trailing blank lines are common (and harmless) when there is no EOF.
+        // This scan happens at most once: otherwise the blank code is an error.
+        if code.is_empty() && self.rest.trim_start().is_empty() {
+            return Ok(None);
+        }
+        let code = code
+            .parse::<i32>()
+            .map_err(|_| error(line, format!("expected an integer group code, found {}", shown(code))))?;
+        let Some(value) = self.next_line() else {
+            return Err(error(
+                line,
+                format!("file ends after group code {code}, in the middle of a code/value pair"),
+            ));
+        };
+        Ok(Some(Pair { code, value, line }))
+    }
+}
+
+/// Parses a value that must be a real number.
+fn number(entity: &str, at: usize, g: &Pair) -> Result<f64, ParseError> {
+    g.value.trim().parse::<f64>().map_err(|_| {
+        let msg = format!(
+            "{entity} at line {at}: group {} should be a number, found {}",
+            g.code,
+            shown(g.value)
+        );
+        error(g.line + 1, msg)
+    })
+}
+
+/// Parses a value that must be an integer (flags).
+fn integer(entity: &str, at: usize, g: &Pair) -> Result<i64, ParseError> {
+    g.value.trim().parse::<i64>().map_err(|_| {
+        let msg = format!(
+            "{entity} at line {at}: group {} should be an integer, found {}",
+            g.code,
+            shown(g.value)
+        );
+        error(g.line + 1, msg)
+    })
+}
+
+/// The groups of a simple entity that this reader uses. DXF assigns codes
+/// 10-59 to reals and 70-79 to integers in every entity, so parsing them all
+/// cannot reject a valid file.
+#[derive(Default)]
+struct Fields {
+    x: Option<f64>,
+    y: Option<f64>,
+    x2: Option<f64>,
+    y2: Option<f64>,
+    radius: Option<f64>,
+    bulge: Option<f64>,
+    start_deg: Option<f64>,
+    end_deg: Option<f64>,
+    flags: Option<i64>,
+    extrusion_z: Option<f64>,
+}
+
+impl Fields {
+    fn read(entity: &str, at: usize, groups: &[Pair]) -> Result<Fields, ParseError> {
+        let mut f = Fields::default();
+        for g in groups {
+            let slot = match g.code {
+                10 => &mut f.x,
+                20 => &mut f.y,
+                11 => &mut f.x2,
+                21 => &mut f.y2,
+                40 => &mut f.radius,
+                42 => &mut f.bulge,
+                50 => &mut f.start_deg,
+                51 => &mut f.end_deg,
+                230 => &mut f.extrusion_z,
+                70 => {
+                    f.flags = Some(integer(entity, at, g)?);
+                    continue;
+                }
+                _ => continue,
+            };
+            *slot = Some(number(entity, at, g)?);
+        }
+        Ok(f)
+    }
+
+    fn mirrored(&self) -> bool {
+        self.extrusion_z.is_some_and(|z| z < 0.0)
+    }
+}
+
+/// Unwraps a required group or says which one is missing.
+fn required(entity: &str, at: usize, value: Option<f64>, code: i32, what: &str) -> Result<f64, ParseError> {
+    value.ok_or_else(|| error(at, format!("{entity} at line {at} has no {what} (group {code})")))
+}
+
+/// A POLYLINE whose VERTEX entities are still being read.
+struct OpenPolyline {
+    polyline: RawPolyline,
+    /// 3D polyline or mesh: read past its vertices without keeping them.
+    skip: bool,
+    mirror: bool,
+}
+
+#[derive(Default, PartialEq)]
+enum Section {
+    /// Outside any SECTION: a bare entity list is read.
+    #[default]
+    None,
+    Entities,
+    /// Any other section: skipped.
+    Other,
+}
+
+#[derive(Default)]
+struct Reader {
+    out: RawDrawing,
+    section: Section,
+    polyline: Option<OpenPolyline>,
+}
+
+impl Reader {
+    /// Interprets one complete record: its `0` pair and the groups after it.
+    fn record(&mut self, head: &Pair, groups: &[Pair]) -> Result<(), ParseError> {
+        let name = head.value.trim().to_ascii_uppercase();
+        match name.as_str() {
+            "SECTION" => {
+                self.flush_polyline();
+                let is_entities = groups
+                    .iter()
+                    .any(|g| g.code == 2 && g.value.trim().eq_ignore_ascii_case("ENTITIES"));
+                self.section = if is_entities { Section::Entities } else { Section::Other };
+                return Ok(());
+            }
+            "ENDSEC" => {
+                self.flush_polyline();
+                self.section = Section::None;
+                return Ok(());
+            }
+            _ => {}
+        }
+        if self.section == Section::Other {
+            return Ok(());
+        }
+        let at = head.line;
+        if name == "VERTEX" {
+            return self.vertex(at, groups);
+        }
+        // Any other entity ends a POLYLINE, also when its SEQEND is missing.
+        self.flush_polyline();
+        match name.as_str() {
+            "LWPOLYLINE" => self.lwpolyline(at, groups),
+            "POLYLINE" => {
+                let f = Fields::read("POLYLINE", at, groups)?;
+                let flags = f.flags.unwrap_or(0);
+                self.polyline = Some(OpenPolyline {
+                    polyline: RawPolyline {
+                        vertices: Vec::new(),
+                        closed: flags & 1 != 0,
+                        source: at,
+                    },
+                    skip: flags & POLYLINE_NOT_2D != 0,
+                    mirror: f.mirrored(),
+                });
+                Ok(())
+            }
+            "LINE" => {
+                let f = Fields::read("LINE", at, groups)?;
+                // LINE endpoints are world coordinates: no mirroring.
+                let line = RawLine {
+                    a: [
+                        required("LINE", at, f.x, 10, "start x")?,
+                        required("LINE", at, f.y, 20, "start y")?,
+                    ],
+                    b: [
+                        required("LINE", at, f.x2, 11, "end x")?,
+                        required("LINE", at, f.y2, 21, "end y")?,
+                    ],
+                    source: at,
+                };
+                self.out.lines.push(line);
+                Ok(())
+            }
+            "ARC" => {
+                let f = Fields::read("ARC", at, groups)?;
+                let mut arc = RawArc {
+                    center: [
+                        required("ARC", at, f.x, 10, "centre x")?,
+                        required("ARC", at, f.y, 20, "centre y")?,
+                    ],
+                    radius: required("ARC", at, f.radius, 40, "radius")?,
+                    start_deg: required("ARC", at, f.start_deg, 50, "start angle")?,
+                    end_deg: required("ARC", at, f.end_deg, 51, "end angle")?,
+                    source: at,
+                };
+                if f.mirrored() {
+                    // Mirroring reverses the direction: the old end becomes the start.
+                    arc.center[0] = -arc.center[0];
+                    let (s, e) = (arc.start_deg, arc.end_deg);
+                    arc.start_deg = 180.0 - e;
+                    arc.end_deg = 180.0 - s;
+                }
+                self.out.arcs.push(arc);
+                Ok(())
+            }
+            "CIRCLE" => {
+                let f = Fields::read("CIRCLE", at, groups)?;
+                let mut circle = RawCircle {
+                    center: [
+                        required("CIRCLE", at, f.x, 10, "centre x")?,
+                        required("CIRCLE", at, f.y, 20, "centre y")?,
+                    ],
+                    radius: required("CIRCLE", at, f.radius, 40, "radius")?,
+                    source: at,
+                };
+                if f.mirrored() {
+                    circle.center[0] = -circle.center[0];
+                }
+                self.out.circles.push(circle);
+                Ok(())
+            }
+            // SEQEND only ends the POLYLINE, done above; the rest is not geometry we read.
+            _ => Ok(()),
+        }
+    }
+
+    fn vertex(&mut self, at: usize, groups: &[Pair]) -> Result<(), ParseError> {
+        // A VERTEX outside a POLYLINE is stray; a 3D one is skipped unread.
+        let Some(open) = self.polyline.as_mut() else {
+            return Ok(());
+        };
+        if open.skip {
+            return Ok(());
+        }
+        let f = Fields::read("VERTEX", at, groups)?;
+        if f.flags.unwrap_or(0) & VERTEX_SPLINE_FRAME != 0 {
+            return Ok(());
+        }
+        let mut v = RawVertex {
+            x: required("VERTEX", at, f.x, 10, "x")?,
+            y: required("VERTEX", at, f.y, 20, "y")?,
+            bulge: f.bulge.unwrap_or(0.0),
+        };
+        if open.mirror {
+            v.x = -v.x;
+            v.bulge = -v.bulge;
+        }
+        open.polyline.vertices.push(v);
+        Ok(())
+    }
+
+    fn lwpolyline(&mut self, at: usize, groups: &[Pair]) -> Result<(), ParseError> {
+        const E: &str = "LWPOLYLINE";
+        // Group 90 (vertex count) is not trusted: the 10 groups are the vertices.
+        let mut vertices: Vec<RawVertex> = Vec::new();
+        // Line of the latest 10 group while its 20 has not been seen.
+        let mut missing_y: Option<usize> = None;
+        let (mut closed, mut mirror) = (false, false);
+        for g in groups {
+            match g.code {
+                10 => {
+                    if let Some(l) = missing_y {
+                        return Err(error(
+                            l,
+                            format!("{E} at line {at}: vertex x (group 10) has no y (group 20)"),
+                        ));
+                    }
+                    vertices.push(RawVertex {
+                        x: number(E, at, g)?,
+                        y: 0.0,
+                        bulge: 0.0,
+                    });
+                    missing_y = Some(g.line);
+                }
+                20 | 42 => {
+                    let value = number(E, at, g)?;
+                    let Some(v) = vertices.last_mut() else {
+                        let msg = format!(
+                            "{E} at line {at}: group {} comes before the first vertex x (group 10)",
+                            g.code
+                        );
+                        return Err(error(g.line, msg));
+                    };
+                    if g.code == 20 {
+                        v.y = value;
+                        missing_y = None;
+                    } else {
+                        v.bulge = value;
+                    }
+                }
+                70 => closed = integer(E, at, g)? & 1 != 0,
+                230 => mirror = number(E, at, g)? < 0.0,
+                _ => {}
+            }
+        }
+        if let Some(l) = missing_y {
+            return Err(error(
+                l,
+                format!("{E} at line {at}: vertex x (group 10) has no y (group 20)"),
+            ));
+        }
+        if mirror {
+            for v in &mut vertices {
+                v.x = -v.x;
+                v.bulge = -v.bulge;
+            }
+        }
+        self.out.polylines.push(RawPolyline {
+            vertices,
+            closed,
+            source: at,
+        });
+        Ok(())
+    }
+
+    /// Ends the open POLYLINE, if any, keeping it unless it is 3D.
+    fn flush_polyline(&mut self) {
+        if let Some(open) = self.polyline.take() {
+            if !open.skip {
+                self.out.polylines.push(open.polyline);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Builds DXF text from (code, value) pairs with the given line ending.
+    fn dxf(pairs: &[(i32, &str)], eol: &str) -> String {
+        pairs.iter().map(|(c, v)| format!("{c:>3}{eol}{v}{eol}")).collect()
+    }
+
+    /// Wraps entity pairs in a file with HEADER, BLOCKS and ENTITIES sections.
+    fn entities<'a>(body: &[(i32, &'a str)]) -> Vec<(i32, &'a str)> {
+        let mut all = vec![
+            (0, "SECTION"),
+            (2, "HEADER"),
+            (9, "$ACADVER"),
+            (1, "AC1015"),
+            (0, "ENDSEC"),
+        ];
+        all.extend([(0, "SECTION"), (2, "BLOCKS"), (0, "BLOCK"), (0, "LINE")]);
+        all.extend([(10, "0"), (20, "0"), (11, "1"), (21, "1"), (0, "ENDBLK"), (0, "ENDSEC")]);
+        all.extend([(0, "SECTION"), (2, "ENTITIES")]);
+        all.extend_from_slice(body);
+        all.extend([(0, "ENDSEC"), (0, "EOF")]);
+        all
+    }
+
+    #[test]
+    fn reads_all_entity_kinds_with_crlf_and_bom() {
+        let body = [
+            (0, "LWPOLYLINE"),
+            (5, "2F"),
+            (100, "AcDbPolyline"),
+            (90, "3"),
+            (70, "1"),
+            (10, "0.0"),
+            (20, "0.0"),
+            (10, "10"),
+            (20, "0"),
+            (42, "0.5"),
+            (10, " 10 "),
+            (20, "5e0"),
+            (0, "LINE"),
+            (10, "1"),
+            (20, "2"),
+            (30, "0"),
+            (11, "3"),
+            (21, "4"),
+            (0, "ARC"),
+            (10, "5"),
+            (20, "6"),
+            (40, "2"),
+            (50, "0"),
+            (51, "90"),
+            (0, "CIRCLE"),
+            (10, "-1"),
+            (20, "-2"),
+            (40, "0.25"),
+            (0, "POLYLINE"),
+            (66, "1"),
+            (70, "1"),
+            (0, "VERTEX"),
+            (10, "0"),
+            (20, "0"),
+            (42, "-1"),
+            (0, "VERTEX"),
+            (70, "16"),
+            (10, "99"),
+            (20, "99"),
+            (0, "VERTEX"),
+            (10, "2"),
+            (20, "0"),
+            (0, "SEQEND"),
+            (0, "HATCH"),
+            (10, "oops, not read"),
+        ];
+        let text = format!("\u{feff}{}", dxf(&entities(&body), "\r\n"));
+        let d = read_dxf(&text).unwrap();
+        // The LINE inside BLOCKS is not read.
+        assert_eq!(d.lines.len(), 1);
+        assert_eq!(d.lines[0].a, [1.0, 2.0]);
+        assert_eq!(d.lines[0].b, [3.0, 4.0]);
+        assert_eq!(d.polylines.len(), 2);
+        let lw = &d.polylines[0];
+        assert!(lw.closed);
+        assert_eq!(
+            lw.vertices,
+            vec![
+                RawVertex {
+                    x: 0.0,
+                    y: 0.0,
+                    bulge: 0.0
+                },
+                RawVertex {
+                    x: 10.0,
+                    y: 0.0,
+                    bulge: 0.5
+                },
+                RawVertex {
+                    x: 10.0,
+                    y: 5.0,
+                    bulge: 0.0
+                },
+            ]
+        );
+        // 15 HEADER and BLOCKS pairs, then SECTION and ENTITIES, come before it.
+        assert_eq!(lw.source, 2 * 17 + 1);
+        let arc = d.arcs[0];
+        assert_eq!(
+            (arc.center, arc.radius, arc.start_deg, arc.end_deg),
+            ([5.0, 6.0], 2.0, 0.0, 90.0)
+        );
+        assert_eq!((d.circles[0].center, d.circles[0].radius), ([-1.0, -2.0], 0.25));
+        let pl = &d.polylines[1];
+        assert!(pl.closed);
+        assert_eq!(pl.vertices.len(), 2, "the spline frame vertex is skipped");
+        assert_eq!(pl.vertices[0].bulge, -1.0);
+        assert_eq!((pl.vertices[1].x, pl.vertices[1].bulge), (2.0, 0.0));
+    }
+
+    #[test]
+    fn reads_a_bare_entity_list_and_skips_3d_polylines() {
+        let text = dxf(
+            &[
+                (0, "POLYLINE"),
+                (70, "8"),
+                (0, "VERTEX"),
+                (10, "junk is not parsed"),
+                (0, "SEQEND"),
+                (0, "CIRCLE"),
+                (10, "1"),
+                (20, "1"),
+                (40, "1"),
+            ],
+            "\n",
+        );
+        let d = read_dxf(&format!("{text}\n\n")).unwrap();
+        assert!(d.polylines.is_empty());
+        assert_eq!(d.circles.len(), 1);
+        assert_eq!(d.circles[0].source, 11);
+    }
+
+    #[test]
+    fn mirrors_entities_with_negative_extrusion() {
+        let body = [
+            (0, "ARC"),
+            (10, "3"),
+            (20, "1"),
+            (40, "1"),
+            (50, "10"),
+            (51, "100"),
+            (210, "0"),
+            (220, "0"),
+            (230, "-1"),
+            (0, "CIRCLE"),
+            (10, "3"),
+            (20, "1"),
+            (40, "1"),
+            (230, "-1.0"),
+            (0, "LWPOLYLINE"),
+            (10, "1"),
+            (20, "2"),
+            (42, "0.5"),
+            (10, "4"),
+            (20, "2"),
+            (230, "-1"),
+            (0, "LINE"),
+            (10, "1"),
+            (20, "2"),
+            (11, "3"),
+            (21, "4"),
+            (230, "-1"),
+        ];
+        let d = read_dxf(&dxf(&body, "\n")).unwrap();
+        let arc = d.arcs[0];
+        assert_eq!((arc.center, arc.start_deg, arc.end_deg), ([-3.0, 1.0], 80.0, 170.0));
+        assert_eq!(d.circles[0].center, [-3.0, 1.0]);
+        let v = &d.polylines[0].vertices;
+        assert_eq!((v[0].x, v[0].y, v[0].bulge, v[1].x), (-1.0, 2.0, -0.5, -4.0));
+        assert_eq!((d.lines[0].a, d.lines[0].b), ([1.0, 2.0], [3.0, 4.0]));
+    }
+
+    #[test]
+    fn reports_errors_with_line_numbers() {
+        let e = read_dxf("0\nLINE\n10\n1\n20\n2\n11\n3\n").unwrap_err();
+        assert_eq!((e.line, e.column), (1, 1));
+        assert!(
+            e.message.contains("LINE") && e.message.contains("group 21"),
+            "{}",
+            e.message
+        );
+
+        let e = read_dxf("0\nLINE\n10\n1\nx20\n2\n").unwrap_err();
+        assert_eq!(e.line, 5);
+        assert!(e.message.contains("integer group code"), "{}", e.message);
+
+        let e = read_dxf("0\nCIRCLE\n10\n1\n20\n2\n40\n1,5\n").unwrap_err();
+        assert_eq!(e.line, 8);
+        assert!(
+            e.message.contains("CIRCLE at line 1") && e.message.contains("\"1,5\""),
+            "{}",
+            e.message
+        );
+
+        let e = read_dxf("0\r\nCIRCLE\r\n10\r\n1\r\n20").unwrap_err();
+        assert_eq!(e.line, 5);
+        assert!(e.message.contains("middle"), "{}", e.message);
+
+        let e = read_dxf("0\nLWPOLYLINE\n10\n1\n10\n2\n20\n3\n").unwrap_err();
+        assert_eq!(e.line, 3);
+
+        let e = read_dxf("0\nPOLYLINE\n0\nVERTEX\n20\n1\n").unwrap_err();
+        assert_eq!(e.line, 3);
+        assert!(
+            e.message.contains("VERTEX") && e.message.contains("group 10"),
+            "{}",
+            e.message
+        );
+
+        let e = read_dxf("AutoCAD Binary DXF\r\n\u{1a}\0").unwrap_err();
+        assert!(e.message.contains("binary DXF"), "{}", e.message);
+    }
+
+    #[test]
+    fn passes_non_finite_numbers_through_and_ignores_text_after_eof() {
+        let d = read_dxf("0\nCIRCLE\n10\ninf\n20\nNaN\n40\n1\n0\nEOF\ngarbage").unwrap();
+        assert!(d.circles[0].center[0].is_infinite() && d.circles[0].center[1].is_nan());
+    }
+
+    #[test]
+    fn never_panics_on_garbage() {
+        let samples = [
+            "",
+            "\n",
+            "0",
+            "0\n",
+            " 0 \n\r\n",
+            "\u{feff}",
+            "0\nSECTION\n",
+            "0\nVERTEX\n10\n1\n",
+            "é\nü",
+            "\r\r\r",
+        ];
+        for s in samples {
+            let _ = read_dxf(s);
+        }
+        let long = "0\nLINE\n".repeat(10_000) + "999\ncomment";
+        assert!(read_dxf(&long).is_err());
+    }
+}

@@ -1,0 +1,117 @@
+//! Constructions: new points from existing geometry, rounded to `f64`.
+//!
+//! Results carry the rounding of a few floating-point operations (relative
+//! error a small multiple of 2^-53 of the input magnitudes) except near
+//! tangency or parallelism, where the problem itself is ill-conditioned;
+//! callers compare results against a length tolerance, never for equality.
+
+use super::Point;
+
+/// Intersection points of two lines given as point + direction (directions
+/// need not be unit). Returns `None` for parallel lines. The result is
+/// `p + s·u` with the parameter `s` reported too.
+pub fn line_line(p: Point, u: Point, q: Point, v: Point) -> Option<(Point, f64, f64)> {
+    let den = u.cross(v);
+    if den == 0.0 || !den.is_finite() {
+        return None;
+    }
+    let w = q - p;
+    let s = w.cross(v) / den;
+    let t = w.cross(u) / den;
+    Some((p + u * s, s, t))
+}
+
+/// Intersection points of the line `p + s·u` with the circle (`c`, `r`), as
+/// line parameters `s` in increasing order: zero, one (tangent within
+/// rounding) or two.
+pub fn line_circle(p: Point, u: Point, c: Point, r: f64) -> Vec<f64> {
+    let uu = u.norm2();
+    if uu == 0.0 {
+        return Vec::new();
+    }
+    // Work from the foot of the perpendicular from c: the stable form.
+    let s0 = (c - p).dot(u) / uu;
+    let foot = p + u * s0;
+    let h2 = r * r - (c - foot).norm2();
+    if h2 < 0.0 {
+        return Vec::new();
+    }
+    if h2 == 0.0 {
+        return vec![s0];
+    }
+    let ds = (h2 / uu).sqrt();
+    vec![s0 - ds, s0 + ds]
+}
+
+/// Intersection points of two circles; empty when they do not meet or are
+/// concentric. Tangent circles give one point.
+pub fn circle_circle(c1: Point, r1: f64, c2: Point, r2: f64) -> Vec<Point> {
+    let d = c2 - c1;
+    let dd = d.norm2();
+    if dd == 0.0 {
+        return Vec::new();
+    }
+    let a = (dd + r1 * r1 - r2 * r2) / (2.0 * dd);
+    let h2 = r1 * r1 / dd - a * a;
+    if h2 < 0.0 {
+        return Vec::new();
+    }
+    let base = c1 + d * a;
+    if h2 == 0.0 {
+        return vec![base];
+    }
+    let h = h2.sqrt();
+    vec![base + d.perp() * h, base - d.perp() * h]
+}
+
+/// Orthogonal projection parameter of `p` on the line `a + s·(b − a)`.
+pub fn project_param(a: Point, b: Point, p: Point) -> f64 {
+    let d = b - a;
+    let dd = d.norm2();
+    if dd == 0.0 {
+        0.0
+    } else {
+        (p - a).dot(d) / dd
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn circle_circle_meets_at_expected_points() {
+        let pts = circle_circle(Point::new(0.0, 0.0), 5.0, Point::new(8.0, 0.0), 5.0);
+        assert_eq!(pts.len(), 2);
+        for p in pts {
+            assert!((p.x - 4.0).abs() < 1e-12 && (p.y.abs() - 3.0).abs() < 1e-12);
+        }
+        assert!(circle_circle(Point::new(0.0, 0.0), 1.0, Point::new(3.0, 0.0), 1.0).is_empty());
+    }
+
+    #[test]
+    fn line_circle_finds_both_crossings() {
+        let s = line_circle(Point::new(-10.0, 3.0), Point::new(1.0, 0.0), Point::new(0.0, 0.0), 5.0);
+        assert_eq!(s.len(), 2);
+        assert!((s[0] - 6.0).abs() < 1e-12 && (s[1] - 14.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn parallel_lines_have_no_intersection() {
+        assert!(line_line(
+            Point::new(0.0, 0.0),
+            Point::new(1.0, 1.0),
+            Point::new(0.0, 1.0),
+            Point::new(2.0, 2.0)
+        )
+        .is_none());
+        let (p, _, _) = line_line(
+            Point::new(0.0, 0.0),
+            Point::new(1.0, 0.0),
+            Point::new(2.0, -1.0),
+            Point::new(0.0, 3.0),
+        )
+        .unwrap();
+        assert_eq!(p, Point::new(2.0, 0.0));
+    }
+}

@@ -1,0 +1,183 @@
+//! A static bounding-volume hierarchy over axis-aligned boxes.
+//!
+//! Items are sorted along a Morton (Z-order) curve of their box centres and
+//! the sorted range is split in halves, so the tree is balanced (depth
+//! ⌈log2(n / LEAF)⌉) and building is one sort: O(n log n). A query visits the
+//! nodes whose boxes overlap the query box; for the boundaries medax sees
+//! (elements that are short relative to the shape) that is O(log n + k).
+
+use crate::kernel::BBox;
+use std::ops::ControlFlow;
+
+const LEAF: usize = 8;
+
+#[derive(Debug, Clone, Copy)]
+struct Node {
+    bbox: BBox,
+    /// Leaf: range [start, end) of `order`. Inner: children at `start`, `end`.
+    start: u32,
+    end: u32,
+    leaf: bool,
+}
+
+/// Bounding-volume hierarchy over item boxes; item ids are the indices of
+/// the slice it was built from.
+#[derive(Debug, Clone, Default)]
+pub struct BoxTree {
+    nodes: Vec<Node>,
+    order: Vec<u32>,
+    boxes: Vec<BBox>,
+}
+
+fn spread_bits(v: u32) -> u64 {
+    let mut x = v as u64 & 0xffff_ffff;
+    x = (x | (x << 16)) & 0x0000_ffff_0000_ffff;
+    x = (x | (x << 8)) & 0x00ff_00ff_00ff_00ff;
+    x = (x | (x << 4)) & 0x0f0f_0f0f_0f0f_0f0f;
+    x = (x | (x << 2)) & 0x3333_3333_3333_3333;
+    x = (x | (x << 1)) & 0x5555_5555_5555_5555;
+    x
+}
+
+impl BoxTree {
+    /// Builds the tree. Item ids must fit in `u32` (at most 2^32 − 1 items).
+    pub fn new(boxes: Vec<BBox>) -> BoxTree {
+        let n = boxes.len();
+        let all = boxes.iter().fold(BBox::EMPTY, |a, b| a.union(b));
+        let (w, h) = (all.width().max(f64::MIN_POSITIVE), all.height().max(f64::MIN_POSITIVE));
+        let scale = |v: f64, lo: f64, ext: f64| (((v - lo) / ext).clamp(0.0, 1.0) * 65535.0) as u32;
+        let mut keyed: Vec<(u64, u32)> = boxes
+            .iter()
+            .enumerate()
+            .map(|(i, b)| {
+                let c = b.center();
+                let key = spread_bits(scale(c.x, all.min.x, w)) | (spread_bits(scale(c.y, all.min.y, h)) << 1);
+                (key, i as u32)
+            })
+            .collect();
+        keyed.sort_unstable();
+        let order: Vec<u32> = keyed.into_iter().map(|(_, i)| i).collect();
+        let mut tree = BoxTree {
+            nodes: Vec::with_capacity(2 * n / LEAF + 2),
+            order,
+            boxes,
+        };
+        if n > 0 {
+            tree.build(0, n);
+        }
+        tree
+    }
+
+    fn build(&mut self, start: usize, end: usize) -> u32 {
+        let id = self.nodes.len() as u32;
+        if end - start <= LEAF {
+            let bbox = self.order[start..end]
+                .iter()
+                .fold(BBox::EMPTY, |a, &i| a.union(&self.boxes[i as usize]));
+            self.nodes.push(Node {
+                bbox,
+                start: start as u32,
+                end: end as u32,
+                leaf: true,
+            });
+            return id;
+        }
+        self.nodes.push(Node {
+            bbox: BBox::EMPTY,
+            start: 0,
+            end: 0,
+            leaf: false,
+        });
+        let mid = start + (end - start) / 2;
+        let l = self.build(start, mid);
+        let r = self.build(mid, end);
+        let bbox = self.nodes[l as usize].bbox.union(&self.nodes[r as usize].bbox);
+        self.nodes[id as usize] = Node {
+            bbox,
+            start: l,
+            end: r,
+            leaf: false,
+        };
+        id
+    }
+
+    /// Number of items.
+    pub fn len(&self) -> usize {
+        self.boxes.len()
+    }
+
+    /// True when the tree holds no item.
+    pub fn is_empty(&self) -> bool {
+        self.boxes.is_empty()
+    }
+
+    /// The box of item `i`.
+    pub fn item_box(&self, i: usize) -> &BBox {
+        &self.boxes[i]
+    }
+
+    /// The box around all items (empty for an empty tree).
+    pub fn bounds(&self) -> BBox {
+        self.nodes.first().map(|n| n.bbox).unwrap_or(BBox::EMPTY)
+    }
+
+    /// Calls `f` with each item whose box overlaps `query` (closed boxes),
+    /// in no particular order, until `f` breaks.
+    pub fn visit_overlapping<B>(&self, query: &BBox, mut f: impl FnMut(usize) -> ControlFlow<B>) -> Option<B> {
+        if self.nodes.is_empty() {
+            return None;
+        }
+        let mut stack: Vec<u32> = Vec::with_capacity(64);
+        stack.push(0);
+        while let Some(id) = stack.pop() {
+            let node = &self.nodes[id as usize];
+            if !node.bbox.overlaps(query) {
+                continue;
+            }
+            if node.leaf {
+                for &i in &self.order[node.start as usize..node.end as usize] {
+                    if self.boxes[i as usize].overlaps(query) {
+                        if let ControlFlow::Break(b) = f(i as usize) {
+                            return Some(b);
+                        }
+                    }
+                }
+            } else {
+                stack.push(node.end);
+                stack.push(node.start);
+            }
+        }
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kernel::Point;
+    use rand::{Rng, SeedableRng};
+
+    #[test]
+    fn finds_exactly_the_overlapping_boxes() {
+        let mut rng = rand::rngs::SmallRng::seed_from_u64(7);
+        let boxes: Vec<BBox> = (0..2000)
+            .map(|_| {
+                let p = Point::new(rng.gen_range(0.0..100.0), rng.gen_range(0.0..100.0));
+                BBox::of_points(p, p + Point::new(rng.gen_range(0.0..3.0), rng.gen_range(0.0..3.0)))
+            })
+            .collect();
+        let tree = BoxTree::new(boxes.clone());
+        for _ in 0..200 {
+            let p = Point::new(rng.gen_range(-5.0..100.0), rng.gen_range(-5.0..100.0));
+            let q = BBox::of_points(p, p + Point::new(rng.gen_range(0.0..10.0), rng.gen_range(0.0..10.0)));
+            let mut got = Vec::new();
+            tree.visit_overlapping::<()>(&q, |i| {
+                got.push(i);
+                ControlFlow::Continue(())
+            });
+            got.sort_unstable();
+            let want: Vec<usize> = (0..boxes.len()).filter(|&i| boxes[i].overlaps(&q)).collect();
+            assert_eq!(got, want);
+        }
+    }
+}

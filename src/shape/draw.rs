@@ -1,0 +1,67 @@
+//! Pictures of shapes as SVG.
+
+use super::element::Element;
+use super::joints::JointKind;
+use super::shape2d::Shape2d;
+use crate::io::svg_writer::{PathCmd, Style, SvgDocument};
+
+/// SVG path commands for all loops of a shape (draw with the even-odd rule
+/// to show holes).
+pub fn shape_path(shape: &Shape2d) -> Vec<PathCmd> {
+    let mut cmds = Vec::with_capacity(shape.element_count() + 2 * shape.loops().len());
+    for l in shape.loops() {
+        let Some(first) = l.vertices().first() else { continue };
+        cmds.push(PathCmd::MoveTo([first.p.x, first.p.y]));
+        for e in l.elements() {
+            let to = [e.end().x, e.end().y];
+            cmds.push(match e {
+                Element::Segment(_) => PathCmd::LineTo(to),
+                Element::Arc(a) => PathCmd::ArcTo {
+                    radius: a.radius,
+                    large: a.bulge.abs() > 1.0,
+                    ccw: a.is_ccw(),
+                    to,
+                },
+            });
+        }
+        cmds.push(PathCmd::Close);
+    }
+    cmds
+}
+
+/// Adds the shape (filled, outlined, corners marked: convex red, reflex blue)
+/// to a document.
+pub fn draw_shape(doc: &mut SvgDocument, shape: &Shape2d) {
+    doc.path(&shape_path(shape), &Style::filled("#1f3b73", "#dfe8f6", 1.5, 1.0));
+    if shape.element_count() <= 20_000 {
+        for (li, l) in shape.loops().iter().enumerate() {
+            for (i, v) in l.vertices().iter().enumerate() {
+                let colour = match shape.joint(li, i) {
+                    JointKind::Convex => "#c0392b",
+                    JointKind::Reflex => "#2e86c1",
+                    JointKind::Smooth => "#7f8c8d",
+                };
+                doc.dot([v.p.x, v.p.y], 2.5, colour);
+            }
+        }
+    }
+}
+
+impl Shape2d {
+    /// A picture of the shape, `width_px` wide, with a caption.
+    pub fn to_svg(&self, width_px: f64) -> String {
+        let bb = self.bbox();
+        let mut doc = SvgDocument::new([bb.min.x, bb.min.y, bb.max.x, bb.max.y], width_px);
+        draw_shape(&mut doc, self);
+        let (segs, arcs) = self.element_counts();
+        let [smooth, convex, reflex] = self.joint_counts();
+        doc.caption(
+            0,
+            &format!(
+                "{} loop(s), {segs} segments, {arcs} arcs; joints: {convex} convex (red), {reflex} reflex (blue), {smooth} smooth",
+                self.loops().len()
+            ),
+        );
+        doc.finish()
+    }
+}

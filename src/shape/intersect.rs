@@ -1,0 +1,143 @@
+//! Do two boundary elements cross, touch or come closer than a tolerance?
+//!
+//! The closest approach of two disjoint circular arcs or segments is attained
+//! at an endpoint of one of them or at a pair of points on their supporting
+//! primitives' common normal (for a segment and an arc: the arc point whose
+//! normal is perpendicular to the line; for two arcs: points on the line of
+//! centres). Crossings are intersection points of the supporting primitives.
+//! So a handful of candidate points decides the question; every candidate is
+//! re-measured with [`Element::closest_point`] on both elements, which also
+//! discards spurious intersection points produced by ill-conditioned
+//! constructions (nearly tangent circles, nearly parallel lines).
+
+use super::element::Element;
+use crate::kernel::{construct, Point};
+
+/// A point where `a` and `b` come within `tol` of each other, ignoring
+/// places within `exclude_radius` of any point in `exclude` (the vertices the
+/// two elements legitimately share). `None` when they stay apart.
+pub(crate) fn approach_point(
+    a: &Element,
+    b: &Element,
+    tol: f64,
+    exclude: &[Point],
+    exclude_radius: f64,
+) -> Option<Point> {
+    let mut found = None;
+    let mut consider = |q: Point| {
+        if found.is_some() || !q.is_finite() {
+            return;
+        }
+        if exclude.iter().any(|v| v.dist(q) <= exclude_radius) {
+            return;
+        }
+        if a.closest_point(q).0 <= tol && b.closest_point(q).0 <= tol {
+            found = Some(q);
+        }
+    };
+    // Endpoints of each, projected onto the other.
+    for (e, other) in [(a, b), (b, a)] {
+        for p in [e.start(), e.end()] {
+            let (d, q) = other.closest_point(p);
+            if d <= tol {
+                consider(p.mid(q));
+            }
+        }
+    }
+    match (a, b) {
+        (Element::Segment(s), Element::Segment(t)) => {
+            if let Some((p, _, _)) = construct::line_line(s.a, s.b - s.a, t.a, t.b - t.a) {
+                consider(p);
+            }
+        }
+        (Element::Segment(s), Element::Arc(c)) | (Element::Arc(c), Element::Segment(s)) => {
+            let u = s.b - s.a;
+            for t in construct::line_circle(s.a, u, c.center, c.radius) {
+                consider(s.a + u * t);
+            }
+            // Closest approach of a line and a circle lies on the normal
+            // through the centre.
+            let foot = s.a + u * construct::project_param(s.a, s.b, c.center);
+            let n = (foot - c.center).unit();
+            if n != Point::default() {
+                let on_arc = c.center + n * c.radius;
+                let (_, q) = Element::Segment(*s).closest_point(on_arc);
+                consider(on_arc.mid(q));
+                let (_, q) = Element::Arc(*c).closest_point(foot);
+                consider(q);
+            }
+        }
+        (Element::Arc(c1), Element::Arc(c2)) => {
+            for p in construct::circle_circle(c1.center, c1.radius, c2.center, c2.radius) {
+                consider(p);
+            }
+            let u = (c2.center - c1.center).unit();
+            if u != Point::default() {
+                for p in [
+                    c1.center + u * c1.radius,
+                    c1.center - u * c1.radius,
+                    c2.center + u * c2.radius,
+                    c2.center - u * c2.radius,
+                ] {
+                    consider(p);
+                }
+            }
+        }
+    }
+    found
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn seg(ax: f64, ay: f64, bx: f64, by: f64) -> Element {
+        Element::from_bulge(Point::new(ax, ay), Point::new(bx, by), 0.0)
+    }
+
+    #[test]
+    fn crossing_segments_meet() {
+        let p = approach_point(&seg(0.0, 0.0, 2.0, 2.0), &seg(0.0, 2.0, 2.0, 0.0), 1e-9, &[], 0.0).unwrap();
+        assert!(p.dist(Point::new(1.0, 1.0)) < 1e-12);
+        assert!(approach_point(&seg(0.0, 0.0, 1.0, 0.0), &seg(0.0, 1.0, 1.0, 1.0), 1e-9, &[], 0.0).is_none());
+    }
+
+    #[test]
+    fn touching_within_tolerance_is_found() {
+        // T-junction with a 1e-10 gap.
+        let a = seg(0.0, 0.0, 2.0, 0.0);
+        let b = seg(1.0, 1e-10, 1.0, 1.0);
+        assert!(approach_point(&a, &b, 1e-9, &[], 0.0).is_some());
+        assert!(approach_point(&a, &b, 1e-11, &[], 0.0).is_none());
+        // Collinear overlap.
+        assert!(approach_point(&a, &seg(1.0, 0.0, 3.0, 0.0), 1e-9, &[], 0.0).is_some());
+    }
+
+    #[test]
+    fn arc_kissing_a_segment_is_found() {
+        // Half circle of radius 1 around (0,1) bulging down to touch y = 0 at x = 0.
+        let arc = Element::from_bulge(Point::new(-1.0, 1.0), Point::new(1.0, 1.0), 1.0);
+        let line = seg(-5.0, -1e-12, 5.0, -1e-12);
+        let p = approach_point(&arc, &line, 1e-9, &[], 0.0).unwrap();
+        assert!(p.dist(Point::new(0.0, 0.0)) < 1e-9);
+        let below = seg(-5.0, -1e-3, 5.0, -1e-3);
+        assert!(approach_point(&arc, &below, 1e-9, &[], 0.0).is_none());
+    }
+
+    #[test]
+    fn nested_arcs_near_the_line_of_centres() {
+        // Two arcs facing each other across a gap of 1e-10 at x = 1.
+        let a = Element::from_bulge(Point::new(0.0, -1.0), Point::new(0.0, 1.0), 1.0);
+        let b = Element::from_bulge(Point::new(2.0 + 1e-10, 1.0), Point::new(2.0 + 1e-10, -1.0), 1.0);
+        assert!(approach_point(&a, &b, 1e-9, &[], 0.0).is_some());
+        assert!(approach_point(&a, &b, 1e-11, &[], 0.0).is_none());
+    }
+
+    #[test]
+    fn shared_vertex_is_excluded() {
+        let a = seg(0.0, 0.0, 1.0, 0.0);
+        let b = seg(1.0, 0.0, 1.0, 1.0);
+        assert!(approach_point(&a, &b, 1e-9, &[Point::new(1.0, 0.0)], 1e-7).is_none());
+        assert!(approach_point(&a, &b, 1e-9, &[], 0.0).is_some());
+    }
+}
