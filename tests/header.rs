@@ -41,8 +41,5 @@ fn version_macros_match_cargo_toml() {
     let s = unsafe { std::ffi::CStr::from_ptr(medax::ffi::mx_version()) };
     assert_eq!(s.to_str().unwrap(), env!("CARGO_PKG_VERSION"));
     let header = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("include/medax.h")).unwrap();
-    assert!(header.contains(&format!(
-        "#define MEDAX_VERSION_MAJOR {}",
-        env!("CARGO_PKG_VERSION_MAJOR")
-    )));
+    assert!(header.contains(&format!("#define MEDAX_VERSION_MAJOR {}", env!("CARGO_PKG_VERSION_MAJOR"))));
 }

@@ -16,9 +16,6 @@ pub fn run(output: &Path) -> Result<(), ExitCode> {
     println!("medax {} demo: the embedded plate", medax::VERSION);
     print!("{}", report(&shape));
     super::write_file(output, &shape.to_svg(900.0))?;
-    println!(
-        "wrote picture: {}",
-        std::fs::canonicalize(output).unwrap_or(output.to_path_buf()).display()
-    );
+    println!("wrote picture: {}", std::fs::canonicalize(output).unwrap_or(output.to_path_buf()).display());
     Ok(())
 }

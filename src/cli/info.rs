@@ -11,31 +11,18 @@ pub fn report(s: &Shape2d) -> String {
     let [smooth, convex, reflex] = s.joint_counts();
     let bb = s.bbox();
     let mut out = String::new();
-    out += &format!(
-        "valid shape: {} loop(s) (1 outer, {} hole(s))\n",
-        s.loops().len(),
-        s.holes().len()
-    );
+    out += &format!("valid shape: {} loop(s) (1 outer, {} hole(s))\n", s.loops().len(), s.holes().len());
     out += &format!("elements: {} ({segs} segments, {arcs} arcs)\n", s.element_count());
     out += &format!("joints: {convex} convex, {reflex} reflex, {smooth} smooth\n");
     out += &format!("area: {}\n", s.area());
-    out += &format!(
-        "bounding box: [{}, {}] x [{}, {}]\n",
-        bb.min.x, bb.max.x, bb.min.y, bb.max.y
-    );
+    out += &format!("bounding box: [{}, {}] x [{}, {}]\n", bb.min.x, bb.max.x, bb.min.y, bb.max.y);
     out += &format!("tolerance: {:e}\n", s.tolerance());
-    let reversed: Vec<String> = (0..s.loops().len())
-        .filter(|&l| s.was_reversed(l))
-        .map(|l| l.to_string())
-        .collect();
+    let reversed: Vec<String> = (0..s.loops().len()).filter(|&l| s.was_reversed(l)).map(|l| l.to_string()).collect();
     if !reversed.is_empty() {
         out += &format!("reversed to normalise orientation: loop(s) {}\n", reversed.join(", "));
     }
     if s.flattened_arcs() > 0 {
-        out += &format!(
-            "arcs flattened to segments (sagitta below tolerance): {}\n",
-            s.flattened_arcs()
-        );
+        out += &format!("arcs flattened to segments (sagitta below tolerance): {}\n", s.flattened_arcs());
     }
     out
 }

@@ -91,9 +91,7 @@ fn write_file(path: &Path, text: &str) -> Result<(), ExitCode> {
 /// Entry point of the binary.
 pub fn run() -> ExitCode {
     let cli = Cli::parse();
-    let result = match cli.command.unwrap_or(Command::Demo {
-        output: "medax-demo.svg".into(),
-    }) {
+    let result = match cli.command.unwrap_or(Command::Demo { output: "medax-demo.svg".into() }) {
         Command::Info { shape } => info::run(&shape),
         Command::Draw { shape, output, width } => match shape.load() {
             Ok(s) => write_file(&output, &s.to_svg(width)).map(|_| println!("wrote {}", output.display())),

@@ -88,17 +88,10 @@ pub(crate) unsafe fn c_str<'a>(p: *const std::ffi::c_char, name: &str) -> Result
     }
     // SAFETY: non-NULL and NUL-terminated per the contract.
     let s = unsafe { std::ffi::CStr::from_ptr(p) };
-    s.to_str().map_err(|_| {
-        FfiError::new(
-            mx_status::MX_ERR_INVALID_ARGUMENT,
-            format!("argument `{name}` is not valid UTF-8"),
-        )
-    })
+    s.to_str()
+        .map_err(|_| FfiError::new(mx_status::MX_ERR_INVALID_ARGUMENT, format!("argument `{name}` is not valid UTF-8")))
 }
 
 pub(crate) fn index_error(what: &str, index: usize, len: usize) -> FfiError {
-    FfiError::new(
-        mx_status::MX_ERR_INDEX_OUT_OF_RANGE,
-        format!("{what} index {index} is out of range (0..{len})"),
-    )
+    FfiError::new(mx_status::MX_ERR_INDEX_OUT_OF_RANGE, format!("{what} index {index} is out of range (0..{len})"))
 }

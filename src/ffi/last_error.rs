@@ -60,10 +60,7 @@ pub(crate) struct FfiError {
 
 impl FfiError {
     pub fn new(status: mx_status, message: impl Into<String>) -> FfiError {
-        FfiError {
-            info: mx_error_info::none(status),
-            message: message.into(),
-        }
+        FfiError { info: mx_error_info::none(status), message: message.into() }
     }
 }
 
@@ -93,11 +90,7 @@ impl From<ShapeError> for FfiError {
                 info.element = i(at.element);
                 pos(*position, &mut info);
             }
-            ShapeError::Intersection {
-                first,
-                second,
-                position,
-            } => {
+            ShapeError::Intersection { first, second, position } => {
                 info.loop_index = i(first.loop_index);
                 info.element = i(first.element);
                 info.other_loop_index = i(second.loop_index);
@@ -108,11 +101,7 @@ impl From<ShapeError> for FfiError {
                 info.loop_index = i(*hole);
                 pos(*position, &mut info);
             }
-            ShapeError::HoleInsideHole {
-                hole,
-                container,
-                position,
-            } => {
+            ShapeError::HoleInsideHole { hole, container, position } => {
                 info.loop_index = i(*hole);
                 info.other_loop_index = i(*container);
                 pos(*position, &mut info);
@@ -122,10 +111,7 @@ impl From<ShapeError> for FfiError {
             | ShapeError::Unsupported { .. }
             | ShapeError::InvalidArgument { .. } => {}
         }
-        FfiError {
-            info,
-            message: e.to_string(),
-        }
+        FfiError { info, message: e.to_string() }
     }
 }
 
@@ -182,11 +168,7 @@ pub unsafe extern "C" fn mx_last_error_info(out: *mut mx_error_info) -> mx_statu
     if out.is_null() {
         return mx_status::MX_ERR_NULL_ARGUMENT;
     }
-    let info = LAST.with(|l| {
-        l.borrow()
-            .as_ref()
-            .map_or(mx_error_info::none(mx_status::MX_OK), |(i, _)| *i)
-    });
+    let info = LAST.with(|l| l.borrow().as_ref().map_or(mx_error_info::none(mx_status::MX_OK), |(i, _)| *i));
     // SAFETY: checked non-NULL; the caller guarantees it is writable.
     unsafe { out.write(info) };
     mx_status::MX_OK

@@ -153,11 +153,7 @@ unsafe fn options(p: *const mx_shape_options) -> Result<ShapeOptions, FfiError> 
         tolerance: opt_len(o.tolerance),
         relative_tolerance: o.relative_tolerance,
         angle_tolerance: o.angle_tolerance,
-        flatten_sagitta: if o.flatten_sagitta < 0.0 {
-            None
-        } else {
-            Some(o.flatten_sagitta)
-        },
+        flatten_sagitta: if o.flatten_sagitta < 0.0 { None } else { Some(o.flatten_sagitta) },
         chain_tolerance: opt_len(o.chain_tolerance),
     };
     opts.check()?;
@@ -193,11 +189,7 @@ pub unsafe extern "C" fn mx_shape2d_from_bulges(
         check_out(out, "out")?;
         // SAFETY: caller contract on pointer/length pairs.
         let (data, lens, opts) = unsafe {
-            (
-                slice(xyb, xyb_len, "xyb")?,
-                slice(loop_lengths, loop_count, "loop_lengths")?,
-                self::options(options)?,
-            )
+            (slice(xyb, xyb_len, "xyb")?, slice(loop_lengths, loop_count, "loop_lengths")?, self::options(options)?)
         };
         let total = lens.iter().try_fold(0usize, |a, &n| a.checked_add(n));
         if total.and_then(|t| t.checked_mul(3)) != Some(data.len()) {
@@ -215,10 +207,7 @@ pub unsafe extern "C" fn mx_shape2d_from_bulges(
         for &n in lens {
             let vs = data[at..at + 3 * n]
                 .chunks_exact(3)
-                .map(|c| Vertex {
-                    p: Point::new(c[0], c[1]),
-                    bulge: c[2],
-                })
+                .map(|c| Vertex { p: Point::new(c[0], c[1]), bulge: c[2] })
                 .collect();
             loops.push(vs);
             at += 3 * n;
@@ -268,12 +257,7 @@ pub unsafe extern "C" fn mx_shape2d_from_elements(
                 let (a, b) = (Point::new(e.x0, e.y0), Point::new(e.x1, e.y1));
                 specs.push(match e.kind {
                     MX_ELEMENT_SEGMENT => ElementSpec::Segment { a, b },
-                    MX_ELEMENT_ARC => ElementSpec::ArcPoints {
-                        a,
-                        b,
-                        center: Point::new(e.cx, e.cy),
-                        ccw: e.ccw != 0,
-                    },
+                    MX_ELEMENT_ARC => ElementSpec::ArcPoints { a, b, center: Point::new(e.cx, e.cy), ccw: e.ccw != 0 },
                     k => {
                         return Err(FfiError::new(
                             mx_status::MX_ERR_INVALID_ARGUMENT,
@@ -296,10 +280,7 @@ fn format_of(code: u32) -> Result<Option<Format>, FfiError> {
         MX_FORMAT_JSON => Ok(Some(Format::Json)),
         MX_FORMAT_DXF => Ok(Some(Format::Dxf)),
         MX_FORMAT_SVG => Ok(Some(Format::Svg)),
-        other => Err(FfiError::new(
-            mx_status::MX_ERR_INVALID_ARGUMENT,
-            format!("unknown format {other}"),
-        )),
+        other => Err(FfiError::new(mx_status::MX_ERR_INVALID_ARGUMENT, format!("unknown format {other}"))),
     }
 }
 
@@ -323,10 +304,7 @@ pub unsafe extern "C" fn mx_shape2d_from_file(
             None => Shape2d::from_file(path, &opts)?,
             Some(f) => {
                 let text = std::fs::read(path).map_err(|e| {
-                    FfiError::from(crate::shape::ShapeError::Io {
-                        path: path.into(),
-                        message: e.to_string(),
-                    })
+                    FfiError::from(crate::shape::ShapeError::Io { path: path.into(), message: e.to_string() })
                 })?;
                 Shape2d::from_str_as(&String::from_utf8_lossy(&text), f, &opts)?
             }
@@ -500,13 +478,7 @@ pub unsafe extern "C" fn mx_shape2d_element(
             }
             let e = l.element(index);
             let (a, b) = (e.start(), e.end());
-            let mut m = mx_element {
-                x0: a.x,
-                y0: a.y,
-                x1: b.x,
-                y1: b.y,
-                ..Default::default()
-            };
+            let mut m = mx_element { x0: a.x, y0: a.y, x1: b.x, y1: b.y, ..Default::default() };
             if let Element::Arc(arc) = e {
                 m.kind = MX_ELEMENT_ARC;
                 m.ccw = arc.is_ccw() as u32;
@@ -558,12 +530,7 @@ pub unsafe extern "C" fn mx_shape2d_bbox(shape: *const mx_shape2d, out: *mut mx_
     unsafe {
         query(shape, out, |s| {
             let b = s.bbox();
-            Ok(mx_bbox {
-                xmin: b.min.x,
-                ymin: b.min.y,
-                xmax: b.max.x,
-                ymax: b.max.y,
-            })
+            Ok(mx_bbox { xmin: b.min.x, ymin: b.min.y, xmax: b.max.x, ymax: b.max.y })
         })
     }
 }

@@ -57,6 +57,7 @@ impl mx_status {
     pub fn of(e: &ShapeError) -> mx_status {
         use mx_status::*;
         match e {
+            ShapeError::Parse(p) if p.unsupported => MX_ERR_UNSUPPORTED,
             ShapeError::Parse(_) => MX_ERR_PARSE,
             ShapeError::Io { .. } => MX_ERR_IO,
             ShapeError::Empty => MX_ERR_EMPTY,
@@ -126,7 +127,5 @@ pub extern "C" fn mx_status_str(status: i32) -> *const c_char {
         MX_ERR_INCONSISTENT_ARC,
         MX_ERR_PANIC,
     ];
-    all.iter()
-        .find(|s| **s as i32 == status)
-        .map_or(c"unknown status".as_ptr(), |s| s.text().as_ptr())
+    all.iter().find(|s| **s as i32 == status).map_or(c"unknown status".as_ptr(), |s| s.text().as_ptr())
 }

@@ -45,10 +45,8 @@ const VERTEX_SPLINE_FRAME: i64 = 16;
 pub fn read_dxf(text: &str) -> Result<RawDrawing, ParseError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     if text.starts_with("AutoCAD Binary DXF") {
-        return Err(error(
-            1,
-            "binary DXF is not supported; save the drawing as ASCII DXF".into(),
-        ));
+        let e = error(1, "binary DXF is not supported; save the drawing as ASCII DXF".into());
+        return Err(ParseError { unsupported: true, ..e });
     }
     let mut pairs = Pairs::new(text);
     let mut reader = Reader::default();
@@ -83,12 +81,7 @@ pub fn read_dxf(text: &str) -> Result<RawDrawing, ParseError> {
 }
 
 fn error(line: usize, message: String) -> ParseError {
-    ParseError {
-        format: Format::Dxf,
-        line,
-        column: 1,
-        message,
-    }
+    ParseError { format: Format::Dxf, line, column: 1, message, unsupported: false }
 }
 
 /// Quotes a file value for a message, shortened so that a huge garbage line
@@ -121,16 +114,8 @@ struct Pairs<'a> {
 impl<'a> Pairs<'a> {
     fn new(text: &'a str) -> Pairs<'a> {
         // Files from classic Mac OS end lines with a bare CR.
-        let eol = if !text.contains('\n') && text.contains('\r') {
-            '\r'
-        } else {
-            '\n'
-        };
-        Pairs {
-            rest: text,
-            line: 0,
-            eol,
-        }
+        let eol = if !text.contains('\n') && text.contains('\r') { '\r' } else { '\n' };
+        Pairs { rest: text, line: 0, eol }
     }
 
     fn next_line(&mut self) -> Option<&'a str> {
@@ -156,10 +141,7 @@ impl<'a> Pairs<'a> {
             .parse::<i32>()
             .map_err(|_| error(line, format!("expected an integer group code, found {}", shown(code))))?;
         let Some(value) = self.next_line() else {
-            return Err(error(
-                line,
-                format!("file ends after group code {code}, in the middle of a code/value pair"),
-            ));
+            return Err(error(line, format!("file ends after group code {code}, in the middle of a code/value pair")));
         };
         Ok(Some(Pair { code, value, line }))
     }
@@ -168,11 +150,7 @@ impl<'a> Pairs<'a> {
 /// Parses a value that must be a real number.
 fn number(entity: &str, at: usize, g: &Pair) -> Result<f64, ParseError> {
     g.value.trim().parse::<f64>().map_err(|_| {
-        let msg = format!(
-            "{entity} at line {at}: group {} should be a number, found {}",
-            g.code,
-            shown(g.value)
-        );
+        let msg = format!("{entity} at line {at}: group {} should be a number, found {}", g.code, shown(g.value));
         error(g.line + 1, msg)
     })
 }
@@ -180,11 +158,7 @@ fn number(entity: &str, at: usize, g: &Pair) -> Result<f64, ParseError> {
 /// Parses a value that must be an integer (flags).
 fn integer(entity: &str, at: usize, g: &Pair) -> Result<i64, ParseError> {
     g.value.trim().parse::<i64>().map_err(|_| {
-        let msg = format!(
-            "{entity} at line {at}: group {} should be an integer, found {}",
-            g.code,
-            shown(g.value)
-        );
+        let msg = format!("{entity} at line {at}: group {} should be an integer, found {}", g.code, shown(g.value));
         error(g.line + 1, msg)
     })
 }
@@ -273,9 +247,7 @@ impl Reader {
         match name.as_str() {
             "SECTION" => {
                 self.flush_polyline();
-                let is_entities = groups
-                    .iter()
-                    .any(|g| g.code == 2 && g.value.trim().eq_ignore_ascii_case("ENTITIES"));
+                let is_entities = groups.iter().any(|g| g.code == 2 && g.value.trim().eq_ignore_ascii_case("ENTITIES"));
                 self.section = if is_entities { Section::Entities } else { Section::Other };
                 return Ok(());
             }
@@ -301,11 +273,7 @@ impl Reader {
                 let f = Fields::read("POLYLINE", at, groups)?;
                 let flags = f.flags.unwrap_or(0);
                 self.polyline = Some(OpenPolyline {
-                    polyline: RawPolyline {
-                        vertices: Vec::new(),
-                        closed: flags & 1 != 0,
-                        source: at,
-                    },
+                    polyline: RawPolyline { vertices: Vec::new(), closed: flags & 1 != 0, source: at },
                     skip: flags & POLYLINE_NOT_2D != 0,
                     mirror: f.mirrored(),
                 });
@@ -315,14 +283,8 @@ impl Reader {
                 let f = Fields::read("LINE", at, groups)?;
                 // LINE endpoints are world coordinates: no mirroring.
                 let line = RawLine {
-                    a: [
-                        required("LINE", at, f.x, 10, "start x")?,
-                        required("LINE", at, f.y, 20, "start y")?,
-                    ],
-                    b: [
-                        required("LINE", at, f.x2, 11, "end x")?,
-                        required("LINE", at, f.y2, 21, "end y")?,
-                    ],
+                    a: [required("LINE", at, f.x, 10, "start x")?, required("LINE", at, f.y, 20, "start y")?],
+                    b: [required("LINE", at, f.x2, 11, "end x")?, required("LINE", at, f.y2, 21, "end y")?],
                     source: at,
                 };
                 self.out.lines.push(line);
@@ -331,10 +293,7 @@ impl Reader {
             "ARC" => {
                 let f = Fields::read("ARC", at, groups)?;
                 let mut arc = RawArc {
-                    center: [
-                        required("ARC", at, f.x, 10, "centre x")?,
-                        required("ARC", at, f.y, 20, "centre y")?,
-                    ],
+                    center: [required("ARC", at, f.x, 10, "centre x")?, required("ARC", at, f.y, 20, "centre y")?],
                     radius: required("ARC", at, f.radius, 40, "radius")?,
                     start_deg: required("ARC", at, f.start_deg, 50, "start angle")?,
                     end_deg: required("ARC", at, f.end_deg, 51, "end angle")?,
@@ -407,25 +366,16 @@ impl Reader {
             match g.code {
                 10 => {
                     if let Some(l) = missing_y {
-                        return Err(error(
-                            l,
-                            format!("{E} at line {at}: vertex x (group 10) has no y (group 20)"),
-                        ));
+                        return Err(error(l, format!("{E} at line {at}: vertex x (group 10) has no y (group 20)")));
                     }
-                    vertices.push(RawVertex {
-                        x: number(E, at, g)?,
-                        y: 0.0,
-                        bulge: 0.0,
-                    });
+                    vertices.push(RawVertex { x: number(E, at, g)?, y: 0.0, bulge: 0.0 });
                     missing_y = Some(g.line);
                 }
                 20 | 42 => {
                     let value = number(E, at, g)?;
                     let Some(v) = vertices.last_mut() else {
-                        let msg = format!(
-                            "{E} at line {at}: group {} comes before the first vertex x (group 10)",
-                            g.code
-                        );
+                        let msg =
+                            format!("{E} at line {at}: group {} comes before the first vertex x (group 10)", g.code);
                         return Err(error(g.line, msg));
                     };
                     if g.code == 20 {
@@ -441,10 +391,7 @@ impl Reader {
             }
         }
         if let Some(l) = missing_y {
-            return Err(error(
-                l,
-                format!("{E} at line {at}: vertex x (group 10) has no y (group 20)"),
-            ));
+            return Err(error(l, format!("{E} at line {at}: vertex x (group 10) has no y (group 20)")));
         }
         if mirror {
             for v in &mut vertices {
@@ -452,11 +399,7 @@ impl Reader {
                 v.bulge = -v.bulge;
             }
         }
-        self.out.polylines.push(RawPolyline {
-            vertices,
-            closed,
-            source: at,
-        });
+        self.out.polylines.push(RawPolyline { vertices, closed, source: at });
         Ok(())
     }
 
@@ -481,13 +424,7 @@ mod tests {
 
     /// Wraps entity pairs in a file with HEADER, BLOCKS and ENTITIES sections.
     fn entities<'a>(body: &[(i32, &'a str)]) -> Vec<(i32, &'a str)> {
-        let mut all = vec![
-            (0, "SECTION"),
-            (2, "HEADER"),
-            (9, "$ACADVER"),
-            (1, "AC1015"),
-            (0, "ENDSEC"),
-        ];
+        let mut all = vec![(0, "SECTION"), (2, "HEADER"), (9, "$ACADVER"), (1, "AC1015"), (0, "ENDSEC")];
         all.extend([(0, "SECTION"), (2, "BLOCKS"), (0, "BLOCK"), (0, "LINE")]);
         all.extend([(10, "0"), (20, "0"), (11, "1"), (21, "1"), (0, "ENDBLK"), (0, "ENDSEC")]);
         all.extend([(0, "SECTION"), (2, "ENTITIES")]);
@@ -557,30 +494,15 @@ mod tests {
         assert_eq!(
             lw.vertices,
             vec![
-                RawVertex {
-                    x: 0.0,
-                    y: 0.0,
-                    bulge: 0.0
-                },
-                RawVertex {
-                    x: 10.0,
-                    y: 0.0,
-                    bulge: 0.5
-                },
-                RawVertex {
-                    x: 10.0,
-                    y: 5.0,
-                    bulge: 0.0
-                },
+                RawVertex { x: 0.0, y: 0.0, bulge: 0.0 },
+                RawVertex { x: 10.0, y: 0.0, bulge: 0.5 },
+                RawVertex { x: 10.0, y: 5.0, bulge: 0.0 },
             ]
         );
         // 15 HEADER and BLOCKS pairs, then SECTION and ENTITIES, come before it.
         assert_eq!(lw.source, 2 * 17 + 1);
         let arc = d.arcs[0];
-        assert_eq!(
-            (arc.center, arc.radius, arc.start_deg, arc.end_deg),
-            ([5.0, 6.0], 2.0, 0.0, 90.0)
-        );
+        assert_eq!((arc.center, arc.radius, arc.start_deg, arc.end_deg), ([5.0, 6.0], 2.0, 0.0, 90.0));
         assert_eq!((d.circles[0].center, d.circles[0].radius), ([-1.0, -2.0], 0.25));
         let pl = &d.polylines[1];
         assert!(pl.closed);
@@ -655,11 +577,7 @@ mod tests {
     fn reports_errors_with_line_numbers() {
         let e = read_dxf("0\nLINE\n10\n1\n20\n2\n11\n3\n").unwrap_err();
         assert_eq!((e.line, e.column), (1, 1));
-        assert!(
-            e.message.contains("LINE") && e.message.contains("group 21"),
-            "{}",
-            e.message
-        );
+        assert!(e.message.contains("LINE") && e.message.contains("group 21"), "{}", e.message);
 
         let e = read_dxf("0\nLINE\n10\n1\nx20\n2\n").unwrap_err();
         assert_eq!(e.line, 5);
@@ -667,11 +585,7 @@ mod tests {
 
         let e = read_dxf("0\nCIRCLE\n10\n1\n20\n2\n40\n1,5\n").unwrap_err();
         assert_eq!(e.line, 8);
-        assert!(
-            e.message.contains("CIRCLE at line 1") && e.message.contains("\"1,5\""),
-            "{}",
-            e.message
-        );
+        assert!(e.message.contains("CIRCLE at line 1") && e.message.contains("\"1,5\""), "{}", e.message);
 
         let e = read_dxf("0\r\nCIRCLE\r\n10\r\n1\r\n20").unwrap_err();
         assert_eq!(e.line, 5);
@@ -682,11 +596,7 @@ mod tests {
 
         let e = read_dxf("0\nPOLYLINE\n0\nVERTEX\n20\n1\n").unwrap_err();
         assert_eq!(e.line, 3);
-        assert!(
-            e.message.contains("VERTEX") && e.message.contains("group 10"),
-            "{}",
-            e.message
-        );
+        assert!(e.message.contains("VERTEX") && e.message.contains("group 10"), "{}", e.message);
 
         let e = read_dxf("AutoCAD Binary DXF\r\n\u{1a}\0").unwrap_err();
         assert!(e.message.contains("binary DXF"), "{}", e.message);
@@ -700,18 +610,8 @@ mod tests {
 
     #[test]
     fn never_panics_on_garbage() {
-        let samples = [
-            "",
-            "\n",
-            "0",
-            "0\n",
-            " 0 \n\r\n",
-            "\u{feff}",
-            "0\nSECTION\n",
-            "0\nVERTEX\n10\n1\n",
-            "é\nü",
-            "\r\r\r",
-        ];
+        let samples =
+            ["", "\n", "0", "0\n", " 0 \n\r\n", "\u{feff}", "0\nSECTION\n", "0\nVERTEX\n10\n1\n", "é\nü", "\r\r\r"];
         for s in samples {
             let _ = read_dxf(s);
         }

@@ -21,6 +21,7 @@ pub fn read_loops(text: &str) -> Result<Vec<RawPolyline>, ParseError> {
         line: e.line(),
         column: e.column(),
         message: e.to_string(),
+        unsupported: false,
     })?;
     let mut out = Vec::with_capacity(file.loops.len());
     for (li, lp) in file.loops.into_iter().enumerate() {
@@ -35,20 +36,13 @@ pub fn read_loops(text: &str) -> Result<Vec<RawPolyline>, ParseError> {
                         line: 1,
                         column: 1,
                         message: format!("loop {li}, vertex {vi}: expected [x, y] or [x, y, bulge], found {n} numbers"),
+                        unsupported: false,
                     })
                 }
             };
-            vertices.push(RawVertex {
-                x: v[0],
-                y: v[1],
-                bulge,
-            });
+            vertices.push(RawVertex { x: v[0], y: v[1], bulge });
         }
-        out.push(RawPolyline {
-            vertices,
-            closed: true,
-            source: li,
-        });
+        out.push(RawPolyline { vertices, closed: true, source: li });
     }
     Ok(out)
 }
@@ -83,14 +77,7 @@ mod tests {
     fn reads_bulges_and_defaults_missing_bulge_to_zero() {
         let loops = read_loops(r#"{"loops": [[[0,0,0.5],[1,0],[1,1,-1]]], "name": "x"}"#).unwrap();
         assert_eq!(loops.len(), 1);
-        assert_eq!(
-            loops[0].vertices[0],
-            RawVertex {
-                x: 0.0,
-                y: 0.0,
-                bulge: 0.5
-            }
-        );
+        assert_eq!(loops[0].vertices[0], RawVertex { x: 0.0, y: 0.0, bulge: 0.5 });
         assert_eq!(loops[0].vertices[1].bulge, 0.0);
         assert_eq!(loops[0].vertices[2].bulge, -1.0);
     }
@@ -107,18 +94,10 @@ mod tests {
     #[test]
     fn writing_then_reading_is_bit_exact() {
         let lp = vec![
-            RawVertex {
-                x: 0.1,
-                y: 1e-300,
-                bulge: 0.3333333333333333,
-            },
-            RawVertex {
-                x: -7.0,
-                y: 2.5e17,
-                bulge: 0.0,
-            },
+            RawVertex { x: 0.1, y: 1e-300, bulge: 0.3333333333333333 },
+            RawVertex { x: -7.0, y: 2.5e17, bulge: 0.0 },
         ];
-        let back = read_loops(&write_loops(&[lp.clone()])).unwrap();
+        let back = read_loops(&write_loops(std::slice::from_ref(&lp))).unwrap();
         assert_eq!(back[0].vertices, lp);
     }
 }

@@ -58,18 +58,15 @@ pub struct ParseError {
     pub column: usize,
     /// What was wrong, for a person.
     pub message: String,
+    /// True when the input is well-formed but uses something medax does not
+    /// read (yet): Bézier curves in SVG, binary DXF.
+    pub unsupported: bool,
 }
 
 impl fmt::Display for ParseError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         if self.line == 0 {
-            write!(
-                f,
-                "{} parse error at byte {}: {}",
-                self.format.name(),
-                self.column,
-                self.message
-            )
+            write!(f, "{} parse error at byte {}: {}", self.format.name(), self.column, self.message)
         } else {
             write!(
                 f,

@@ -67,7 +67,8 @@ pub struct SvgSubpath {
 
 /// Parses SVG path data (the `d` attribute) into subpaths with absolute
 /// coordinates. Supports M, L, H, V, A, Z in both cases with implicit command
-/// repetition.
+/// repetition (extra pairs after M are L). A drawing command after `Z` starts a
+/// new subpath at the closed subpath's start, as the SVG specification says.
 ///
 /// # Errors
 ///
@@ -99,35 +100,24 @@ pub fn read_svg(text: &str) -> Result<Vec<SvgSubpath>, ParseError> {
 }
 
 fn error(at: usize, message: String) -> ParseError {
-    ParseError {
-        format: Format::Svg,
-        line: 0,
-        column: at,
-        message,
-    }
+    ParseError { format: Format::Svg, line: 0, column: at, message, unsupported: false }
 }
 
 /// A subpath with its segments.
 fn subpath(start: [f64; 2], segs: Vec<PathSeg>, closed: bool, source: usize) -> SvgSubpath {
-    SvgSubpath {
-        start,
-        segs,
-        closed,
-        source,
-    }
+    SvgSubpath { start, segs, closed, source }
 }
 
 /// An unrotated elliptical arc in the positive-angle direction of at most
 /// 180 degrees: the pieces of circles, ellipses and rounded corners.
 fn arc_to(rx: f64, ry: f64, to: [f64; 2]) -> PathSeg {
-    PathSeg::Arc {
-        rx,
-        ry,
-        x_rotation_deg: 0.0,
-        large_arc: false,
-        sweep: true,
-        to,
-    }
+    PathSeg::Arc { rx, ry, x_rotation_deg: 0.0, large_arc: false, sweep: true, to }
+}
+
+/// At most the first 40 characters of a name, so that garbage input cannot
+/// make a huge message.
+fn clip(s: &str) -> &str {
+    s.char_indices().nth(40).and_then(|(i, _)| s.get(..i)).unwrap_or(s)
 }
 
 fn is_wsp(b: u8) -> bool {
@@ -160,12 +150,7 @@ struct Cursor<'a> {
 
 impl<'a> Cursor<'a> {
     fn new(text: &'a str, base: usize, ctx: Ctx<'a>) -> Cursor<'a> {
-        Cursor {
-            text,
-            pos: 0,
-            base,
-            ctx,
-        }
+        Cursor { text, pos: 0, base, ctx }
     }
 
     fn peek(&self) -> Option<u8> {
@@ -242,8 +227,7 @@ impl<'a> Cursor<'a> {
             }
         }
         let s = self.text.get(start..self.pos).unwrap_or("");
-        s.parse::<f64>()
-            .map_err(|_| error(self.base + start, format!("invalid number {s:?} for {}", self.ctx)))
+        s.parse::<f64>().map_err(|_| error(self.base + start, format!("invalid number {:?} for {}", clip(s), self.ctx)))
     }
 
     fn pair(&mut self) -> Result<[f64; 2], ParseError> {
@@ -320,23 +304,12 @@ fn parse_path_at(d: &str, base: usize) -> Result<Vec<SvgSubpath>, ParseError> {
                     "Bézier curves are not supported yet (found the '{}' command); convert curves to lines and arcs first",
                     letter as char
                 );
-                return Err(error(at, msg));
+                return Err(ParseError { unsupported: true, ..error(at, msg) });
             }
-            _ => {
-                return Err(error(
-                    at,
-                    format!("expected a path command (M, L, H, V, A or Z), found {}", c.found()),
-                ))
-            }
+            _ => return Err(error(at, format!("expected a path command (M, L, H, V, A or Z), found {}", c.found()))),
         }
         if b.out.is_empty() && b.open.is_none() && !matches!(letter, b'M' | b'm') {
-            return Err(error(
-                at,
-                format!(
-                    "path data must begin with a moveto (M or m), found '{}'",
-                    letter as char
-                ),
-            ));
+            return Err(error(at, format!("path data must begin with a moveto (M or m), found '{}'", letter as char)));
         }
         c.pos += 1;
         c.ctx = Ctx::Command(letter as char);
@@ -387,18 +360,7 @@ fn parse_path_at(d: &str, base: usize) -> Result<Vec<SvgSubpath>, ParseError> {
                 let large_arc = c.flag()?;
                 let sweep = c.flag()?;
                 let to = abs(&b, c.pair()?);
-                b.push(
-                    PathSeg::Arc {
-                        rx,
-                        ry,
-                        x_rotation_deg,
-                        large_arc,
-                        sweep,
-                        to,
-                    },
-                    to,
-                    at,
-                );
+                b.push(PathSeg::Arc { rx, ry, x_rotation_deg, large_arc, sweep, to }, to, at);
                 if !c.more_args() {
                     break;
                 }
@@ -423,12 +385,8 @@ fn find_byte(bytes: &[u8], from: usize, needle: u8) -> Option<usize> {
 
 /// The offset just past the first `end` at or after `from`.
 fn skip_past(bytes: &[u8], from: usize, end: &[u8], start: usize, what: &str) -> Result<usize, ParseError> {
-    let found = bytes
-        .get(from..)
-        .and_then(|rest| rest.windows(end.len()).position(|w| w == end));
-    found
-        .map(|i| from + i + end.len())
-        .ok_or_else(|| error(start, format!("unterminated {what}")))
+    let found = bytes.get(from..).and_then(|rest| rest.windows(end.len()).position(|w| w == end));
+    found.map(|i| from + i + end.len()).ok_or_else(|| error(start, format!("unterminated {what}")))
 }
 
 /// Reads a start tag at `lt` into its name and `attrs`; returns the name,
@@ -447,7 +405,7 @@ fn scan_tag<'a>(text: &'a str, lt: usize, attrs: &mut Vec<Attr<'a>>) -> Result<(
         }
         j
     };
-    let mut j = name_end(lt + 1, b"/>");
+    let mut j = name_end(lt + 1, b"/><");
     let name = text.get(lt + 1..j).unwrap_or("");
     if name.is_empty() {
         return Err(error(lt, "expected an element name after '<'".into()));
@@ -456,20 +414,17 @@ fn scan_tag<'a>(text: &'a str, lt: usize, attrs: &mut Vec<Attr<'a>>) -> Result<(
     loop {
         j = skip_wsp(j);
         match bytes.get(j) {
-            None => return Err(error(lt, format!("unterminated <{name}> tag"))),
+            None => return Err(error(lt, format!("unterminated <{}> tag", clip(name)))),
             Some(b'>') => return Ok((name, false, j + 1)),
             Some(b'/') if bytes.get(j + 1) == Some(&b'>') => return Ok((name, true, j + 2)),
             Some(_) => {}
         }
         let attr_start = j;
-        j = name_end(j, b"=/>");
+        j = name_end(j, b"=/><");
         let attr = text.get(attr_start..j).unwrap_or("");
         j = skip_wsp(j);
         if attr.is_empty() || bytes.get(j) != Some(&b'=') {
-            return Err(error(
-                j,
-                format!("expected an attribute name followed by '=' in <{name}> tag"),
-            ));
+            return Err(error(j, format!("expected an attribute name followed by '=' in <{}> tag", clip(name))));
         }
         j = skip_wsp(j + 1);
         let quote = match bytes.get(j) {
@@ -477,17 +432,13 @@ fn scan_tag<'a>(text: &'a str, lt: usize, attrs: &mut Vec<Attr<'a>>) -> Result<(
             _ => {
                 return Err(error(
                     j,
-                    format!("expected a quoted value for attribute '{attr}' of <{name}>"),
+                    format!("expected a quoted value for attribute '{}' of <{}>", clip(attr), clip(name)),
                 ))
             }
         };
-        let close =
-            find_byte(bytes, j + 1, quote).ok_or_else(|| error(j, format!("unterminated value of '{attr}'")))?;
-        attrs.push(Attr {
-            name: attr,
-            value: text.get(j + 1..close).unwrap_or(""),
-            at: j + 1,
-        });
+        let close = find_byte(bytes, j + 1, quote)
+            .ok_or_else(|| error(j, format!("unterminated value of '{}'", clip(attr))))?;
+        attrs.push(Attr { name: attr, value: text.get(j + 1..close).unwrap_or(""), at: j + 1 });
         j = close + 1;
     }
 }
@@ -525,9 +476,7 @@ fn read_document(text: &str, from: usize) -> Result<Vec<SvgSubpath>, ParseError>
                 "defs" | "symbol" | "clipPath" | "mask" | "pattern" | "marker" => hidden = usize::from(!self_closing),
                 // Their text may hold '<' that is not markup.
                 "script" | "style" if !self_closing => {
-                    i = (end..bytes.len())
-                        .find(|&k| bytes[k..].starts_with(b"</"))
-                        .unwrap_or(bytes.len());
+                    i = (end..bytes.len()).find(|&k| bytes[k..].starts_with(b"</")).unwrap_or(bytes.len());
                 }
                 _ => element(local, lt, &attrs, &mut out)?,
             }
@@ -755,10 +704,7 @@ mod tests {
         let p = parse_path_data(d).unwrap();
         assert_eq!(p.len(), 3);
         assert!(p[0].closed && p[1].closed && !p[2].closed);
-        assert_eq!(
-            (p[1].start, p[1].segs.clone(), p[1].source),
-            ([1.0, 0.0], vec![line(5.0, 5.0)], 17)
-        );
+        assert_eq!((p[1].start, p[1].segs.clone(), p[1].source), ([1.0, 0.0], vec![line(5.0, 5.0)], 17));
         assert_eq!((p[2].start, p[2].segs.clone()), ([2.0, 1.0], vec![line(3.0, 1.0)]));
     }
 
@@ -766,17 +712,8 @@ mod tests {
     fn reports_unsupported_and_malformed_data_with_offsets() {
         let e = parse_path_data("M0 0 L1 1 C 1 2 3 4 5 6").unwrap_err();
         assert_eq!((e.format, e.line, e.column), (Format::Svg, 0, 10));
-        assert!(
-            e.message.contains("Bézier curves are not supported yet"),
-            "{}",
-            e.message
-        );
-        let cases = [
-            ("L1 1", 0, "moveto"),
-            ("  z", 2, "moveto"),
-            ("M1", 2, "number"),
-            ("M1 2 x", 5, "path command"),
-        ];
+        assert!(e.message.contains("Bézier curves are not supported yet"), "{}", e.message);
+        let cases = [("L1 1", 0, "moveto"), ("  z", 2, "moveto"), ("M1", 2, "number"), ("M1 2 x", 5, "path command")];
         for (d, at, word) in cases {
             let e = parse_path_data(d).unwrap_err();
             assert_eq!(e.column, at, "{d}");
@@ -808,28 +745,12 @@ mod tests {
         let p = read_svg(doc).unwrap();
         assert_eq!(p.len(), 6);
         assert!(p[0].closed && !p[1].closed && p[2].closed && p[3].closed && !p[4].closed);
-        assert_eq!(
-            (p[0].start, p[0].segs.clone()),
-            ([0.0, 0.0], vec![line(10.0, 0.0), line(10.0, 10.0)])
-        );
+        assert_eq!((p[0].start, p[0].segs.clone()), ([0.0, 0.0], vec![line(10.0, 0.0), line(10.0, 10.0)]));
         assert_eq!(p[0].source, doc.find("<polygon").unwrap());
         assert_eq!(p[1].segs, vec![line(3.0, 4.0)]);
-        assert_eq!(
-            (p[2].start, p[2].segs.clone()),
-            ([1.0, 2.0], vec![line(5.0, 2.0), line(5.0, 5.0), line(1.0, 5.0)])
-        );
-        let half = |to| PathSeg::Arc {
-            rx: 2.0,
-            ry: 2.0,
-            x_rotation_deg: 0.0,
-            large_arc: false,
-            sweep: true,
-            to,
-        };
-        assert_eq!(
-            (p[3].start, p[3].segs.clone()),
-            ([7.0, 6.0], vec![half([3.0, 6.0]), half([7.0, 6.0])])
-        );
+        assert_eq!((p[2].start, p[2].segs.clone()), ([1.0, 2.0], vec![line(5.0, 2.0), line(5.0, 5.0), line(1.0, 5.0)]));
+        let half = |to| PathSeg::Arc { rx: 2.0, ry: 2.0, x_rotation_deg: 0.0, large_arc: false, sweep: true, to };
+        assert_eq!((p[3].start, p[3].segs.clone()), ([7.0, 6.0], vec![half([3.0, 6.0]), half([7.0, 6.0])]));
         assert_eq!((p[4].start, p[4].segs.clone()), ([0.0, 0.0], vec![line(3.0, 4.0)]));
         assert_eq!(p[5].source, doc.find("M 1 1").unwrap());
     }
@@ -840,23 +761,12 @@ mod tests {
         assert_eq!(p[0].start, [2.0, 0.0]);
         assert_eq!(p[0].segs.len(), 6, "the vertical sides vanish when the corners meet");
         assert_eq!(p[0].segs[0], line(8.0, 0.0));
-        let corner = PathSeg::Arc {
-            rx: 2.0,
-            ry: 2.0,
-            x_rotation_deg: 0.0,
-            large_arc: false,
-            sweep: true,
-            to: [2.0, 0.0],
-        };
+        let corner =
+            PathSeg::Arc { rx: 2.0, ry: 2.0, x_rotation_deg: 0.0, large_arc: false, sweep: true, to: [2.0, 0.0] };
         assert_eq!(p[0].segs[5], corner);
         let e = read_svg(r#"<rect width="10" height="4" rx="1" ry="1.5"/>"#).unwrap_err();
         assert!(e.message.contains("circular"), "{}", e.message);
-        assert_eq!(
-            read_svg(r#"<rect width="10" height="4" rx="0" ry="3"/>"#).unwrap()[0]
-                .segs
-                .len(),
-            3
-        );
+        assert_eq!(read_svg(r#"<rect width="10" height="4" rx="0" ry="3"/>"#).unwrap()[0].segs.len(), 3);
     }
 
     #[test]
@@ -870,10 +780,7 @@ mod tests {
         assert_eq!(read_svg("<svg><!-- open").unwrap_err().column, 5);
         assert_eq!(read_svg("<svg><line x1=\"1\"").unwrap_err().column, 5);
         assert!(read_svg("<circle r=\"-1\"/>").is_err());
-        assert!(read_svg("<polygon points=\"1 2 3\"/>")
-            .unwrap_err()
-            .message
-            .contains("odd"));
+        assert!(read_svg("<polygon points=\"1 2 3\"/>").unwrap_err().message.contains("odd"));
         assert_eq!(read_svg("\u{feff}  M1 2 L 3").unwrap_err().column, 13);
     }
 

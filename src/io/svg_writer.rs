@@ -47,22 +47,12 @@ pub struct Style {
 impl Style {
     /// A stroke-only style.
     pub fn stroke(colour: &str, width_px: f64) -> Style {
-        Style {
-            stroke: colour.into(),
-            fill: "none".into(),
-            width_px,
-            fill_opacity: 1.0,
-        }
+        Style { stroke: colour.into(), fill: "none".into(), width_px, fill_opacity: 1.0 }
     }
 
     /// A filled style with an outline.
     pub fn filled(stroke: &str, fill: &str, width_px: f64, fill_opacity: f64) -> Style {
-        Style {
-            stroke: stroke.into(),
-            fill: fill.into(),
-            width_px,
-            fill_opacity,
-        }
+        Style { stroke: stroke.into(), fill: fill.into(), width_px, fill_opacity }
     }
 
     fn attrs(&self) -> String {
@@ -191,7 +181,7 @@ impl SvgDocument {
         let s = self.width_px / w;
         format!(
             "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{wp}\" height=\"{hp}\" viewBox=\"0 0 {wp} {hp}\">\n\
-             <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n\
+             <rect width=\"{wp}\" height=\"{hp}\" fill=\"white\"/>\n\
              <g transform=\"matrix({s} 0 0 {ns} {tx} {ty})\">\n{model}</g>\n{screen}</svg>\n",
             wp = num(self.width_px),
             hp = num(height_px.round()),

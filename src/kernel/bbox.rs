@@ -20,17 +20,12 @@ impl Default for BBox {
 
 impl BBox {
     /// The box that contains nothing; the identity of [`BBox::union`].
-    pub const EMPTY: BBox = BBox {
-        min: Point::new(f64::INFINITY, f64::INFINITY),
-        max: Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY),
-    };
+    pub const EMPTY: BBox =
+        BBox { min: Point::new(f64::INFINITY, f64::INFINITY), max: Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY) };
 
     /// The smallest box containing both points.
     pub fn of_points(a: Point, b: Point) -> BBox {
-        BBox {
-            min: Point::new(a.x.min(b.x), a.y.min(b.y)),
-            max: Point::new(a.x.max(b.x), a.y.max(b.y)),
-        }
+        BBox { min: Point::new(a.x.min(b.x), a.y.min(b.y)), max: Point::new(a.x.max(b.x), a.y.max(b.y)) }
     }
 
     /// True when the box contains nothing.
@@ -56,10 +51,7 @@ impl BBox {
 
     /// The box grown by `d` on every side.
     pub fn inflate(&self, d: f64) -> BBox {
-        BBox {
-            min: Point::new(self.min.x - d, self.min.y - d),
-            max: Point::new(self.max.x + d, self.max.y + d),
-        }
+        BBox { min: Point::new(self.min.x - d, self.min.y - d), max: Point::new(self.max.x + d, self.max.y + d) }
     }
 
     /// True when the closed boxes share at least one point.

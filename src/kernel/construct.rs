@@ -98,20 +98,11 @@ mod tests {
 
     #[test]
     fn parallel_lines_have_no_intersection() {
-        assert!(line_line(
-            Point::new(0.0, 0.0),
-            Point::new(1.0, 1.0),
-            Point::new(0.0, 1.0),
-            Point::new(2.0, 2.0)
-        )
-        .is_none());
-        let (p, _, _) = line_line(
-            Point::new(0.0, 0.0),
-            Point::new(1.0, 0.0),
-            Point::new(2.0, -1.0),
-            Point::new(0.0, 3.0),
-        )
-        .unwrap();
+        assert!(
+            line_line(Point::new(0.0, 0.0), Point::new(1.0, 1.0), Point::new(0.0, 1.0), Point::new(2.0, 2.0)).is_none()
+        );
+        let (p, _, _) =
+            line_line(Point::new(0.0, 0.0), Point::new(1.0, 0.0), Point::new(2.0, -1.0), Point::new(0.0, 3.0)).unwrap();
         assert_eq!(p, Point::new(2.0, 0.0));
     }
 }

@@ -182,9 +182,6 @@ mod tests {
         assert_eq!(k.circle_side(a, b, c, Point::new(0.0, -1.0)), CircleSide::On);
         assert_eq!(k.circle_side(a, b, c, Point::new(0.0, 0.0)), CircleSide::Inside);
         assert_eq!(k.circle_side(a, b, c, Point::new(2.0, 0.0)), CircleSide::Outside);
-        assert_eq!(
-            k.circle_side(a, b, c, Point::new(0.6, 0.8)),
-            exact::circle_side(a, b, c, Point::new(0.6, 0.8))
-        );
+        assert_eq!(k.circle_side(a, b, c, Point::new(0.6, 0.8)), exact::circle_side(a, b, c, Point::new(0.6, 0.8)));
     }
 }

@@ -57,11 +57,7 @@ impl BoxTree {
             .collect();
         keyed.sort_unstable();
         let order: Vec<u32> = keyed.into_iter().map(|(_, i)| i).collect();
-        let mut tree = BoxTree {
-            nodes: Vec::with_capacity(2 * n / LEAF + 2),
-            order,
-            boxes,
-        };
+        let mut tree = BoxTree { nodes: Vec::with_capacity(2 * n / LEAF + 2), order, boxes };
         if n > 0 {
             tree.build(0, n);
         }
@@ -71,33 +67,16 @@ impl BoxTree {
     fn build(&mut self, start: usize, end: usize) -> u32 {
         let id = self.nodes.len() as u32;
         if end - start <= LEAF {
-            let bbox = self.order[start..end]
-                .iter()
-                .fold(BBox::EMPTY, |a, &i| a.union(&self.boxes[i as usize]));
-            self.nodes.push(Node {
-                bbox,
-                start: start as u32,
-                end: end as u32,
-                leaf: true,
-            });
+            let bbox = self.order[start..end].iter().fold(BBox::EMPTY, |a, &i| a.union(&self.boxes[i as usize]));
+            self.nodes.push(Node { bbox, start: start as u32, end: end as u32, leaf: true });
             return id;
         }
-        self.nodes.push(Node {
-            bbox: BBox::EMPTY,
-            start: 0,
-            end: 0,
-            leaf: false,
-        });
+        self.nodes.push(Node { bbox: BBox::EMPTY, start: 0, end: 0, leaf: false });
         let mid = start + (end - start) / 2;
         let l = self.build(start, mid);
         let r = self.build(mid, end);
         let bbox = self.nodes[l as usize].bbox.union(&self.nodes[r as usize].bbox);
-        self.nodes[id as usize] = Node {
-            bbox,
-            start: l,
-            end: r,
-            leaf: false,
-        };
+        self.nodes[id as usize] = Node { bbox, start: l, end: r, leaf: false };
         id
     }
 

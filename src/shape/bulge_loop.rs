@@ -88,10 +88,7 @@ impl Loop {
     pub fn reversed(&self) -> Loop {
         let n = self.vertices.len();
         let vertices = (0..n)
-            .map(|k| Vertex {
-                p: self.vertices[n - 1 - k].p,
-                bulge: -self.vertices[(2 * n - 2 - k) % n].bulge,
-            })
+            .map(|k| Vertex { p: self.vertices[n - 1 - k].p, bulge: -self.vertices[(2 * n - 2 - k) % n].bulge })
             .collect();
         Loop { vertices }
     }
@@ -121,11 +118,7 @@ pub fn winding_contribution<K: Kernel>(k: &K, e: &Element, p: Point) -> i32 {
         w -= 1;
     }
     if let Element::Arc(arc) = e {
-        let arc_side = if arc.is_ccw() {
-            Orientation::Right
-        } else {
-            Orientation::Left
-        };
+        let arc_side = if arc.is_ccw() { Orientation::Right } else { Orientation::Left };
         if (p - arc.center).norm2() < arc.radius * arc.radius && k.orientation(a, b, p) == arc_side {
             w += if arc.is_ccw() { 1 } else { -1 };
         }
@@ -139,10 +132,7 @@ mod tests {
     use crate::kernel::FilteredKernel;
 
     fn v(x: f64, y: f64, b: f64) -> Vertex {
-        Vertex {
-            p: Point::new(x, y),
-            bulge: b,
-        }
+        Vertex { p: Point::new(x, y), bulge: b }
     }
 
     #[test]
@@ -154,12 +144,7 @@ mod tests {
 
     #[test]
     fn reversal_maps_elements_back() {
-        let l = Loop::new(vec![
-            v(0.0, 0.0, 0.0),
-            v(2.0, 0.0, 0.3),
-            v(2.0, 2.0, -0.2),
-            v(0.0, 2.0, 0.0),
-        ]);
+        let l = Loop::new(vec![v(0.0, 0.0, 0.0), v(2.0, 0.0, 0.3), v(2.0, 2.0, -0.2), v(0.0, 2.0, 0.0)]);
         let r = l.reversed();
         let n = l.len();
         for k in 0..n {
@@ -176,24 +161,14 @@ mod tests {
     fn winding_number_sees_arc_bulges() {
         let k = FilteredKernel;
         // Unit square whose right side bulges out to a half circle.
-        let l = Loop::new(vec![
-            v(0.0, 0.0, 0.0),
-            v(1.0, 0.0, 1.0),
-            v(1.0, 1.0, 0.0),
-            v(0.0, 1.0, 0.0),
-        ]);
+        let l = Loop::new(vec![v(0.0, 0.0, 0.0), v(1.0, 0.0, 1.0), v(1.0, 1.0, 0.0), v(0.0, 1.0, 0.0)]);
         assert_eq!(l.winding_number(&k, Point::new(0.5, 0.5)), 1);
         assert_eq!(l.winding_number(&k, Point::new(1.4, 0.5)), 1);
         assert_eq!(l.winding_number(&k, Point::new(1.6, 0.5)), 0);
         assert_eq!(l.winding_number(&k, Point::new(-0.1, 0.5)), 0);
         assert_eq!(l.reversed().winding_number(&k, Point::new(1.4, 0.5)), -1);
         // Same side bulging in: the point at 0.9 is now outside.
-        let l = Loop::new(vec![
-            v(0.0, 0.0, 0.0),
-            v(1.0, 0.0, -0.5),
-            v(1.0, 1.0, 0.0),
-            v(0.0, 1.0, 0.0),
-        ]);
+        let l = Loop::new(vec![v(0.0, 0.0, 0.0), v(1.0, 0.0, -0.5), v(1.0, 1.0, 0.0), v(0.0, 1.0, 0.0)]);
         assert_eq!(l.winding_number(&k, Point::new(0.9, 0.5)), 0);
         assert_eq!(l.winding_number(&k, Point::new(0.5, 0.5)), 1);
     }

@@ -65,10 +65,7 @@ pub fn chain_loops(elems: &[LooseElement], tol: f64) -> Result<Vec<Loop>, ShapeE
     // A cell of 2·tol keeps every partner within the 3×3 neighbourhood while
     // bounding how many unrelated ends share a cell.
     let cell = (2.0 * tol).max(f64::MIN_POSITIVE * 1e10);
-    let mut grid = EndGrid {
-        cell,
-        cells: HashMap::with_capacity(2 * elems.len()),
-    };
+    let mut grid = EndGrid { cell, cells: HashMap::with_capacity(2 * elems.len()) };
     for (i, e) in elems.iter().enumerate() {
         for (is_end, p) in [(false, e.a), (true, e.b)] {
             let k = grid.key(p);
@@ -83,10 +80,7 @@ pub fn chain_loops(elems: &[LooseElement], tol: f64) -> Result<Vec<Loop>, ShapeE
         }
         used[first] = true;
         let start = elems[first].a;
-        let mut verts = vec![Vertex {
-            p: start,
-            bulge: elems[first].bulge,
-        }];
+        let mut verts = vec![Vertex { p: start, bulge: elems[first].bulge }];
         let mut end = elems[first].b;
         loop {
             let next = grid.nearest(end, elems, &used);
@@ -104,10 +98,7 @@ pub fn chain_loops(elems: &[LooseElement], tol: f64) -> Result<Vec<Loop>, ShapeE
                 other => {
                     let gap = other.map_or(end.dist(start), |(_, _, d)| d.min(end.dist(start)));
                     return Err(ShapeError::NotClosed {
-                        at: ElementRef {
-                            loop_index: loops.len(),
-                            element: verts.len() - 1,
-                        },
+                        at: ElementRef { loop_index: loops.len(), element: verts.len() - 1 },
                         gap,
                         position: end,
                     });
@@ -136,11 +127,7 @@ mod tests {
     use super::*;
 
     fn le(ax: f64, ay: f64, bx: f64, by: f64, bulge: f64) -> LooseElement {
-        LooseElement {
-            a: Point::new(ax, ay),
-            b: Point::new(bx, by),
-            bulge,
-        }
+        LooseElement { a: Point::new(ax, ay), b: Point::new(bx, by), bulge }
     }
 
     #[test]
@@ -160,20 +147,10 @@ mod tests {
 
     #[test]
     fn reports_the_dangling_end() {
-        let elems = [
-            le(0.0, 0.0, 1.0, 0.0, 0.0),
-            le(1.0, 0.0, 1.0, 1.0, 0.0),
-            le(1.0, 1.0, 0.0, 0.5, 0.0),
-        ];
+        let elems = [le(0.0, 0.0, 1.0, 0.0, 0.0), le(1.0, 0.0, 1.0, 1.0, 0.0), le(1.0, 1.0, 0.0, 0.5, 0.0)];
         match chain_loops(&elems, 1e-6) {
             Err(ShapeError::NotClosed { at, position, gap }) => {
-                assert_eq!(
-                    at,
-                    ElementRef {
-                        loop_index: 0,
-                        element: 2
-                    }
-                );
+                assert_eq!(at, ElementRef { loop_index: 0, element: 2 });
                 assert_eq!(position, Point::new(0.0, 0.5));
                 assert!((gap - 0.5).abs() < 1e-12);
             }

@@ -16,12 +16,7 @@ pub fn shape_path(shape: &Shape2d) -> Vec<PathCmd> {
             let to = [e.end().x, e.end().y];
             cmds.push(match e {
                 Element::Segment(_) => PathCmd::LineTo(to),
-                Element::Arc(a) => PathCmd::ArcTo {
-                    radius: a.radius,
-                    large: a.bulge.abs() > 1.0,
-                    ccw: a.is_ccw(),
-                    to,
-                },
+                Element::Arc(a) => PathCmd::ArcTo { radius: a.radius, large: a.bulge.abs() > 1.0, ccw: a.is_ccw(), to },
             });
         }
         cmds.push(PathCmd::Close);

@@ -52,13 +52,7 @@ impl Arc {
         // for b = tan(θ/4). No trigonometry, so no error from atan/tan.
         let center = a.mid(b) + d.perp() * ((1.0 - bulge * bulge) / (4.0 * bulge));
         let radius = d.norm() * (1.0 + bulge * bulge) / (4.0 * bulge.abs());
-        Arc {
-            a,
-            b,
-            bulge,
-            center,
-            radius,
-        }
+        Arc { a, b, bulge, center, radius }
     }
 
     /// True when the arc runs counter-clockwise.
@@ -80,11 +74,7 @@ impl Arc {
     /// True when the direction from the centre towards `p` lies within the
     /// arc's angular span (endpoints included). `p` need not be on the circle.
     pub fn spans_direction(&self, p: Point) -> bool {
-        let (s, e) = if self.is_ccw() {
-            (self.a, self.b)
-        } else {
-            (self.b, self.a)
-        };
+        let (s, e) = if self.is_ccw() { (self.a, self.b) } else { (self.b, self.a) };
         let (vs, ve, vp) = (s - self.center, e - self.center, p - self.center);
         if self.bulge.abs() <= 1.0 {
             // Sweep at most π: inside both half-planes.
@@ -104,12 +94,7 @@ impl Arc {
     pub fn bbox(&self) -> BBox {
         let mut bb = BBox::of_points(self.a, self.b);
         let (c, r) = (self.center, self.radius);
-        for dir in [
-            Point::new(1.0, 0.0),
-            Point::new(0.0, 1.0),
-            Point::new(-1.0, 0.0),
-            Point::new(0.0, -1.0),
-        ] {
+        for dir in [Point::new(1.0, 0.0), Point::new(0.0, 1.0), Point::new(-1.0, 0.0), Point::new(0.0, -1.0)] {
             let p = c + dir * r;
             if self.spans_direction(p) {
                 bb.add_point(p);
@@ -304,10 +289,7 @@ mod tests {
         // bulge 3 → sweep 4·atan(3) ≈ 286°.
         let e = Element::from_bulge(Point::new(1.0, 0.0), Point::new(0.0, 1.0), -(PI * 3.0 / 8.0).tan());
         let Element::Arc(a) = e else { panic!() };
-        assert!(
-            close(a.radius, 1.0) && close(a.center.x, 0.0) && close(a.center.y, 0.0),
-            "{a:?}"
-        );
+        assert!(close(a.radius, 1.0) && close(a.center.x, 0.0) && close(a.center.y, 0.0), "{a:?}");
         // Clockwise 270° from (1,0) to (0,1) passes (0,−1) and (−1,0).
         assert!(a.spans_direction(Point::new(0.0, -5.0)));
         assert!(a.spans_direction(Point::new(-5.0, 0.0)));

@@ -144,16 +144,13 @@ impl fmt::Display for ShapeError {
             Parse(e) => write!(f, "{e}"),
             Io { path, message } => write!(f, "cannot read {path}: {message}"),
             Empty => write!(f, "the shape has no loops"),
-            TooFewElements { loop_index, count } => write!(
-                f,
-                "loop {loop_index} has {count} element(s); a closed loop needs at least 2 arcs or 3 segments"
-            ),
+            TooFewElements { loop_index, count } => {
+                write!(f, "loop {loop_index} has {count} element(s); a closed loop needs at least 2 arcs or 3 segments")
+            }
             NonFinite { at } => write!(f, "{at}: a coordinate or the bulge is NaN or infinite"),
-            OutOfRange { at, value } => write!(
-                f,
-                "{at}: coordinate {value:e} is outside the supported range ±{:e}",
-                super::MAX_COORDINATE
-            ),
+            OutOfRange { at, value } => {
+                write!(f, "{at}: coordinate {value:e} is outside the supported range ±{:e}", super::MAX_COORDINATE)
+            }
             NotClosed { at, gap, position } => write!(
                 f,
                 "{at}: the boundary is not closed; the end at ({}, {}) is {gap:e} from the nearest element",
@@ -167,33 +164,20 @@ impl fmt::Display for ShapeError {
                 };
                 write!(f, "{at}: {what} at ({}, {})", position.x, position.y)
             }
-            Intersection {
-                first,
-                second,
-                position,
-            } => write!(
-                f,
-                "{first} and {second} intersect or touch at ({}, {})",
-                position.x, position.y
-            ),
-            InconsistentArc { at, deviation } => write!(
-                f,
-                "{at}: the arc's end points differ in distance from its centre by {deviation:e}"
-            ),
+            Intersection { first, second, position } => {
+                write!(f, "{first} and {second} intersect or touch at ({}, {})", position.x, position.y)
+            }
+            InconsistentArc { at, deviation } => {
+                write!(f, "{at}: the arc's end points differ in distance from its centre by {deviation:e}")
+            }
             HoleOutside { hole, position } => write!(
                 f,
                 "loop {hole} (a hole) is not inside the outer loop 0; its point ({}, {}) is outside",
                 position.x, position.y
             ),
-            HoleInsideHole {
-                hole,
-                container,
-                position,
-            } => write!(
-                f,
-                "loop {hole} (a hole) lies inside hole {container}, at ({}, {})",
-                position.x, position.y
-            ),
+            HoleInsideHole { hole, container, position } => {
+                write!(f, "loop {hole} (a hole) lies inside hole {container}, at ({}, {})", position.x, position.y)
+            }
             Unsupported { what } => write!(f, "unsupported input: {what}"),
             InvalidArgument { what } => write!(f, "invalid argument: {what}"),
         }

@@ -18,11 +18,7 @@ fn polyline_elements(p: &RawPolyline) -> Vec<LooseElement> {
     (0..count)
         .map(|i| {
             let (v, w) = (p.vertices[i], p.vertices[(i + 1) % n]);
-            LooseElement {
-                a: Point::new(v.x, v.y),
-                b: Point::new(w.x, w.y),
-                bulge: v.bulge,
-            }
+            LooseElement { a: Point::new(v.x, v.y), b: Point::new(w.x, w.y), bulge: v.bulge }
         })
         .collect()
 }
@@ -49,19 +45,13 @@ fn drawing_loops(d: &RawDrawing, opts: &ShapeOptions) -> Result<Vec<Loop>, Shape
     for p in &d.polylines {
         let elems = polyline_elements(p);
         if p.closed {
-            loops.push(Loop::new(
-                elems.iter().map(|e| Vertex { p: e.a, bulge: e.bulge }).collect(),
-            ));
+            loops.push(Loop::new(elems.iter().map(|e| Vertex { p: e.a, bulge: e.bulge }).collect()));
         } else {
             loose.extend(elems);
         }
     }
     for l in &d.lines {
-        loose.push(LooseElement {
-            a: pt(l.a),
-            b: pt(l.b),
-            bulge: 0.0,
-        });
+        loose.push(LooseElement { a: pt(l.a), b: pt(l.b), bulge: 0.0 });
     }
     for a in &d.arcs {
         let c = pt(a.center);
@@ -75,21 +65,14 @@ fn drawing_loops(d: &RawDrawing, opts: &ShapeOptions) -> Result<Vec<Loop>, Shape
             loops.push(circle_loop(c, a.radius));
         } else {
             let end = c + Point::new(e.cos(), e.sin()) * a.radius;
-            loose.push(LooseElement {
-                a: start,
-                b: end,
-                bulge: (sweep / 4.0).tan(),
-            });
+            loose.push(LooseElement { a: start, b: end, bulge: (sweep / 4.0).tan() });
         }
     }
     for c in &d.circles {
         loops.push(circle_loop(pt(c.center), c.radius));
     }
     let diag = scale_of(
-        loops
-            .iter()
-            .flat_map(|l| l.vertices.iter().map(|v| v.p))
-            .chain(loose.iter().flat_map(|e| [e.a, e.b])),
+        loops.iter().flat_map(|l| l.vertices.iter().map(|v| v.p)).chain(loose.iter().flat_map(|e| [e.a, e.b])),
     );
     let chained = chain_loops(&loose, opts.chain_tolerance_for(diag))?;
     loops.extend(chained);
@@ -99,15 +82,7 @@ fn drawing_loops(d: &RawDrawing, opts: &ShapeOptions) -> Result<Vec<Loop>, Shape
 /// Converts an SVG arc command to a bulge: the SVG sweep flag 1 means the
 /// positive-angle direction of the coordinates as written.
 fn svg_arc_bulge(from: Point, seg: &PathSeg, source: usize) -> Result<f64, ShapeError> {
-    let PathSeg::Arc {
-        rx,
-        ry,
-        large_arc,
-        sweep,
-        to,
-        ..
-    } = *seg
-    else {
+    let PathSeg::Arc { rx, ry, large_arc, sweep, to, .. } = *seg else {
         return Ok(0.0);
     };
     let (rx, ry) = (rx.abs(), ry.abs());
@@ -137,32 +112,16 @@ fn svg_loops(paths: &[SvgSubpath], opts: &ShapeOptions) -> Result<Vec<Loop>, Sha
                 PathSeg::Line { to } | PathSeg::Arc { to, .. } => *to,
             };
             let bulge = svg_arc_bulge(cur, seg, sp.source)?;
-            verts.push(crate::io::RawVertex {
-                x: cur.x,
-                y: cur.y,
-                bulge,
-            });
+            verts.push(crate::io::RawVertex { x: cur.x, y: cur.y, bulge });
             cur = pt(to);
         }
         if sp.closed && cur.dist(pt(sp.start)) > 0.0 {
             // Z draws the closing line itself.
-            verts.push(crate::io::RawVertex {
-                x: cur.x,
-                y: cur.y,
-                bulge: 0.0,
-            });
+            verts.push(crate::io::RawVertex { x: cur.x, y: cur.y, bulge: 0.0 });
         } else if !sp.closed {
-            verts.push(crate::io::RawVertex {
-                x: cur.x,
-                y: cur.y,
-                bulge: 0.0,
-            });
+            verts.push(crate::io::RawVertex { x: cur.x, y: cur.y, bulge: 0.0 });
         }
-        drawing.polylines.push(RawPolyline {
-            vertices: verts,
-            closed: sp.closed,
-            source: sp.source,
-        });
+        drawing.polylines.push(RawPolyline { vertices: verts, closed: sp.closed, source: sp.source });
     }
     drawing_loops(&drawing, opts)
 }
@@ -173,15 +132,7 @@ impl Shape2d {
         let raw = json::read_loops(text)?;
         let loops = raw
             .into_iter()
-            .map(|p| {
-                p.vertices
-                    .into_iter()
-                    .map(|v| Vertex {
-                        p: Point::new(v.x, v.y),
-                        bulge: v.bulge,
-                    })
-                    .collect()
-            })
+            .map(|p| p.vertices.into_iter().map(|v| Vertex { p: Point::new(v.x, v.y), bulge: v.bulge }).collect())
             .collect();
         Shape2d::from_bulge_loops(loops, opts)
     }
@@ -206,10 +157,7 @@ impl Shape2d {
     /// `.dxf`, `.svg`) or, failing that, from the first non-blank character.
     pub fn from_file(path: impl AsRef<std::path::Path>, opts: &ShapeOptions) -> Result<Shape2d, ShapeError> {
         let path = path.as_ref();
-        let io_err = |e: std::io::Error| ShapeError::Io {
-            path: path.display().to_string(),
-            message: e.to_string(),
-        };
+        let io_err = |e: std::io::Error| ShapeError::Io { path: path.display().to_string(), message: e.to_string() };
         let bytes = std::fs::read(path).map_err(io_err)?;
         let text = String::from_utf8_lossy(&bytes);
         let format = Format::from_path(path).unwrap_or_else(|| sniff(&text));

@@ -10,8 +10,32 @@
 //! discards spurious intersection points produced by ill-conditioned
 //! constructions (nearly tangent circles, nearly parallel lines).
 
+use super::bulge_loop::Loop;
 use super::element::Element;
+use super::error::ElementRef;
 use crate::kernel::{construct, Point};
+
+/// Where elements `ra` and `rb` of `loops` cross or come within `tol`,
+/// ignoring the surroundings (64 × `tol`) of the vertices they share as
+/// consecutive elements of one loop; `None` when they keep apart.
+pub(crate) fn element_pair_approach(loops: &[Loop], ra: ElementRef, rb: ElementRef, tol: f64) -> Option<Point> {
+    let ea = loops[ra.loop_index].element(ra.element);
+    let eb = loops[rb.loop_index].element(rb.element);
+    let mut shared = [Point::default(); 2];
+    let mut k = 0;
+    if ra.loop_index == rb.loop_index {
+        let n = loops[ra.loop_index].len();
+        if (ra.element + 1) % n == rb.element {
+            shared[k] = ea.end();
+            k += 1;
+        }
+        if (rb.element + 1) % n == ra.element {
+            shared[k] = ea.start();
+            k += 1;
+        }
+    }
+    approach_point(&ea, &eb, tol, &shared[..k], 64.0 * tol)
+}
 
 /// A point where `a` and `b` come within `tol` of each other, ignoring
 /// places within `exclude_radius` of any point in `exclude` (the vertices the

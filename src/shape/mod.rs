@@ -14,7 +14,9 @@ mod import;
 mod intersect;
 mod joints;
 mod options;
+pub mod samples;
 mod shape2d;
+mod sweep;
 mod validate;
 
 pub use box_tree::BoxTree;

@@ -47,9 +47,7 @@ impl ShapeOptions {
 
     /// The absolute chaining tolerance for a shape whose bounding-box diagonal is `diagonal`.
     pub fn chain_tolerance_for(&self, diagonal: f64) -> f64 {
-        self.chain_tolerance
-            .unwrap_or(1e-6 * diagonal)
-            .max(self.tolerance_for(diagonal))
+        self.chain_tolerance.unwrap_or(1e-6 * diagonal).max(self.tolerance_for(diagonal))
     }
 
     /// Checks that every tolerance is finite and non-negative and the angle below π/2.

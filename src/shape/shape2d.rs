@@ -76,26 +76,14 @@ fn push_arc(out: &mut Vec<LooseElement>, center: Point, a: Point, sweep: f64) {
     if sweep.abs() >= TAU * (1.0 - 1e-15) {
         let s = sweep.signum();
         let opposite = center * 2.0 - a;
-        out.push(LooseElement {
-            a,
-            b: opposite,
-            bulge: s,
-        });
-        out.push(LooseElement {
-            a: opposite,
-            b: a,
-            bulge: s,
-        });
+        out.push(LooseElement { a, b: opposite, bulge: s });
+        out.push(LooseElement { a: opposite, b: a, bulge: s });
     } else {
         let ang = sweep;
         let v = a - center;
         let (sn, cs) = ang.sin_cos();
         let b = center + Point::new(cs * v.x - sn * v.y, sn * v.x + cs * v.y);
-        out.push(LooseElement {
-            a,
-            b,
-            bulge: (sweep / 4.0).tan(),
-        });
+        out.push(LooseElement { a, b, bulge: (sweep / 4.0).tan() });
     }
 }
 
@@ -144,19 +132,15 @@ impl Shape2d {
         for (li, specs) in loops.iter().enumerate() {
             let mut out = Vec::with_capacity(specs.len());
             for (i, s) in specs.iter().enumerate() {
-                let here = ElementRef {
-                    loop_index: li,
-                    element: out.len(),
-                };
+                let here = ElementRef { loop_index: li, element: out.len() };
                 match *s {
-                    ElementSpec::Segment { a, b } => out.push(LooseElement { a, b, bulge: 0.0 }),
-                    ElementSpec::ArcAngles {
-                        center,
-                        radius,
-                        start,
-                        end,
-                        ccw,
-                    } => {
+                    ElementSpec::Segment { a, b } => {
+                        if !(a.is_finite() && b.is_finite()) {
+                            return Err(ShapeError::NonFinite { at: here });
+                        }
+                        out.push(LooseElement { a, b, bulge: 0.0 })
+                    }
+                    ElementSpec::ArcAngles { center, radius, start, end, ccw } => {
                         if !(center.is_finite() && radius.is_finite() && start.is_finite() && end.is_finite()) {
                             return Err(ShapeError::NonFinite { at: here });
                         }
@@ -184,11 +168,7 @@ impl Shape2d {
                         if a == b {
                             push_arc(&mut out, center, a, sweep);
                         } else {
-                            out.push(LooseElement {
-                                a,
-                                b,
-                                bulge: (sweep / 4.0).tan(),
-                            });
+                            out.push(LooseElement { a, b, bulge: (sweep / 4.0).tan() });
                         }
                     }
                 }
@@ -208,18 +188,13 @@ impl Shape2d {
                 let gap = end.dist(next);
                 if gap.is_nan() || gap > tol {
                     return Err(ShapeError::NotClosed {
-                        at: ElementRef {
-                            loop_index: li,
-                            element: i,
-                        },
+                        at: ElementRef { loop_index: li, element: i },
                         gap,
                         position: end,
                     });
                 }
             }
-            result.push(Loop::new(
-                elems.iter().map(|e| Vertex { p: e.a, bulge: e.bulge }).collect(),
-            ));
+            result.push(Loop::new(elems.iter().map(|e| Vertex { p: e.a, bulge: e.bulge }).collect()));
         }
         Self::from_loops(result, opts)
     }
@@ -285,12 +260,7 @@ impl Shape2d {
 
     /// Counts of (segments, arcs) over all loops.
     pub fn element_counts(&self) -> (usize, usize) {
-        let arcs = self
-            .loops
-            .iter()
-            .flat_map(|l| l.vertices.iter())
-            .filter(|v| v.bulge != 0.0)
-            .count();
+        let arcs = self.loops.iter().flat_map(|l| l.vertices.iter()).filter(|v| v.bulge != 0.0).count();
         (self.element_count() - arcs, arcs)
     }
 
@@ -323,16 +293,7 @@ impl Shape2d {
     pub fn to_raw_loops(&self) -> Vec<Vec<crate::io::RawVertex>> {
         self.loops
             .iter()
-            .map(|l| {
-                l.vertices
-                    .iter()
-                    .map(|v| crate::io::RawVertex {
-                        x: v.p.x,
-                        y: v.p.y,
-                        bulge: v.bulge,
-                    })
-                    .collect()
-            })
+            .map(|l| l.vertices.iter().map(|v| crate::io::RawVertex { x: v.p.x, y: v.p.y, bulge: v.bulge }).collect())
             .collect()
     }
 

@@ -8,13 +8,15 @@
 use super::box_tree::BoxTree;
 use super::bulge_loop::{winding_contribution, Loop};
 use super::error::{Degeneracy, ElementRef, ShapeError};
-use super::intersect::approach_point;
+use super::intersect::element_pair_approach;
 use super::joints::{classify, turning_angle, JointKind};
 use super::options::ShapeOptions;
+use super::sweep::{sweep_intersections, SweepOutcome};
 use super::MAX_COORDINATE;
 use crate::kernel::{BBox, FilteredKernel, Point};
 use rayon::prelude::*;
 use std::ops::ControlFlow;
+use std::sync::atomic::{AtomicUsize, Ordering as AtomicOrdering};
 
 /// The result of validation: normalised loops and what was learned on the way.
 pub(crate) struct Validated {
@@ -54,10 +56,7 @@ pub(crate) fn validate(mut loops: Vec<Loop>, opts: &ShapeOptions) -> Result<Vali
             let bb = e.bbox();
             for v in [bb.min.x, bb.min.y, bb.max.x, bb.max.y] {
                 if v.abs() > MAX_COORDINATE {
-                    return Err(ShapeError::OutOfRange {
-                        at: at(li, i),
-                        value: v,
-                    });
+                    return Err(ShapeError::OutOfRange { at: at(li, i), value: v });
                 }
             }
         }
@@ -70,6 +69,12 @@ pub(crate) fn validate(mut loops: Vec<Loop>, opts: &ShapeOptions) -> Result<Vali
                 });
             }
         }
+    }
+    let index = ElementIndex::new(&loops);
+    check_intersections(&loops, &index, tol)?;
+    // After the intersection check, so that a symmetric bow-tie is reported
+    // as the crossing it is rather than as "no area".
+    for (li, l) in loops.iter().enumerate() {
         if l.signed_area().abs() <= tol * l.perimeter() {
             return Err(ShapeError::Degenerate {
                 at: at(li, 0),
@@ -78,8 +83,6 @@ pub(crate) fn validate(mut loops: Vec<Loop>, opts: &ShapeOptions) -> Result<Vali
             });
         }
     }
-    let index = ElementIndex::new(&loops);
-    check_intersections(&loops, &index, tol)?;
     check_holes(&loops, &index)?;
 
     let mut reversed = Vec::with_capacity(loops.len());
@@ -93,30 +96,16 @@ pub(crate) fn validate(mut loops: Vec<Loop>, opts: &ShapeOptions) -> Result<Vali
     }
     let joints = loops
         .iter()
-        .map(|l| {
-            (0..l.len())
-                .map(|i| classify(turning_angle(l, i), opts.angle_tolerance))
-                .collect()
-        })
+        .map(|l| (0..l.len()).map(|i| classify(turning_angle(l, i), opts.angle_tolerance)).collect())
         .collect();
-    Ok(Validated {
-        loops,
-        reversed,
-        joints,
-        flattened,
-        tolerance: tol,
-        bbox,
-    })
+    Ok(Validated { loops, reversed, joints, flattened, tolerance: tol, bbox })
 }
 
 fn check_numbers(loops: &[Loop]) -> Result<(), ShapeError> {
     for (li, l) in loops.iter().enumerate() {
         let n = l.len();
         if n < 2 || (n == 2 && l.vertices.iter().all(|v| v.bulge == 0.0)) {
-            return Err(ShapeError::TooFewElements {
-                loop_index: li,
-                count: n,
-            });
+            return Err(ShapeError::TooFewElements { loop_index: li, count: n });
         }
         for (i, v) in l.vertices.iter().enumerate() {
             if !(v.p.is_finite() && v.bulge.is_finite()) {
@@ -124,10 +113,7 @@ fn check_numbers(loops: &[Loop]) -> Result<(), ShapeError> {
             }
             for c in [v.p.x, v.p.y] {
                 if c.abs() > MAX_COORDINATE {
-                    return Err(ShapeError::OutOfRange {
-                        at: at(li, i),
-                        value: c,
-                    });
+                    return Err(ShapeError::OutOfRange { at: at(li, i), value: c });
                 }
             }
         }
@@ -143,11 +129,7 @@ fn check_elements(li: usize, l: &mut Loop, tol: f64, flatten: f64) -> Result<usi
     for i in 0..n {
         let (a, b) = (l.vertices[i].p, l.vertices[(i + 1) % n].p);
         if a.dist(b) <= tol {
-            return Err(ShapeError::Degenerate {
-                at: at(li, i),
-                kind: Degeneracy::ZeroLength,
-                position: a,
-            });
+            return Err(ShapeError::Degenerate { at: at(li, i), kind: Degeneracy::ZeroLength, position: a });
         }
         if l.vertices[i].bulge != 0.0 && l.element(i).sagitta() <= flatten {
             l.vertices[i].bulge = 0.0;
@@ -173,14 +155,8 @@ impl ElementIndex {
             total += l.len();
         }
         offsets.push(total);
-        let boxes: Vec<BBox> = loops
-            .par_iter()
-            .flat_map_iter(|l| l.elements().map(|e| e.bbox()))
-            .collect();
-        ElementIndex {
-            tree: BoxTree::new(boxes),
-            offsets,
-        }
+        let boxes: Vec<BBox> = loops.par_iter().flat_map_iter(|l| l.elements().map(|e| e.bbox())).collect();
+        ElementIndex { tree: BoxTree::new(boxes), offsets }
     }
 
     pub fn locate(&self, id: usize) -> ElementRef {
@@ -189,48 +165,85 @@ impl ElementIndex {
     }
 }
 
+/// Box-tree candidates visited per element before the sweep takes over: the
+/// tree is fast and parallel on ordinary boundaries, the sweep is O(n log n)
+/// on every boundary (dense spokes, combs) where element boxes overlap a lot.
+const TREE_BUDGET_PER_ELEMENT: usize = 48;
+
 fn check_intersections(loops: &[Loop], index: &ElementIndex, tol: f64) -> Result<(), ShapeError> {
+    let tree_result = if tree_looks_cheap(index, tol) {
+        tree_intersections(loops, index, tol, Some(TREE_BUDGET_PER_ELEMENT))
+    } else {
+        None
+    };
+    let found = match tree_result {
+        Some(found) => found,
+        None => match sweep_intersections(loops, &index.offsets, tol) {
+            SweepOutcome::Clear => None,
+            SweepOutcome::Found(a, b, p) => Some((a, b, p)),
+            // The height order broke down, which only happens next to a
+            // crossing the sweep has not isolated yet: search exhaustively.
+            SweepOutcome::Inconsistent => tree_intersections(loops, index, tol, None).flatten(),
+        },
+    };
+    match found {
+        Some((first, second, position)) => Err(ShapeError::Intersection { first, second, position }),
+        None => Ok(()),
+    }
+}
+
+type Pair = (ElementRef, ElementRef, Point);
+
+/// Estimates the box tree's work from a sample of about 1000 evenly spaced
+/// elements (box overlaps only, no geometry), so that boundaries where boxes
+/// overlap heavily go straight to the sweep.
+fn tree_looks_cheap(index: &ElementIndex, tol: f64) -> bool {
+    let total = index.tree.len();
+    let step = (total / 1024).max(1);
+    let mut sampled = 0usize;
+    let mut overlaps = 0usize;
+    for gid in (0..total).step_by(step) {
+        sampled += 1;
+        let query = index.tree.item_box(gid).inflate(tol);
+        index.tree.visit_overlapping::<()>(&query, |_| {
+            overlaps += 1;
+            ControlFlow::Continue(())
+        });
+    }
+    overlaps <= sampled * TREE_BUDGET_PER_ELEMENT / 2
+}
+
+/// Tests every element against the elements whose boxes overlap its own,
+/// in parallel; the smallest offending pair wins. `None` when the work
+/// budget (candidates per element) ran out before an answer.
+fn tree_intersections(loops: &[Loop], index: &ElementIndex, tol: f64, budget: Option<usize>) -> Option<Option<Pair>> {
     let total = *index.offsets.last().unwrap_or(&0);
-    let exclude_radius = 64.0 * tol;
+    let limit = budget.map_or(usize::MAX, |b| b.saturating_mul(total).max(4096));
+    let visited = AtomicUsize::new(0);
     let first = (0..total).into_par_iter().find_map_first(|gid| {
         let r = index.locate(gid);
-        let l = &loops[r.loop_index];
-        let n = l.len();
-        let e = l.element(r.element);
         let query = index.tree.item_box(gid).inflate(tol);
         let mut worst: Option<(usize, Point)> = None;
+        let mut count = 0usize;
         index.tree.visit_overlapping::<()>(&query, |other| {
+            count += 1;
             if other <= gid || worst.is_some_and(|(w, _)| w < other) {
                 return ControlFlow::Continue(());
             }
-            let o = index.locate(other);
-            let f = loops[o.loop_index].element(o.element);
-            let mut shared: [Point; 2] = [Point::default(); 2];
-            let mut k = 0;
-            if o.loop_index == r.loop_index {
-                if (r.element + 1) % n == o.element {
-                    shared[k] = e.end();
-                    k += 1;
-                }
-                if (o.element + 1) % n == r.element {
-                    shared[k] = e.start();
-                    k += 1;
-                }
-            }
-            if let Some(p) = approach_point(&e, &f, tol, &shared[..k], exclude_radius) {
+            if let Some(p) = element_pair_approach(loops, r, index.locate(other), tol) {
                 worst = Some((other, p));
             }
             ControlFlow::Continue(())
         });
-        worst.map(|(other, p)| (r, index.locate(other), p))
+        if visited.fetch_add(count, AtomicOrdering::Relaxed) + count > limit {
+            return Some(None);
+        }
+        worst.map(|(other, p)| Some((r, index.locate(other), p)))
     });
     match first {
-        Some((first, second, position)) => Err(ShapeError::Intersection {
-            first,
-            second,
-            position,
-        }),
-        None => Ok(()),
+        Some(None) => None,
+        Some(Some(pair)) => Some(Some(pair)),
+        None => Some(None),
     }
 }
 
@@ -241,10 +254,7 @@ fn check_holes(loops: &[Loop], index: &ElementIndex) -> Result<(), ShapeError> {
     let xmax = index.tree.bounds().max.x;
     let err = (1..loops.len()).into_par_iter().find_map_first(|h| {
         let p = loops[h].vertices[0].p;
-        let ray = BBox {
-            min: p,
-            max: Point::new(xmax.max(p.x), p.y),
-        };
+        let ray = BBox { min: p, max: Point::new(xmax.max(p.x), p.y) };
         let mut winding = vec![0i32; loops.len()];
         index.tree.visit_overlapping::<()>(&ray, |gid| {
             let r = index.locate(gid);
@@ -257,13 +267,68 @@ fn check_holes(loops: &[Loop], index: &ElementIndex) -> Result<(), ShapeError> {
         if winding[0] == 0 {
             return Some(ShapeError::HoleOutside { hole: h, position: p });
         }
-        (1..loops.len())
-            .find(|&c| c != h && winding[c] != 0)
-            .map(|c| ShapeError::HoleInsideHole {
-                hole: h,
-                container: c,
-                position: p,
-            })
+        (1..loops.len()).find(|&c| c != h && winding[c] != 0).map(|c| ShapeError::HoleInsideHole {
+            hole: h,
+            container: c,
+            position: p,
+        })
     });
     err.map_or(Ok(()), Err)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shape::samples;
+    use crate::shape::Vertex;
+
+    /// The sweep and the exhaustive box-tree search must agree on whether a
+    /// boundary has a crossing or near-touch, on random polygons and arc
+    /// chains with and without crossings.
+    #[test]
+    fn sweep_agrees_with_exhaustive_tree_search() {
+        let mut seen = [0usize; 2];
+        for seed in 0..300u64 {
+            let n = 6 + (seed % 50) as usize;
+            let mut l: Vec<Vertex> = samples::star_polygon(n, seed).remove(0);
+            let mut s = seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1;
+            let mut rnd = || {
+                s ^= s << 13;
+                s ^= s >> 7;
+                s ^= s << 17;
+                (s >> 11) as f64 / (1u64 << 53) as f64
+            };
+            for v in l.iter_mut() {
+                if rnd() < 0.4 {
+                    v.bulge = (rnd() - 0.5) * 1.5;
+                }
+            }
+            if seed % 3 == 0 {
+                let (i, j) = ((rnd() * n as f64) as usize % n, (rnd() * n as f64) as usize % n);
+                l.swap(i, j);
+            }
+            let loops = vec![Loop::new(l)];
+            let index = ElementIndex::new(&loops);
+            let tol = 1e-9;
+            let tree = tree_intersections(&loops, &index, tol, None).unwrap();
+            let sweep = sweep_intersections(&loops, &index.offsets, tol);
+            let sweep_found = match sweep {
+                SweepOutcome::Clear => false,
+                SweepOutcome::Found(..) => true,
+                SweepOutcome::Inconsistent => continue,
+            };
+            assert_eq!(tree.is_some(), sweep_found, "seed {seed}: tree {tree:?}");
+            seen[sweep_found as usize] += 1;
+        }
+        assert!(seen[0] > 50 && seen[1] > 50, "{seen:?}");
+    }
+
+    #[test]
+    fn dense_spokes_fall_back_to_the_sweep() {
+        // 20k spokes: the tree alone would visit ~10^8 candidates.
+        let loops: Vec<Loop> = samples::star_polygon(20_000, 3).into_iter().map(Loop::new).collect();
+        let index = ElementIndex::new(&loops);
+        assert!(tree_intersections(&loops, &index, 1e-9, Some(TREE_BUDGET_PER_ELEMENT)).is_none());
+        assert!(check_intersections(&loops, &index, 1e-9).is_ok());
+    }
 }

@@ -1,0 +1,241 @@
+//! Intersection detection by a plane sweep (Shamos–Hoey), O(n log n) in the
+//! worst case.
+//!
+//! Elements are cut into x-monotone pieces (arcs at their leftmost and
+//! rightmost circle points). A vertical line sweeps left to right; the
+//! pieces it crosses are kept ordered by height. Two elements that cross
+//! are neighbours in that order at some moment before the sweep reaches
+//! their leftmost crossing, so it suffices to test each pair that becomes
+//! adjacent: O(n) tests and O(n log n) work, whatever the shape. The test
+//! itself is [`approach_point`], which also reports near-touches between
+//! neighbours. Pieces are compared at the later of their two left ends, a
+//! relation that does not depend on the sweep position and is a consistent
+//! order while no two pieces in the set cross — and the first crossing ends
+//! the sweep.
+
+use super::bulge_loop::Loop;
+use super::element::Element;
+use super::error::ElementRef;
+use super::intersect::element_pair_approach;
+use crate::kernel::Point;
+use std::cmp::Ordering;
+use std::collections::BTreeSet;
+use std::f64::consts::{FRAC_PI_2, PI};
+
+#[derive(Debug, Clone, Copy)]
+enum Shape {
+    Line,
+    /// Upper (`true`) or lower half of the circle (`c`, `r`).
+    Arc {
+        c: Point,
+        r: f64,
+        upper: bool,
+    },
+}
+
+#[derive(Debug, Clone, Copy)]
+struct Piece {
+    /// Left end (smaller x, then smaller y).
+    a: Point,
+    /// Right end.
+    b: Point,
+    shape: Shape,
+    /// Global element id.
+    elem: u32,
+    /// Unique piece id: the order tie-break.
+    id: u32,
+}
+
+impl Piece {
+    /// Height at `x` (clamped to the piece's x-range); a vertical piece
+    /// answers with its lower end, which orders it where the sweep first meets it.
+    fn y_at(&self, x: f64) -> f64 {
+        match self.shape {
+            Shape::Line => {
+                let dx = self.b.x - self.a.x;
+                if dx <= 0.0 {
+                    return self.a.y.min(self.b.y);
+                }
+                let t = ((x - self.a.x) / dx).clamp(0.0, 1.0);
+                self.a.y + t * (self.b.y - self.a.y)
+            }
+            Shape::Arc { c, r, upper } => {
+                if x <= self.a.x {
+                    return self.a.y;
+                }
+                if x >= self.b.x {
+                    return self.b.y;
+                }
+                let h = (r * r - (x - c.x) * (x - c.x)).max(0.0).sqrt();
+                if upper {
+                    c.y + h
+                } else {
+                    c.y - h
+                }
+            }
+        }
+    }
+
+    fn order(&self, o: &Piece) -> Ordering {
+        if self.id == o.id {
+            return Ordering::Equal;
+        }
+        let x = self.a.x.max(o.a.x);
+        let by = self.y_at(x).total_cmp(&o.y_at(x));
+        if by != Ordering::Equal {
+            return by;
+        }
+        // Same height at the later start (a shared end point): decide just
+        // right of it, halfway to the nearer right end.
+        let x2 = 0.5 * (x + self.b.x.min(o.b.x));
+        if x2 > x {
+            let by = self.y_at(x2).total_cmp(&o.y_at(x2));
+            if by != Ordering::Equal {
+                return by;
+            }
+        }
+        self.id.cmp(&o.id)
+    }
+}
+
+struct Key(Piece);
+
+impl PartialEq for Key {
+    fn eq(&self, o: &Self) -> bool {
+        self.0.id == o.0.id
+    }
+}
+impl Eq for Key {}
+impl PartialOrd for Key {
+    fn partial_cmp(&self, o: &Self) -> Option<Ordering> {
+        Some(self.cmp(o))
+    }
+}
+impl Ord for Key {
+    fn cmp(&self, o: &Self) -> Ordering {
+        self.0.order(&o.0)
+    }
+}
+
+fn lex_less(p: Point, q: Point) -> bool {
+    (p.x, p.y) < (q.x, q.y)
+}
+
+/// Cuts an element into x-monotone pieces.
+fn pieces_of(e: &Element, elem: u32, out: &mut Vec<Piece>) {
+    let mut push = |p: Point, q: Point, shape: Shape| {
+        let (a, b) = if lex_less(p, q) { (p, q) } else { (q, p) };
+        let id = out.len() as u32;
+        out.push(Piece { a, b, shape, elem, id });
+    };
+    match e {
+        Element::Segment(s) => push(s.a, s.b, Shape::Line),
+        Element::Arc(arc) => {
+            // Walk the arc counter-clockwise from its ccw start; cut where it
+            // passes angle 0 or π (the circle's rightmost / leftmost points).
+            let (start, sweep) = if arc.is_ccw() { (arc.a, arc.sweep()) } else { (arc.b, -arc.sweep()) };
+            let v = start - arc.center;
+            let a0 = v.y.atan2(v.x);
+            let mut cuts: Vec<f64> = Vec::with_capacity(4);
+            for k in -2..=4 {
+                let t = k as f64 * PI - a0;
+                if t > 1e-12 && t < sweep - 1e-12 {
+                    cuts.push(t);
+                }
+            }
+            cuts.sort_by(f64::total_cmp);
+            let (c, r) = (arc.center, arc.radius);
+            let at = |t: f64| {
+                let (s, co) = (a0 + t).sin_cos();
+                c + Point::new(co * r, s * r)
+            };
+            let mut t0 = 0.0;
+            let mut p0 = start;
+            for t1 in cuts.into_iter().chain(std::iter::once(sweep)) {
+                let p1 = if t1 == sweep {
+                    if arc.is_ccw() {
+                        arc.b
+                    } else {
+                        arc.a
+                    }
+                } else {
+                    at(t1)
+                };
+                let mid = (a0 + 0.5 * (t0 + t1)).sin();
+                push(p0, p1, Shape::Arc { c, r, upper: mid > 0.0 || (mid == 0.0 && (a0 + t0) < FRAC_PI_2) });
+                t0 = t1;
+                p0 = p1;
+            }
+        }
+    }
+}
+
+/// Result of a sweep: the first pair found, or a sign that the order was
+/// found inconsistent (floating-point trouble near an undetected crossing),
+/// in which case the caller must fall back to an exhaustive method.
+pub(crate) enum SweepOutcome {
+    Clear,
+    Found(ElementRef, ElementRef, Point),
+    Inconsistent,
+}
+
+/// Sweeps all elements of `loops` (global ids by `offsets`) for a pair that
+/// crosses or comes within `tol`, consecutive elements excepted at their
+/// shared vertex.
+pub(crate) fn sweep_intersections(loops: &[Loop], offsets: &[usize], tol: f64) -> SweepOutcome {
+    let locate = |id: u32| {
+        let l = offsets.partition_point(|&o| o <= id as usize) - 1;
+        ElementRef { loop_index: l, element: id as usize - offsets[l] }
+    };
+    let mut pieces = Vec::with_capacity(offsets.last().copied().unwrap_or(0) * 5 / 4);
+    for (li, l) in loops.iter().enumerate() {
+        for (i, e) in l.elements().enumerate() {
+            pieces_of(&e, (offsets[li] + i) as u32, &mut pieces);
+        }
+    }
+    // Events: (point, is_removal, piece). At one point removals come first,
+    // so the set never holds a piece whose right end lies behind the sweep.
+    let mut events: Vec<(Point, bool, u32)> = Vec::with_capacity(2 * pieces.len());
+    for p in &pieces {
+        events.push((p.a, false, p.id));
+        events.push((p.b, true, p.id));
+    }
+    events.sort_unstable_by(|x, y| {
+        x.0.x.total_cmp(&y.0.x).then(x.0.y.total_cmp(&y.0.y)).then(y.1.cmp(&x.1)).then(x.2.cmp(&y.2))
+    });
+    let check = |p: &Piece, q: &Piece| -> Option<(ElementRef, ElementRef, Point)> {
+        if p.elem == q.elem {
+            return None;
+        }
+        let (ra, rb) = (locate(p.elem), locate(q.elem));
+        let (f, s) = if ra <= rb { (ra, rb) } else { (rb, ra) };
+        element_pair_approach(loops, f, s, tol).map(|pt| (f, s, pt))
+    };
+    let mut set: BTreeSet<Key> = BTreeSet::new();
+    for (_, removal, id) in events {
+        let piece = pieces[id as usize];
+        let key = Key(piece);
+        if removal {
+            let below = set.range(..&key).next_back().map(|k| k.0);
+            let above = set.range((std::ops::Bound::Excluded(&key), std::ops::Bound::Unbounded)).next().map(|k| k.0);
+            if !set.remove(&key) {
+                return SweepOutcome::Inconsistent;
+            }
+            if let (Some(p), Some(q)) = (below, above) {
+                if let Some(found) = check(&p, &q) {
+                    return SweepOutcome::Found(found.0, found.1, found.2);
+                }
+            }
+        } else {
+            let below = set.range(..&key).next_back().map(|k| k.0);
+            let above = set.range((std::ops::Bound::Excluded(&key), std::ops::Bound::Unbounded)).next().map(|k| k.0);
+            for n in [below, above].into_iter().flatten() {
+                if let Some(found) = check(&piece, &n) {
+                    return SweepOutcome::Found(found.0, found.1, found.2);
+                }
+            }
+            set.insert(key);
+        }
+    }
+    SweepOutcome::Clear
+}
