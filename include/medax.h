@@ -87,7 +87,14 @@
  * overflow and a relative tolerance of 1e-9 still resolves 1e-6 units at
  * the edge, so micrometre CAM data in millimetres fits with room to spare.
  */
-#define MAX_COORDINATE 1e9
+#define MX_MAX_COORDINATE 1e9
+
+/**
+ * Smallest bounding-box diagonal medax accepts, in model units. Below it,
+ * squared lengths and areas approach `f64` underflow and a relative
+ * tolerance stops meaning anything.
+ */
+#define MX_MIN_EXTENT 1e-100
 
 /**
  * Result of a medax C call. Values are stable across releases; new codes

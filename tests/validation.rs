@@ -323,3 +323,43 @@ fn nearly_flat_arcs_become_segments() {
     assert_eq!(s.flattened_arcs(), 1);
     assert_eq!(s.element_counts(), (4, 0));
 }
+
+/// Inputs found by the fuzz targets, kept as regressions.
+mod fuzz_regressions {
+    use super::*;
+
+    #[test]
+    fn hole_vertex_on_the_chord_of_an_outer_arc_is_inside() {
+        // fuzz/json: the hole's first vertex after normalisation, (2, 1),
+        // lies exactly on the chord of the outward arc from (0,0) to (4,2).
+        let text = r#"{"loops": [[[0,0,0.4],[4,2],[2,6,-0],[0,3]], [[1,1,1],[2,1,1]]]}"#;
+        let s = Shape2d::from_json_str(text, &ShapeOptions::default()).unwrap();
+        let again = Shape2d::from_json_str(&s.to_json(), &ShapeOptions::default()).unwrap();
+        assert_eq!(again.loops(), s.loops());
+        let l = vec![v(2.0, 1.0, 1.0), v(1.0, 1.0, 1.0)];
+        assert!(build(vec![poly(&[(0.0, 0.0), (4.0, 2.0), (2.0, 6.0), (0.0, 3.0)]), l.clone()]).is_err());
+        let mut outer = poly(&[(0.0, 0.0), (4.0, 2.0), (2.0, 6.0), (0.0, 3.0)]);
+        outer[0].bulge = 0.4;
+        assert!(build(vec![outer, l]).is_ok());
+    }
+
+    #[test]
+    fn json_round_trip_is_bit_exact_for_awkward_bulges() {
+        // fuzz/dxf, fuzz/svg: 0.9999999999999999 came back as 1.0 with the
+        // default (approximate) float parser.
+        let l = vec![v(0.0, 0.0, 0.0), v(4.0, 0.0, 0.9999999999999999), v(4.0, 4.0, 0.0), v(0.0, 4.0, 0.0)];
+        let s = build(vec![l]).unwrap();
+        let again = Shape2d::from_json_str(&s.to_json(), &ShapeOptions::default()).unwrap();
+        assert_eq!(again.loops(), s.loops());
+    }
+
+    #[test]
+    fn huge_bulge_on_a_tiny_chord_is_out_of_range() {
+        // fuzz/bulge: radius ~ chord·bulge/4 overflowed and gave a NaN centre.
+        let l = vec![v(1.66e-26, 3.8e-27, -5.0e307), v(1.9e-27, -6.2e-27, -2.6e-69), v(-2.6e-27, 1.5e-27, 0.0)];
+        assert!(matches!(build(vec![l]), Err(ShapeError::OutOfRange { .. })));
+        // And a shape far below the smallest supported extent.
+        let tiny = poly(&[(0.0, 0.0), (1e-120, 0.0), (0.0, 1e-120)]);
+        assert!(matches!(build(vec![tiny]), Err(ShapeError::OutOfRange { at: a, .. }) if a == at(0, 0)));
+    }
+}

@@ -109,17 +109,21 @@ impl Loop {
 /// arc's direction). Summing over a loop gives its winding number.
 pub fn winding_contribution<K: Kernel>(k: &K, e: &Element, p: Point) -> i32 {
     let (a, b) = (e.start(), e.end());
+    // A point on an arc's chord is not on the boundary, but both terms below
+    // depend on its side of the chord: decide it once, collinear counting as
+    // left (a symbolic perturbation), so that the two terms stay consistent.
+    let left = k.orientation(a, b, p) != Orientation::Right;
     let mut w = 0;
     if a.y <= p.y {
-        if b.y > p.y && k.orientation(a, b, p) == Orientation::Left {
+        if b.y > p.y && left {
             w += 1;
         }
-    } else if b.y <= p.y && k.orientation(a, b, p) == Orientation::Right {
+    } else if b.y <= p.y && !left {
         w -= 1;
     }
     if let Element::Arc(arc) = e {
-        let arc_side = if arc.is_ccw() { Orientation::Right } else { Orientation::Left };
-        if (p - arc.center).norm2() < arc.radius * arc.radius && k.orientation(a, b, p) == arc_side {
+        let on_arc_side = if arc.is_ccw() { !left } else { left };
+        if on_arc_side && (p - arc.center).norm2() < arc.radius * arc.radius {
             w += if arc.is_ccw() { 1 } else { -1 };
         }
     }
@@ -171,5 +175,18 @@ mod tests {
         let l = Loop::new(vec![v(0.0, 0.0, 0.0), v(1.0, 0.0, -0.5), v(1.0, 1.0, 0.0), v(0.0, 1.0, 0.0)]);
         assert_eq!(l.winding_number(&k, Point::new(0.9, 0.5)), 0);
         assert_eq!(l.winding_number(&k, Point::new(0.5, 0.5)), 1);
+    }
+
+    #[test]
+    fn winding_number_of_points_on_an_arc_chord() {
+        // Found by fuzzing: a point exactly on the chord of an outward arc
+        // is inside; on the chord of an inward arc it is outside.
+        let k = FilteredKernel;
+        let out = Loop::new(vec![v(0.0, 0.0, 0.4), v(4.0, 2.0, 0.0), v(2.0, 6.0, 0.0), v(0.0, 3.0, 0.0)]);
+        assert_eq!(out.winding_number(&k, Point::new(2.0, 1.0)), 1);
+        assert_eq!(out.reversed().winding_number(&k, Point::new(2.0, 1.0)), -1);
+        let inward = Loop::new(vec![v(0.0, 0.0, -0.4), v(4.0, 2.0, 0.0), v(2.0, 6.0, 0.0), v(0.0, 3.0, 0.0)]);
+        assert_eq!(inward.winding_number(&k, Point::new(2.0, 1.0)), 0);
+        assert_eq!(inward.reversed().winding_number(&k, Point::new(2.0, 1.0)), 0);
     }
 }

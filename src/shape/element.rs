@@ -50,8 +50,10 @@ impl Arc {
         // center = m + perp(d)·(1 − b²)/(4b): the signed distance of the centre
         // from the chord is (c/2)·cot(sweep/2), and cot(θ/2) = (1 − b²)/(2b)
         // for b = tan(θ/4). No trigonometry, so no error from atan/tan.
-        let center = a.mid(b) + d.perp() * ((1.0 - bulge * bulge) / (4.0 * bulge));
-        let radius = d.norm() * (1.0 + bulge * bulge) / (4.0 * bulge.abs());
+        // Written with 1/b so that huge bulges (nearly full circles) do not
+        // overflow in b².
+        let center = a.mid(b) + d.perp() * (0.25 * (1.0 / bulge - bulge));
+        let radius = 0.25 * d.norm() * (bulge.abs() + 1.0 / bulge.abs());
         Arc { a, b, bulge, center, radius }
     }
 

@@ -62,8 +62,10 @@ pub enum ShapeError {
         /// The element whose start vertex or bulge is not finite.
         at: ElementRef,
     },
-    /// A coordinate (of a vertex, or of an arc's extent) lies outside
-    /// ±[`MAX_COORDINATE`](super::MAX_COORDINATE).
+    /// A coordinate (of a vertex, or of an arc's extent, or an arc radius)
+    /// lies outside ±[`MAX_COORDINATE`](super::MAX_COORDINATE), or the whole
+    /// shape is smaller than [`MIN_EXTENT`](super::MIN_EXTENT) (then `value`
+    /// is its diagonal and the element is loop 0 element 0).
     OutOfRange {
         /// The element.
         at: ElementRef,
@@ -149,7 +151,12 @@ impl fmt::Display for ShapeError {
             }
             NonFinite { at } => write!(f, "{at}: a coordinate or the bulge is NaN or infinite"),
             OutOfRange { at, value } => {
-                write!(f, "{at}: coordinate {value:e} is outside the supported range ±{:e}", super::MAX_COORDINATE)
+                write!(
+                    f,
+                    "{at}: value {value:e} is outside the supported range (coordinates and radii within ±{:e}, shape extent at least {:e})",
+                    super::MAX_COORDINATE,
+                    super::MIN_EXTENT
+                )
             }
             NotClosed { at, gap, position } => write!(
                 f,

@@ -34,7 +34,47 @@ pub(crate) fn element_pair_approach(loops: &[Loop], ra: ElementRef, rb: ElementR
             k += 1;
         }
     }
+    if k == 1 {
+        let (into, out) =
+            if (ra.element + 1) % loops[ra.loop_index].len() == rb.element { (&ea, &eb) } else { (&eb, &ea) };
+        if joint_cones_apart(into, out) {
+            return None;
+        }
+    }
     approach_point(&ea, &eb, tol, &shared[..k], 64.0 * tol)
+}
+
+/// True when `into` (ending at vertex v) and `out` (starting at v) cannot
+/// come within `tol` of each other farther than 64·`tol` from v.
+///
+/// Seen from v, an arc's points lie in the cone between its tangent at v and
+/// its chord (tangent–chord angle = half the sweep). If the two cones are
+/// separated by an angle γ, a point at distance d ≥ 64·tol from v is at
+/// least d·sin γ from the other element; sin γ > 1/64 makes that exceed tol.
+fn joint_cones_apart(into: &Element, out: &Element) -> bool {
+    let v = into.end();
+    let cone_a = (-into.end_tangent(), (into.start() - v).unit());
+    let cone_b = (out.start_tangent(), (out.end() - v).unit());
+    // Cones at least half a turn wide are rare (arcs over 360°·…); leave
+    // them to the full test.
+    let narrow = |(p, q): (Point, Point)| p.dot(q) > -0.999;
+    if !(narrow(cone_a) && narrow(cone_b)) {
+        return false;
+    }
+    let inside = |(p, q): (Point, Point), x: Point| {
+        let w = p.cross(q);
+        // A segment's cone is a single ray; whether another ray meets it is
+        // left to the pairwise angle test below.
+        w != 0.0 && p.cross(x) * w >= 0.0 && x.cross(q) * w >= 0.0 && p.dot(x) + q.dot(x) > -1e-12
+    };
+    if [cone_b.0, cone_b.1].iter().any(|&x| inside(cone_a, x))
+        || [cone_a.0, cone_a.1].iter().any(|&x| inside(cone_b, x))
+    {
+        return false;
+    }
+    const MIN_SIN: f64 = 1.0 / 64.0;
+    let apart = |x: Point, y: Point| x.dot(y) < 0.0 || x.cross(y).abs() > MIN_SIN;
+    [cone_a.0, cone_a.1].iter().all(|&x| [cone_b.0, cone_b.1].iter().all(|&y| apart(x, y)))
 }
 
 /// A point where `a` and `b` come within `tol` of each other, ignoring

@@ -17,6 +17,7 @@ mod options;
 pub mod samples;
 mod shape2d;
 mod sweep;
+mod sweep_status;
 mod validate;
 
 pub use box_tree::BoxTree;
@@ -35,3 +36,8 @@ pub use shape2d::{ElementSpec, Shape2d};
 /// overflow and a relative tolerance of 1e-9 still resolves 1e-6 units at
 /// the edge, so micrometre CAM data in millimetres fits with room to spare.
 pub const MAX_COORDINATE: f64 = 1e9;
+
+/// Smallest bounding-box diagonal medax accepts, in model units. Below it,
+/// squared lengths and areas approach `f64` underflow and a relative
+/// tolerance stops meaning anything.
+pub const MIN_EXTENT: f64 = 1e-100;

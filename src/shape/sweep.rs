@@ -17,9 +17,9 @@ use super::bulge_loop::Loop;
 use super::element::Element;
 use super::error::ElementRef;
 use super::intersect::element_pair_approach;
+use super::sweep_status::SweepStatus;
 use crate::kernel::Point;
 use std::cmp::Ordering;
-use std::collections::BTreeSet;
 use std::f64::consts::{FRAC_PI_2, PI};
 
 #[derive(Debug, Clone, Copy)]
@@ -95,25 +95,6 @@ impl Piece {
             }
         }
         self.id.cmp(&o.id)
-    }
-}
-
-struct Key(Piece);
-
-impl PartialEq for Key {
-    fn eq(&self, o: &Self) -> bool {
-        self.0.id == o.0.id
-    }
-}
-impl Eq for Key {}
-impl PartialOrd for Key {
-    fn partial_cmp(&self, o: &Self) -> Option<Ordering> {
-        Some(self.cmp(o))
-    }
-}
-impl Ord for Key {
-    fn cmp(&self, o: &Self) -> Ordering {
-        self.0.order(&o.0)
     }
 }
 
@@ -211,30 +192,25 @@ pub(crate) fn sweep_intersections(loops: &[Loop], offsets: &[usize], tol: f64) -
         let (f, s) = if ra <= rb { (ra, rb) } else { (rb, ra) };
         element_pair_approach(loops, f, s, tol).map(|pt| (f, s, pt))
     };
-    let mut set: BTreeSet<Key> = BTreeSet::new();
+    let order = |a: u32, b: u32| pieces[a as usize].order(&pieces[b as usize]);
+    let mut status = SweepStatus::new(pieces.len());
     for (_, removal, id) in events {
-        let piece = pieces[id as usize];
-        let key = Key(piece);
         if removal {
-            let below = set.range(..&key).next_back().map(|k| k.0);
-            let above = set.range((std::ops::Bound::Excluded(&key), std::ops::Bound::Unbounded)).next().map(|k| k.0);
-            if !set.remove(&key) {
+            let Some((below, above)) = status.remove(id, &order) else {
                 return SweepOutcome::Inconsistent;
-            }
+            };
             if let (Some(p), Some(q)) = (below, above) {
-                if let Some(found) = check(&p, &q) {
-                    return SweepOutcome::Found(found.0, found.1, found.2);
+                if let Some((f, s, pt)) = check(&pieces[p as usize], &pieces[q as usize]) {
+                    return SweepOutcome::Found(f, s, pt);
                 }
             }
         } else {
-            let below = set.range(..&key).next_back().map(|k| k.0);
-            let above = set.range((std::ops::Bound::Excluded(&key), std::ops::Bound::Unbounded)).next().map(|k| k.0);
+            let (below, above) = status.insert(id, &order);
             for n in [below, above].into_iter().flatten() {
-                if let Some(found) = check(&piece, &n) {
-                    return SweepOutcome::Found(found.0, found.1, found.2);
+                if let Some((f, s, pt)) = check(&pieces[id as usize], &pieces[n as usize]) {
+                    return SweepOutcome::Found(f, s, pt);
                 }
             }
-            set.insert(key);
         }
     }
     SweepOutcome::Clear

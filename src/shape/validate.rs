@@ -7,12 +7,13 @@
 
 use super::box_tree::BoxTree;
 use super::bulge_loop::{winding_contribution, Loop};
+use super::element::Element;
 use super::error::{Degeneracy, ElementRef, ShapeError};
 use super::intersect::element_pair_approach;
 use super::joints::{classify, turning_angle, JointKind};
 use super::options::ShapeOptions;
 use super::sweep::{sweep_intersections, SweepOutcome};
-use super::MAX_COORDINATE;
+use super::{MAX_COORDINATE, MIN_EXTENT};
 use crate::kernel::{BBox, FilteredKernel, Point};
 use rayon::prelude::*;
 use std::ops::ControlFlow;
@@ -43,6 +44,9 @@ pub(crate) fn validate(mut loops: Vec<Loop>, opts: &ShapeOptions) -> Result<Vali
         for v in &l.vertices {
             vbox.add_point(v.p);
         }
+    }
+    if vbox.diagonal() < MIN_EXTENT {
+        return Err(ShapeError::OutOfRange { at: at(0, 0), value: vbox.diagonal() });
     }
     let tol = opts.tolerance_for(vbox.diagonal());
     let flatten = opts.flatten_sagitta.unwrap_or(tol);
@@ -134,6 +138,15 @@ fn check_elements(li: usize, l: &mut Loop, tol: f64, flatten: f64) -> Result<usi
         if l.vertices[i].bulge != 0.0 && l.element(i).sagitta() <= flatten {
             l.vertices[i].bulge = 0.0;
             flattened += 1;
+        }
+        // A nearly full circle on a tiny chord (huge bulge) can have a radius
+        // that overflows; large but finite radii of flat arcs are fine (their
+        // sagitta exceeds the tolerance, so the radius stays below
+        // diagonal² / (8·tolerance)).
+        if let Element::Arc(arc) = l.element(i) {
+            if !(arc.center.is_finite() && arc.radius.is_finite()) {
+                return Err(ShapeError::OutOfRange { at: at(li, i), value: arc.radius });
+            }
         }
     }
     Ok(flattened)
