@@ -285,6 +285,11 @@ typedef struct mx_shape_options {
    * Gap closed when chaining loose elements; 0 = 1e-6 × diagonal (default).
    */
   double chain_tolerance;
+  /**
+   * Arcs with a radius above this multiple of the diagonal become
+   * segments (default 1e6; deviation at most diagonal / (8 × ratio)).
+   */
+  double max_radius_ratio;
 } mx_shape_options;
 
 /**

@@ -363,3 +363,36 @@ mod fuzz_regressions {
         assert!(matches!(build(vec![tiny]), Err(ShapeError::OutOfRange { at: a, .. }) if a == at(0, 0)));
     }
 }
+
+#[test]
+fn dxf_circles_nested_as_holes_are_rejected() {
+    // fuzz/dxf: the small hole's test point lies on the big hole's chord.
+    let dxf = "0\nSECTION\n2\nENTITIES\n0\nCIRCLE\n10\n1\n20\n0\n40\n5.0\n0\nCIRCLE\n10\n1\n20\n1\n40\n0.05\n0\nCIRCLE\n10\n1\n20\n1\n40\n0.5\n0\nENDSEC\n0\nEOF\n";
+    assert!(matches!(
+        Shape2d::from_dxf_str(dxf, &ShapeOptions::default()),
+        Err(ShapeError::HoleInsideHole { hole: 1, container: 2, .. })
+    ));
+}
+
+#[test]
+fn arcs_with_huge_radii_become_segments() {
+    // fuzz/json: an arc of radius 1.5e9 on a shape of size 100 hid a
+    // crossing in one orientation (its centre-based distances lose ~1e-7).
+    // Flattened, the crossing is found whichever way the loop runs.
+    let l = vec![
+        v(1.0, 0.0, 2.030706113e-8),
+        v(100.0, 70.0, -2.0),
+        v(40.0, 70.0, 0.0),
+        v(15.0, 70.0, 0.0),
+        v(15.0, 34.0, 1.0),
+    ];
+    let rev = medax::shape::Loop::new(l.clone()).reversed().vertices().to_vec();
+    assert!(matches!(build(vec![l]), Err(ShapeError::Intersection { .. })));
+    assert!(matches!(build(vec![rev]), Err(ShapeError::Intersection { .. })));
+    // A gently curved long arc (radius 1e4 on a shape of size ~100) stays an arc.
+    let mut r = rect(0.0, 0.0, 100.0, 10.0);
+    r[0].bulge = -(100.0f64 / 2e4).asin() / 2.0; // sweep = 2·asin(c/2r), bulge = tan(sweep/4)
+    r[0].bulge = r[0].bulge.tan();
+    let s = build(vec![r]).unwrap();
+    assert_eq!(s.flattened_arcs(), 0);
+}

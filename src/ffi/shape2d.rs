@@ -39,6 +39,9 @@ pub struct mx_shape_options {
     pub flatten_sagitta: f64,
     /// Gap closed when chaining loose elements; 0 = 1e-6 × diagonal (default).
     pub chain_tolerance: f64,
+    /// Arcs with a radius above this multiple of the diagonal become
+    /// segments (default 1e6; deviation at most diagonal / (8 × ratio)).
+    pub max_radius_ratio: f64,
 }
 
 /// `mx_element.kind` of a line segment.
@@ -123,6 +126,7 @@ pub unsafe extern "C" fn mx_shape_options_default(out: *mut mx_shape_options) ->
             angle_tolerance: d.angle_tolerance,
             flatten_sagitta: -1.0,
             chain_tolerance: 0.0,
+            max_radius_ratio: d.max_radius_ratio,
         };
         // SAFETY: checked non-NULL above.
         unsafe { write_out(out, o) };
@@ -155,6 +159,7 @@ unsafe fn options(p: *const mx_shape_options) -> Result<ShapeOptions, FfiError> 
         angle_tolerance: o.angle_tolerance,
         flatten_sagitta: if o.flatten_sagitta < 0.0 { None } else { Some(o.flatten_sagitta) },
         chain_tolerance: opt_len(o.chain_tolerance),
+        max_radius_ratio: o.max_radius_ratio,
     };
     opts.check()?;
     Ok(opts)

@@ -110,9 +110,15 @@ impl Loop {
 pub fn winding_contribution<K: Kernel>(k: &K, e: &Element, p: Point) -> i32 {
     let (a, b) = (e.start(), e.end());
     // A point on an arc's chord is not on the boundary, but both terms below
-    // depend on its side of the chord: decide it once, collinear counting as
-    // left (a symbolic perturbation), so that the two terms stay consistent.
-    let left = k.orientation(a, b, p) != Orientation::Right;
+    // depend on its side of the chord. Ties are broken by one perturbation
+    // shared by every element: p moved up by ε and right by ε² (the same
+    // one the half-open rule on y applies), so all terms stay consistent.
+    let d = b - a;
+    let left = match k.orientation(a, b, p) {
+        Orientation::Left => true,
+        Orientation::Right => false,
+        Orientation::Collinear => d.x > 0.0 || (d.x == 0.0 && d.y < 0.0),
+    };
     let mut w = 0;
     if a.y <= p.y {
         if b.y > p.y && left {
@@ -188,5 +194,15 @@ mod tests {
         let inward = Loop::new(vec![v(0.0, 0.0, -0.4), v(4.0, 2.0, 0.0), v(2.0, 6.0, 0.0), v(0.0, 3.0, 0.0)]);
         assert_eq!(inward.winding_number(&k, Point::new(2.0, 1.0)), 0);
         assert_eq!(inward.reversed().winding_number(&k, Point::new(2.0, 1.0)), 0);
+        // A circle's two half arcs share one chord, run both ways: a point
+        // on it is inside (found by fuzzing DXF circles).
+        let circle = Loop::new(vec![v(1.5, 1.0, 1.0), v(0.5, 1.0, 1.0)]);
+        for p in [Point::new(1.05, 1.0), Point::new(0.6, 1.0), Point::new(1.0, 1.0)] {
+            assert_eq!(circle.winding_number(&k, p), 1);
+            assert_eq!(circle.reversed().winding_number(&k, p), -1);
+        }
+        let vertical = Loop::new(vec![v(0.0, 1.0, 1.0), v(0.0, -1.0, 1.0)]);
+        assert_eq!(vertical.winding_number(&k, Point::new(0.0, 0.3)), 1);
+        assert_eq!(vertical.reversed().winding_number(&k, Point::new(0.0, 0.3)), -1);
     }
 }

@@ -20,6 +20,13 @@ pub struct ShapeOptions {
     /// are numerically unstable and geometrically indistinguishable from
     /// their chord). Default: the same as the touching tolerance.
     pub flatten_sagitta: Option<f64>,
+    /// Arcs whose radius exceeds this multiple of the bounding-box diagonal
+    /// become segments (thesis 2.2.5.1: "a bound flag for the arc's radii").
+    /// Such arcs deviate from their chord by at most diagonal / (8 × ratio),
+    /// 1.25e-7 × diagonal at the default 1e6, while their centres lie so far
+    /// away that distances computed from them lose more digits than the
+    /// touching tolerance allows.
+    pub max_radius_ratio: f64,
     /// Loose elements (DXF LINE/ARC, explicit elements) whose ends are at most
     /// this far apart are joined into one loop, the gap closed by moving the
     /// end onto the start. Default: `1e-6 × diagonal`, enough for files
@@ -34,6 +41,7 @@ impl Default for ShapeOptions {
             relative_tolerance: 1e-9,
             angle_tolerance: 1e-6,
             flatten_sagitta: None,
+            max_radius_ratio: 1e6,
             chain_tolerance: None,
         }
     }
@@ -66,6 +74,11 @@ impl ShapeOptions {
                     return Err(bad(name, v));
                 }
             }
+        }
+        if !(self.max_radius_ratio >= 1.0) {
+            return Err(super::ShapeError::InvalidArgument {
+                what: format!("option max_radius_ratio = {} must be >= 1", self.max_radius_ratio),
+            });
         }
         if !(self.angle_tolerance.is_finite()
             && self.angle_tolerance >= 0.0

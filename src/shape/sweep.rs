@@ -24,13 +24,12 @@ use std::f64::consts::{FRAC_PI_2, PI};
 
 #[derive(Debug, Clone, Copy)]
 enum Shape {
-    Line,
+    /// A non-vertical segment with its slope dy/dx.
+    Line { slope: f64 },
+    /// A vertical segment.
+    Vertical,
     /// Upper (`true`) or lower half of the circle (`c`, `r`).
-    Arc {
-        c: Point,
-        r: f64,
-        upper: bool,
-    },
+    Arc { c: Point, r: f64, upper: bool },
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -51,13 +50,16 @@ impl Piece {
     /// answers with its lower end, which orders it where the sweep first meets it.
     fn y_at(&self, x: f64) -> f64 {
         match self.shape {
-            Shape::Line => {
-                let dx = self.b.x - self.a.x;
-                if dx <= 0.0 {
-                    return self.a.y.min(self.b.y);
+            Shape::Vertical => self.a.y.min(self.b.y),
+            Shape::Line { slope } => {
+                // End points exactly, so that shared ends compare equal.
+                if x <= self.a.x {
+                    self.a.y
+                } else if x >= self.b.x {
+                    self.b.y
+                } else {
+                    self.a.y + (x - self.a.x) * slope
                 }
-                let t = ((x - self.a.x) / dx).clamp(0.0, 1.0);
-                self.a.y + t * (self.b.y - self.a.y)
             }
             Shape::Arc { c, r, upper } => {
                 if x <= self.a.x {
@@ -80,18 +82,26 @@ impl Piece {
         if self.id == o.id {
             return Ordering::Equal;
         }
+        let below = |x: f64| {
+            let (y, yo) = (self.y_at(x), o.y_at(x));
+            if y < yo {
+                Some(Ordering::Less)
+            } else if y > yo {
+                Some(Ordering::Greater)
+            } else {
+                None
+            }
+        };
         let x = self.a.x.max(o.a.x);
-        let by = self.y_at(x).total_cmp(&o.y_at(x));
-        if by != Ordering::Equal {
-            return by;
+        if let Some(ord) = below(x) {
+            return ord;
         }
         // Same height at the later start (a shared end point): decide just
         // right of it, halfway to the nearer right end.
         let x2 = 0.5 * (x + self.b.x.min(o.b.x));
         if x2 > x {
-            let by = self.y_at(x2).total_cmp(&o.y_at(x2));
-            if by != Ordering::Equal {
-                return by;
+            if let Some(ord) = below(x2) {
+                return ord;
             }
         }
         self.id.cmp(&o.id)
@@ -110,7 +120,11 @@ fn pieces_of(e: &Element, elem: u32, out: &mut Vec<Piece>) {
         out.push(Piece { a, b, shape, elem, id });
     };
     match e {
-        Element::Segment(s) => push(s.a, s.b, Shape::Line),
+        Element::Segment(s) => {
+            let (l, r) = if lex_less(s.a, s.b) { (s.a, s.b) } else { (s.b, s.a) };
+            let shape = if r.x > l.x { Shape::Line { slope: (r.y - l.y) / (r.x - l.x) } } else { Shape::Vertical };
+            push(s.a, s.b, shape)
+        }
         Element::Arc(arc) => {
             // Walk the arc counter-clockwise from its ccw start; cut where it
             // passes angle 0 or π (the circle's rightmost / leftmost points).
@@ -176,14 +190,23 @@ pub(crate) fn sweep_intersections(loops: &[Loop], offsets: &[usize], tol: f64) -
     }
     // Events: (point, is_removal, piece). At one point removals come first,
     // so the set never holds a piece whose right end lies behind the sweep.
-    let mut events: Vec<(Point, bool, u32)> = Vec::with_capacity(2 * pieces.len());
+    // Keys are the coordinates' bits mapped to integers in the same order
+    // as the floats, so the sort compares plain integers.
+    let ordered = |v: f64| {
+        let b = v.to_bits();
+        if b >> 63 == 1 {
+            !b
+        } else {
+            b | (1 << 63)
+        }
+    };
+    let mut keyed: Vec<(u64, u64, u64)> = Vec::with_capacity(2 * pieces.len());
     for p in &pieces {
-        events.push((p.a, false, p.id));
-        events.push((p.b, true, p.id));
+        keyed.push((ordered(p.a.x), ordered(p.a.y), 1 << 32 | p.id as u64));
+        keyed.push((ordered(p.b.x), ordered(p.b.y), p.id as u64));
     }
-    events.sort_unstable_by(|x, y| {
-        x.0.x.total_cmp(&y.0.x).then(x.0.y.total_cmp(&y.0.y)).then(y.1.cmp(&x.1)).then(x.2.cmp(&y.2))
-    });
+    keyed.sort_unstable();
+    let events = keyed.into_iter().map(|(_, _, k)| (k >> 32 == 0, k as u32));
     let check = |p: &Piece, q: &Piece| -> Option<(ElementRef, ElementRef, Point)> {
         if p.elem == q.elem {
             return None;
@@ -194,7 +217,7 @@ pub(crate) fn sweep_intersections(loops: &[Loop], offsets: &[usize], tol: f64) -
     };
     let order = |a: u32, b: u32| pieces[a as usize].order(&pieces[b as usize]);
     let mut status = SweepStatus::new(pieces.len());
-    for (_, removal, id) in events {
+    for (removal, id) in events {
         if removal {
             let Some((below, above)) = status.remove(id, &order) else {
                 return SweepOutcome::Inconsistent;

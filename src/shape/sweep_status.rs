@@ -92,17 +92,41 @@ impl SweepStatus {
         }
     }
 
-    /// Inserts `item` and returns its neighbours.
+    /// Inserts `item` and returns its neighbours. One descent: down to where
+    /// the item's priority places it, then the subtree there is split around it.
     pub fn insert(&mut self, item: u32, cmp: &impl Fn(u32, u32) -> Ordering) -> Neighbours {
-        let n = &mut self.nodes[item as usize];
-        n.left = NIL;
-        n.right = NIL;
-        let (l, r) = self.split(self.root, item, cmp);
-        let below = Self::some(self.rightmost(l));
-        let above = Self::some(self.leftmost(r));
-        let lm = self.merge(l, item);
-        self.root = self.merge(lm, r);
-        (below, above)
+        let prio = self.nodes[item as usize].prio;
+        let (mut below, mut above) = (NIL, NIL);
+        let (mut parent, mut went_left) = (NIL, false);
+        let mut t = self.root;
+        while t != NIL && self.nodes[t as usize].prio > prio {
+            parent = t;
+            went_left = cmp(item, t) == Ordering::Less;
+            if went_left {
+                above = t;
+                t = self.nodes[t as usize].left;
+            } else {
+                below = t;
+                t = self.nodes[t as usize].right;
+            }
+        }
+        let (l, r) = self.split(t, item, cmp);
+        if l != NIL {
+            below = self.rightmost(l);
+        }
+        if r != NIL {
+            above = self.leftmost(r);
+        }
+        self.nodes[item as usize].left = l;
+        self.nodes[item as usize].right = r;
+        if parent == NIL {
+            self.root = item;
+        } else if went_left {
+            self.nodes[parent as usize].left = item;
+        } else {
+            self.nodes[parent as usize].right = item;
+        }
+        (Self::some(below), Self::some(above))
     }
 
     /// Removes `item` and returns its former neighbours, or `None` when the

@@ -49,10 +49,11 @@ pub(crate) fn validate(mut loops: Vec<Loop>, opts: &ShapeOptions) -> Result<Vali
         return Err(ShapeError::OutOfRange { at: at(0, 0), value: vbox.diagonal() });
     }
     let tol = opts.tolerance_for(vbox.diagonal());
-    let flatten = opts.flatten_sagitta.unwrap_or(tol);
+    let flatten =
+        Flatten { sagitta: opts.flatten_sagitta.unwrap_or(tol), radius: opts.max_radius_ratio * vbox.diagonal() };
     let mut flattened = 0;
     for (li, l) in loops.iter_mut().enumerate() {
-        flattened += check_elements(li, l, tol, flatten)?;
+        flattened += check_elements(li, l, tol, &flatten)?;
     }
     let bbox = loops.iter().fold(BBox::EMPTY, |b, l| b.union(&l.bbox()));
     for (li, l) in loops.iter().enumerate() {
@@ -125,9 +126,15 @@ fn check_numbers(loops: &[Loop]) -> Result<(), ShapeError> {
     Ok(())
 }
 
-/// Rejects zero-length elements and turns arcs flatter than `flatten` into
-/// segments; returns how many were flattened.
-fn check_elements(li: usize, l: &mut Loop, tol: f64, flatten: f64) -> Result<usize, ShapeError> {
+/// When an arc counts as straight: sagitta at most `sagitta`, or radius above `radius`.
+struct Flatten {
+    sagitta: f64,
+    radius: f64,
+}
+
+/// Rejects zero-length elements and turns arcs that are straight by
+/// `flatten` into segments; returns how many were flattened.
+fn check_elements(li: usize, l: &mut Loop, tol: f64, flatten: &Flatten) -> Result<usize, ShapeError> {
     let n = l.len();
     let mut flattened = 0;
     for i in 0..n {
@@ -135,7 +142,15 @@ fn check_elements(li: usize, l: &mut Loop, tol: f64, flatten: f64) -> Result<usi
         if a.dist(b) <= tol {
             return Err(ShapeError::Degenerate { at: at(li, i), kind: Degeneracy::ZeroLength, position: a });
         }
-        if l.vertices[i].bulge != 0.0 && l.element(i).sagitta() <= flatten {
+        let straight = match l.element(i) {
+            // Only arcs of at most a half turn are nearly straight when their
+            // radius is huge; a huge nearly full circle is out of range instead.
+            Element::Arc(arc) => {
+                (arc.bulge.abs() <= 1.0 && arc.radius > flatten.radius) || l.element(i).sagitta() <= flatten.sagitta
+            }
+            Element::Segment(_) => false,
+        };
+        if straight {
             l.vertices[i].bulge = 0.0;
             flattened += 1;
         }
@@ -213,17 +228,24 @@ type Pair = (ElementRef, ElementRef, Point);
 fn tree_looks_cheap(index: &ElementIndex, tol: f64) -> bool {
     let total = index.tree.len();
     let step = (total / 1024).max(1);
-    let mut sampled = 0usize;
     let mut overlaps = 0usize;
+    let samples = total.div_ceil(step);
+    let allowed = samples * TREE_BUDGET_PER_ELEMENT / 2;
     for gid in (0..total).step_by(step) {
-        sampled += 1;
         let query = index.tree.item_box(gid).inflate(tol);
-        index.tree.visit_overlapping::<()>(&query, |_| {
+        let over = index.tree.visit_overlapping(&query, |_| {
             overlaps += 1;
-            ControlFlow::Continue(())
+            if overlaps > allowed {
+                ControlFlow::Break(())
+            } else {
+                ControlFlow::Continue(())
+            }
         });
+        if over.is_some() {
+            return false;
+        }
     }
-    overlaps <= sampled * TREE_BUDGET_PER_ELEMENT / 2
+    true
 }
 
 /// Tests every element against the elements whose boxes overlap its own,

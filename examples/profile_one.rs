@@ -1,0 +1,16 @@
+//! Validates one sample shape once (for profilers):
+//! `cargo run --release --example profile_one -- star|flower|comb N`.
+use medax::shape::{samples, Shape2d, ShapeOptions};
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let n: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(100_000);
+    let loops = match args.get(1).map(String::as_str) {
+        Some("flower") => samples::flower_arcs(n),
+        Some("comb") => samples::slanted_comb(n / 4, (n / 8) as f64),
+        _ => samples::star_polygon(n, 1),
+    };
+    let t = std::time::Instant::now();
+    let s = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).expect("valid sample");
+    println!("{} elements validated in {:.3} s", s.element_count(), t.elapsed().as_secs_f64());
+}
