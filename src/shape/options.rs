@@ -75,7 +75,7 @@ impl ShapeOptions {
                 }
             }
         }
-        if !(self.max_radius_ratio >= 1.0) {
+        if self.max_radius_ratio.is_nan() || self.max_radius_ratio < 1.0 {
             return Err(super::ShapeError::InvalidArgument {
                 what: format!("option max_radius_ratio = {} must be >= 1", self.max_radius_ratio),
             });
