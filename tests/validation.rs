@@ -387,6 +387,13 @@ fn arcs_with_huge_radii_become_segments() {
         v(15.0, 34.0, 1.0),
     ];
     let rev = medax::shape::Loop::new(l.clone()).reversed().vertices().to_vec();
+    assert!(matches!(build(vec![l.clone()]), Err(ShapeError::Intersection { .. })));
+    assert!(matches!(build(vec![rev]), Err(ShapeError::Intersection { .. })));
+    // The same with radius 1e6 (kept as an arc): found only once circle
+    // intersections were computed from the smaller circle.
+    let mut l = l;
+    l[0].bulge = 3.002030706113e-5;
+    let rev = medax::shape::Loop::new(l.clone()).reversed().vertices().to_vec();
     assert!(matches!(build(vec![l]), Err(ShapeError::Intersection { .. })));
     assert!(matches!(build(vec![rev]), Err(ShapeError::Intersection { .. })));
     // A gently curved long arc (radius 1e4 on a shape of size ~100) stays an arc.

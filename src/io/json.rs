@@ -7,11 +7,41 @@
 //! carry metadata.
 
 use super::{Format, ParseError, RawPolyline, RawVertex};
+use serde::de::{Deserializer, Error as _, SeqAccess, Visitor};
 use serde::Deserialize;
+use std::fmt;
 
 #[derive(Deserialize)]
 struct ShapeFile {
-    loops: Vec<Vec<Vec<f64>>>,
+    loops: Vec<Vec<JsonVertex>>,
+}
+
+/// `[x, y]` or `[x, y, bulge]`, read without allocating (files hold
+/// millions of vertices).
+struct JsonVertex(RawVertex);
+
+impl<'de> Deserialize<'de> for JsonVertex {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = JsonVertex;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a vertex [x, y] or [x, y, bulge]")
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<JsonVertex, A::Error> {
+                let wrong =
+                    |n: usize| A::Error::custom(format!("expected [x, y] or [x, y, bulge], found {n} number(s)"));
+                let x: f64 = seq.next_element()?.ok_or_else(|| wrong(0))?;
+                let y: f64 = seq.next_element()?.ok_or_else(|| wrong(1))?;
+                let bulge: f64 = seq.next_element()?.unwrap_or(0.0);
+                if seq.next_element::<f64>()?.is_some() {
+                    return Err(wrong(4));
+                }
+                Ok(JsonVertex(RawVertex { x, y, bulge }))
+            }
+        }
+        d.deserialize_seq(V)
+    }
 }
 
 /// Reads shape JSON into closed polylines (loop order preserved).
@@ -23,28 +53,12 @@ pub fn read_loops(text: &str) -> Result<Vec<RawPolyline>, ParseError> {
         message: e.to_string(),
         unsupported: false,
     })?;
-    let mut out = Vec::with_capacity(file.loops.len());
-    for (li, lp) in file.loops.into_iter().enumerate() {
-        let mut vertices = Vec::with_capacity(lp.len());
-        for (vi, v) in lp.into_iter().enumerate() {
-            let bulge = match v.len() {
-                2 => 0.0,
-                3 => v[2],
-                n => {
-                    return Err(ParseError {
-                        format: Format::Json,
-                        line: 1,
-                        column: 1,
-                        message: format!("loop {li}, vertex {vi}: expected [x, y] or [x, y, bulge], found {n} numbers"),
-                        unsupported: false,
-                    })
-                }
-            };
-            vertices.push(RawVertex { x: v[0], y: v[1], bulge });
-        }
-        out.push(RawPolyline { vertices, closed: true, source: li });
-    }
-    Ok(out)
+    Ok(file
+        .loops
+        .into_iter()
+        .enumerate()
+        .map(|(li, lp)| RawPolyline { vertices: lp.into_iter().map(|v| v.0).collect(), closed: true, source: li })
+        .collect())
 }
 
 /// Writes loops as shape JSON, one loop per line, with shortest round-trip
@@ -87,8 +101,9 @@ mod tests {
         let e = read_loops("{\"loops\": [[[0, 0],\n [1, x]]]}").unwrap_err();
         assert_eq!(e.line, 2);
         assert!(e.column > 1);
-        let e = read_loops(r#"{"loops": [[[0, 0, 1, 2]]]}"#).unwrap_err();
-        assert!(e.message.contains("loop 0, vertex 0"), "{}", e.message);
+        let e = read_loops("{\"loops\": [[[0, 0],\n  [0, 0, 1, 2]]]}").unwrap_err();
+        assert!(e.message.contains("expected [x, y] or [x, y, bulge]"), "{}", e.message);
+        assert_eq!(e.line, 2);
     }
 
     #[test]

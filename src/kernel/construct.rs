@@ -29,10 +29,12 @@ pub fn line_circle(p: Point, u: Point, c: Point, r: f64) -> Vec<f64> {
     if uu == 0.0 {
         return Vec::new();
     }
-    // Work from the foot of the perpendicular from c: the stable form.
+    // Work from the foot of the perpendicular from c, and factor
+    // r² − dist² = (r − dist)(r + dist): stable for huge nearly flat circles.
     let s0 = (c - p).dot(u) / uu;
     let foot = p + u * s0;
-    let h2 = r * r - (c - foot).norm2();
+    let dist = (c - foot).norm();
+    let h2 = (r - dist) * (r + dist);
     if h2 < 0.0 {
         return Vec::new();
     }
@@ -46,22 +48,26 @@ pub fn line_circle(p: Point, u: Point, c: Point, r: f64) -> Vec<f64> {
 /// Intersection points of two circles; empty when they do not meet or are
 /// concentric. Tangent circles give one point.
 pub fn circle_circle(c1: Point, r1: f64, c2: Point, r2: f64) -> Vec<Point> {
-    let d = c2 - c1;
-    let dd = d.norm2();
-    if dd == 0.0 {
+    // Measure from the smaller circle, and factor d² − R² = (d − R)(d + R):
+    // with one huge radius the textbook form loses most of its digits.
+    let (cs, rs, cb, rb) = if r1 <= r2 { (c1, r1, c2, r2) } else { (c2, r2, c1, r1) };
+    let dv = cb - cs;
+    let d = dv.norm();
+    if d == 0.0 {
         return Vec::new();
     }
-    let a = (dd + r1 * r1 - r2 * r2) / (2.0 * dd);
-    let h2 = r1 * r1 / dd - a * a;
+    let u = dv * (1.0 / d);
+    let a = ((d - rb) * (d + rb) + rs * rs) / (2.0 * d);
+    let h2 = (rs - a) * (rs + a);
     if h2 < 0.0 {
         return Vec::new();
     }
-    let base = c1 + d * a;
+    let base = cs + u * a;
     if h2 == 0.0 {
         return vec![base];
     }
     let h = h2.sqrt();
-    vec![base + d.perp() * h, base - d.perp() * h]
+    vec![base + u.perp() * h, base - u.perp() * h]
 }
 
 /// Orthogonal projection parameter of `p` on the line `a + s·(b − a)`.
@@ -87,6 +93,21 @@ mod tests {
             assert!((p.x - 4.0).abs() < 1e-12 && (p.y.abs() - 3.0).abs() < 1e-12);
         }
         assert!(circle_circle(Point::new(0.0, 0.0), 1.0, Point::new(3.0, 0.0), 1.0).is_empty());
+    }
+
+    #[test]
+    fn circle_circle_keeps_digits_with_a_huge_radius() {
+        // A circle of radius 1e6 through (0, 0) and (−60, −40) ... meets the
+        // unit-scale circle at two points that must lie on both circles to
+        // ~1e-10 (the textbook formula was off by ~1e-6 here).
+        let (cb, rb) = (Point::new(0.0, 1e6), 1e6);
+        let (cs, rs) = (Point::new(30.0, 0.0), 37.5);
+        let pts = circle_circle(cb, rb, cs, rs);
+        assert_eq!(pts.len(), 2);
+        for p in pts {
+            assert!((p.dist(cb) - rb).abs() < 1e-9, "{}", p.dist(cb) - rb);
+            assert!((p.dist(cs) - rs).abs() < 1e-12);
+        }
     }
 
     #[test]

@@ -19,6 +19,7 @@ use super::error::ElementRef;
 use super::intersect::element_pair_approach;
 use super::sweep_status::SweepStatus;
 use crate::kernel::Point;
+use rayon::prelude::*;
 use std::cmp::Ordering;
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -78,7 +79,9 @@ impl Piece {
         }
     }
 
-    fn order(&self, o: &Piece) -> Ordering {
+    /// Height order of two pieces that are both cut by the sweep line at some
+    /// x ≥ `from`, decided at the later of their left ends (or `from`).
+    fn order(&self, o: &Piece, from: f64) -> Ordering {
         if self.id == o.id {
             return Ordering::Equal;
         }
@@ -92,7 +95,7 @@ impl Piece {
                 None
             }
         };
-        let x = self.a.x.max(o.a.x);
+        let x = self.a.x.max(o.a.x).max(from);
         if let Some(ord) = below(x) {
             return ord;
         }
@@ -177,7 +180,17 @@ pub(crate) enum SweepOutcome {
 /// Sweeps all elements of `loops` (global ids by `offsets`) for a pair that
 /// crosses or comes within `tol`, consecutive elements excepted at their
 /// shared vertex.
+/// Below this many pieces one sweep is cheaper than splitting into slabs.
+const SLAB_MIN_PIECES: usize = 50_000;
+
 pub(crate) fn sweep_intersections(loops: &[Loop], offsets: &[usize], tol: f64) -> SweepOutcome {
+    let total = offsets.last().copied().unwrap_or(0);
+    let slabs = if total < SLAB_MIN_PIECES { 1 } else { rayon::current_num_threads().clamp(1, 16) };
+    sweep_in_slabs(loops, offsets, tol, slabs)
+}
+
+/// [`sweep_intersections`] with a given number of slabs.
+pub(crate) fn sweep_in_slabs(loops: &[Loop], offsets: &[usize], tol: f64, slabs: usize) -> SweepOutcome {
     let locate = |id: u32| {
         let l = offsets.partition_point(|&o| o <= id as usize) - 1;
         ElementRef { loop_index: l, element: id as usize - offsets[l] }
@@ -188,25 +201,6 @@ pub(crate) fn sweep_intersections(loops: &[Loop], offsets: &[usize], tol: f64) -
             pieces_of(&e, (offsets[li] + i) as u32, &mut pieces);
         }
     }
-    // Events: (point, is_removal, piece). At one point removals come first,
-    // so the set never holds a piece whose right end lies behind the sweep.
-    // Keys are the coordinates' bits mapped to integers in the same order
-    // as the floats, so the sort compares plain integers.
-    let ordered = |v: f64| {
-        let b = v.to_bits();
-        if b >> 63 == 1 {
-            !b
-        } else {
-            b | (1 << 63)
-        }
-    };
-    let mut keyed: Vec<(u64, u64, u64)> = Vec::with_capacity(2 * pieces.len());
-    for p in &pieces {
-        keyed.push((ordered(p.a.x), ordered(p.a.y), 1 << 32 | p.id as u64));
-        keyed.push((ordered(p.b.x), ordered(p.b.y), p.id as u64));
-    }
-    keyed.sort_unstable();
-    let events = keyed.into_iter().map(|(_, _, k)| (k >> 32 == 0, k as u32));
     let check = |p: &Piece, q: &Piece| -> Option<(ElementRef, ElementRef, Point)> {
         if p.elem == q.elem {
             return None;
@@ -215,9 +209,62 @@ pub(crate) fn sweep_intersections(loops: &[Loop], offsets: &[usize], tol: f64) -
         let (f, s) = if ra <= rb { (ra, rb) } else { (rb, ra) };
         element_pair_approach(loops, f, s, tol).map(|pt| (f, s, pt))
     };
-    let order = |a: u32, b: u32| pieces[a as usize].order(&pieces[b as usize]);
+    // Vertical slabs with equal numbers of left ends, swept independently
+    // and in parallel: every crossing lies in some slab, where both pieces
+    // are present, and the leftmost crossing of a slab is found by its sweep.
+    let slabs = slabs.clamp(1, pieces.len().max(1));
+    let mut starts: Vec<f64> = pieces.iter().map(|p| p.a.x).collect();
+    starts.sort_unstable_by(f64::total_cmp);
+    let mut bounds = vec![f64::NEG_INFINITY];
+    bounds.extend((1..slabs).map(|k| starts[k * starts.len() / slabs]));
+    bounds.push(f64::INFINITY);
+    bounds.dedup();
+    let outcomes: Vec<SweepOutcome> = bounds.par_windows(2).map(|w| sweep_slab(&pieces, w[0], w[1], &check)).collect();
+    let mut result = SweepOutcome::Clear;
+    for o in outcomes {
+        match o {
+            SweepOutcome::Found(..) => return o,
+            SweepOutcome::Inconsistent => result = SweepOutcome::Inconsistent,
+            SweepOutcome::Clear => {}
+        }
+    }
+    result
+}
+
+type Check<'a> = dyn Fn(&Piece, &Piece) -> Option<(ElementRef, ElementRef, Point)> + Sync + 'a;
+
+/// Shamos–Hoey over the slab `lo ≤ x ≤ hi`. Pieces that start left of the
+/// slab enter at `lo`, ordered by their height there; pieces that end right
+/// of it never leave.
+fn sweep_slab(pieces: &[Piece], lo: f64, hi: f64, check: &Check<'_>) -> SweepOutcome {
+    // Event keys: coordinates' bits mapped to integers in float order, so
+    // the sort compares integers; at one point removals come first, so the
+    // set never holds a piece whose right end lies behind the sweep.
+    // Carried pieces get the smallest key and enter before anything else.
+    let ordered = |v: f64| {
+        let b = v.to_bits();
+        if b >> 63 == 1 {
+            !b
+        } else {
+            b | (1 << 63)
+        }
+    };
+    let mut keyed: Vec<(u64, u64, u64)> = Vec::new();
+    for p in pieces {
+        if p.b.x < lo || p.a.x > hi {
+            continue;
+        }
+        let enter = if p.a.x < lo { (0, 0) } else { (ordered(p.a.x), ordered(p.a.y)) };
+        keyed.push((enter.0, enter.1, 1 << 32 | p.id as u64));
+        if p.b.x <= hi {
+            keyed.push((ordered(p.b.x), ordered(p.b.y), p.id as u64));
+        }
+    }
+    keyed.sort_unstable();
+    let order = |a: u32, b: u32| pieces[a as usize].order(&pieces[b as usize], lo);
     let mut status = SweepStatus::new(pieces.len());
-    for (removal, id) in events {
+    for (_, _, k) in keyed {
+        let (removal, id) = (k >> 32 == 0, k as u32);
         if removal {
             let Some((below, above)) = status.remove(id, &order) else {
                 return SweepOutcome::Inconsistent;

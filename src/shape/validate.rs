@@ -315,6 +315,7 @@ fn check_holes(loops: &[Loop], index: &ElementIndex) -> Result<(), ShapeError> {
 mod tests {
     use super::*;
     use crate::shape::samples;
+    use crate::shape::sweep::sweep_in_slabs;
     use crate::shape::Vertex;
 
     /// The sweep and the exhaustive box-tree search must agree on whether a
@@ -346,14 +347,16 @@ mod tests {
             let index = ElementIndex::new(&loops);
             let tol = 1e-9;
             let tree = tree_intersections(&loops, &index, tol, None).unwrap();
-            let sweep = sweep_intersections(&loops, &index.offsets, tol);
-            let sweep_found = match sweep {
-                SweepOutcome::Clear => false,
-                SweepOutcome::Found(..) => true,
-                SweepOutcome::Inconsistent => continue,
-            };
-            assert_eq!(tree.is_some(), sweep_found, "seed {seed}: tree {tree:?}");
-            seen[sweep_found as usize] += 1;
+            for slabs in [1, 2, 5] {
+                let sweep = sweep_in_slabs(&loops, &index.offsets, tol, slabs);
+                let sweep_found = match sweep {
+                    SweepOutcome::Clear => false,
+                    SweepOutcome::Found(..) => true,
+                    SweepOutcome::Inconsistent => continue,
+                };
+                assert_eq!(tree.is_some(), sweep_found, "seed {seed}, {slabs} slabs: tree {tree:?}");
+                seen[sweep_found as usize] += 1;
+            }
         }
         assert!(seen[0] > 50 && seen[1] > 50, "{seen:?}");
     }
