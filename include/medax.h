@@ -90,6 +90,13 @@
 #define MX_MAX_COORDINATE 1e9
 
 /**
+ * Floor of the touching tolerance relative to the largest coordinate
+ * magnitude (about 2^-46 = 256 ulps): a smaller tolerance, including 0, is
+ * raised to it, because constructed crossing points carry that much rounding.
+ */
+#define MX_MIN_RELATIVE_TOLERANCE (1.0 / (double)(1ull << 46))
+
+/**
  * Smallest bounding-box diagonal medax accepts, in model units. Below it,
  * squared lengths and areas approach `f64` underflow and a relative
  * tolerance stops meaning anything.

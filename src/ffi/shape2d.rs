@@ -110,6 +110,16 @@ pub const MX_FORMAT_DXF: u32 = 2;
 /// Format argument: SVG document or path data.
 pub const MX_FORMAT_SVG: u32 = 3;
 
+const DEFAULT_OPTIONS: mx_shape_options = mx_shape_options {
+    struct_size: std::mem::size_of::<mx_shape_options>(),
+    tolerance: 0.0,
+    relative_tolerance: 1e-9,
+    angle_tolerance: 1e-6,
+    flatten_sagitta: -1.0,
+    chain_tolerance: 0.0,
+    max_radius_ratio: 1e6,
+};
+
 /// Fills `out` with the default options (and its `struct_size`).
 ///
 /// # Safety
@@ -118,47 +128,57 @@ pub const MX_FORMAT_SVG: u32 = 3;
 pub unsafe extern "C" fn mx_shape_options_default(out: *mut mx_shape_options) -> mx_status {
     guard(|| {
         check_out(out, "out")?;
-        let d = ShapeOptions::default();
-        let o = mx_shape_options {
-            struct_size: std::mem::size_of::<mx_shape_options>(),
-            tolerance: 0.0,
-            relative_tolerance: d.relative_tolerance,
-            angle_tolerance: d.angle_tolerance,
-            flatten_sagitta: -1.0,
-            chain_tolerance: 0.0,
-            max_radius_ratio: d.max_radius_ratio,
-        };
+        let o = DEFAULT_OPTIONS;
         // SAFETY: checked non-NULL above.
         unsafe { write_out(out, o) };
         Ok(())
     })
 }
 
-/// Options from C; NULL means defaults.
+/// Size of `mx_shape_options` in release 0.1, the smallest accepted.
+const OPTIONS_V1_SIZE: usize = std::mem::size_of::<mx_shape_options>();
+
+/// Options from C; NULL means defaults. Only `struct_size` bytes are read,
+/// over a copy of the defaults, so a caller compiled against an older
+/// (smaller) struct keeps working when fields are added.
 unsafe fn options(p: *const mx_shape_options) -> Result<ShapeOptions, FfiError> {
     if p.is_null() {
         return Ok(ShapeOptions::default());
     }
-    // SAFETY: non-NULL; the caller promises a readable struct of at least
-    // `struct_size` bytes, which we check covers every field we read.
-    let o = unsafe { &*p };
-    if o.struct_size < std::mem::size_of::<mx_shape_options>() {
+    // SAFETY: non-NULL, and every version of the struct starts with
+    // `struct_size`; read it alone before trusting the rest.
+    let size = unsafe { std::ptr::addr_of!((*p).struct_size).read_unaligned() };
+    if size < OPTIONS_V1_SIZE {
         return Err(FfiError::new(
             mx_status::MX_ERR_INVALID_ARGUMENT,
             format!(
-                "mx_shape_options.struct_size = {} is smaller than this library's {}; call mx_shape_options_default first",
-                o.struct_size,
-                std::mem::size_of::<mx_shape_options>()
+                "mx_shape_options.struct_size = {size} is smaller than any released layout ({OPTIONS_V1_SIZE}); call mx_shape_options_default first"
             ),
         ));
     }
-    let opt_len = |v: f64| if v > 0.0 { Some(v) } else { None };
+    let mut o = mx_shape_options { struct_size: 0, ..DEFAULT_OPTIONS };
+    let n = size.min(std::mem::size_of::<mx_shape_options>());
+    // SAFETY: the caller's struct holds `size` >= n readable bytes; ours is
+    // at least n bytes; both are plain old data.
+    unsafe { std::ptr::copy_nonoverlapping(p.cast::<u8>(), std::ptr::addr_of_mut!(o).cast::<u8>(), n) };
+    let length = |name: &str, v: f64| -> Result<Option<f64>, FfiError> {
+        if v == 0.0 {
+            Ok(None)
+        } else if v.is_finite() && v > 0.0 {
+            Ok(Some(v))
+        } else {
+            Err(FfiError::new(
+                mx_status::MX_ERR_INVALID_ARGUMENT,
+                format!("mx_shape_options.{name} = {v}: use 0 for the default or a positive length"),
+            ))
+        }
+    };
     let opts = ShapeOptions {
-        tolerance: opt_len(o.tolerance),
+        tolerance: length("tolerance", o.tolerance)?,
         relative_tolerance: o.relative_tolerance,
         angle_tolerance: o.angle_tolerance,
         flatten_sagitta: if o.flatten_sagitta < 0.0 { None } else { Some(o.flatten_sagitta) },
-        chain_tolerance: opt_len(o.chain_tolerance),
+        chain_tolerance: length("chain_tolerance", o.chain_tolerance)?,
         max_radius_ratio: o.max_radius_ratio,
     };
     opts.check()?;

@@ -33,22 +33,32 @@ impl EndGrid {
     }
 
     /// Nearest end of an unused element to `p`: (element, is_end, distance).
-    fn nearest(&self, p: Point, elems: &[LooseElement], used: &[bool]) -> Option<(usize, bool, f64)> {
+    /// Ends of used elements are dropped from the cells as they are met, and
+    /// an exact match ends the search, so many ends at one point (a fan of
+    /// triangles) cost amortised O(1) each instead of a rescan every time.
+    fn nearest(&mut self, p: Point, elems: &[LooseElement], used: &[bool]) -> Option<(usize, bool, f64)> {
         let (kx, ky) = self.key(p);
         let mut best: Option<(usize, bool, f64)> = None;
         for dx in -1..=1 {
             for dy in -1..=1 {
-                let Some(list) = self.cells.get(&(kx.saturating_add(dx), ky.saturating_add(dy))) else {
+                let Some(list) = self.cells.get_mut(&(kx.saturating_add(dx), ky.saturating_add(dy))) else {
                     continue;
                 };
-                for &(i, is_end) in list {
+                let mut k = 0;
+                while k < list.len() {
+                    let (i, is_end) = list[k];
                     if used[i] {
+                        list.swap_remove(k);
                         continue;
                     }
+                    k += 1;
                     let q = if is_end { elems[i].b } else { elems[i].a };
                     let d = p.dist(q);
                     if best.is_none_or(|(_, _, bd)| d < bd) {
                         best = Some((i, is_end, d));
+                        if d == 0.0 {
+                            return best;
+                        }
                     }
                 }
             }

@@ -88,11 +88,16 @@ pub(crate) fn approach_point(
     exclude_radius: f64,
 ) -> Option<Point> {
     let mut found = None;
-    let mut consider = |q: Point| {
+    // Near-approach candidates are ignored within `exclude_radius` of a shared
+    // vertex (the elements approach each other there by construction), true
+    // crossing points only within 2·tol, so a crossing just beside the vertex
+    // is still caught.
+    let mut consider_as = |q: Point, crossing: bool| {
         if found.is_some() || !q.is_finite() {
             return;
         }
-        if exclude.iter().any(|v| v.dist(q) <= exclude_radius) {
+        let radius = if crossing { (2.0 * tol).min(exclude_radius) } else { exclude_radius };
+        if exclude.iter().any(|v| v.dist(q) <= radius) {
             return;
         }
         if a.closest_point(q).0 <= tol && b.closest_point(q).0 <= tol {
@@ -104,20 +109,20 @@ pub(crate) fn approach_point(
         for p in [e.start(), e.end()] {
             let (d, q) = other.closest_point(p);
             if d <= tol {
-                consider(p.mid(q));
+                consider_as(p.mid(q), false);
             }
         }
     }
     match (a, b) {
         (Element::Segment(s), Element::Segment(t)) => {
             if let Some((p, _, _)) = construct::line_line(s.a, s.b - s.a, t.a, t.b - t.a) {
-                consider(p);
+                consider_as(p, true);
             }
         }
         (Element::Segment(s), Element::Arc(c)) | (Element::Arc(c), Element::Segment(s)) => {
             let u = s.b - s.a;
             for t in construct::line_circle(s.a, u, c.center, c.radius) {
-                consider(s.a + u * t);
+                consider_as(s.a + u * t, true);
             }
             // Closest approach of a line and a circle lies on the normal
             // through the centre.
@@ -126,14 +131,14 @@ pub(crate) fn approach_point(
             if n != Point::default() {
                 let on_arc = c.center + n * c.radius;
                 let (_, q) = Element::Segment(*s).closest_point(on_arc);
-                consider(on_arc.mid(q));
+                consider_as(on_arc.mid(q), false);
                 let (_, q) = Element::Arc(*c).closest_point(foot);
-                consider(q);
+                consider_as(q, false);
             }
         }
         (Element::Arc(c1), Element::Arc(c2)) => {
             for p in construct::circle_circle(c1.center, c1.radius, c2.center, c2.radius) {
-                consider(p);
+                consider_as(p, true);
             }
             let u = (c2.center - c1.center).unit();
             if u != Point::default() {
@@ -143,7 +148,7 @@ pub(crate) fn approach_point(
                     c2.center + u * c2.radius,
                     c2.center - u * c2.radius,
                 ] {
-                    consider(p);
+                    consider_as(p, false);
                 }
             }
         }

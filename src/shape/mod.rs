@@ -37,6 +37,11 @@ pub use shape2d::{ElementSpec, Shape2d};
 /// the edge, so micrometre CAM data in millimetres fits with room to spare.
 pub const MAX_COORDINATE: f64 = 1e9;
 
+/// Floor of the touching tolerance relative to the largest coordinate
+/// magnitude (about 2^-46 = 256 ulps): a smaller tolerance, including 0, is
+/// raised to it, because constructed crossing points carry that much rounding.
+pub const MIN_RELATIVE_TOLERANCE: f64 = 1.0 / (1u64 << 46) as f64;
+
 /// Smallest bounding-box diagonal medax accepts, in model units. Below it,
 /// squared lengths and areas approach `f64` underflow and a relative
 /// tolerance stops meaning anything.

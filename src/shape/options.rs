@@ -5,7 +5,10 @@
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ShapeOptions {
     /// Elements closer than this count as touching, and elements shorter than
-    /// this are degenerate. Default: `relative_tolerance × diagonal`.
+    /// this are degenerate. Default: `relative_tolerance × diagonal` of the
+    /// vertices' bounding box. Never below
+    /// [`MIN_RELATIVE_TOLERANCE`](super::MIN_RELATIVE_TOLERANCE) × the largest
+    /// coordinate magnitude (smaller values, 0 included, are raised to it).
     pub tolerance: Option<f64>,
     /// Relative tolerance used when `tolerance` is `None`. Default 1e-9.
     pub relative_tolerance: f64,

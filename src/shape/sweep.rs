@@ -219,7 +219,8 @@ pub(crate) fn sweep_in_slabs(loops: &[Loop], offsets: &[usize], tol: f64, slabs:
     bounds.extend((1..slabs).map(|k| starts[k * starts.len() / slabs]));
     bounds.push(f64::INFINITY);
     bounds.dedup();
-    let outcomes: Vec<SweepOutcome> = bounds.par_windows(2).map(|w| sweep_slab(&pieces, w[0], w[1], &check)).collect();
+    let outcomes: Vec<SweepOutcome> =
+        bounds.par_windows(2).map(|w| sweep_slab(&pieces, w[0], w[1], tol, &check)).collect();
     let mut result = SweepOutcome::Clear;
     for o in outcomes {
         match o {
@@ -236,7 +237,7 @@ type Check<'a> = dyn Fn(&Piece, &Piece) -> Option<(ElementRef, ElementRef, Point
 /// Shamos–Hoey over the slab `lo ≤ x ≤ hi`. Pieces that start left of the
 /// slab enter at `lo`, ordered by their height there; pieces that end right
 /// of it never leave.
-fn sweep_slab(pieces: &[Piece], lo: f64, hi: f64, check: &Check<'_>) -> SweepOutcome {
+fn sweep_slab(pieces: &[Piece], lo: f64, hi: f64, tol: f64, check: &Check<'_>) -> SweepOutcome {
     // Event keys: coordinates' bits mapped to integers in float order, so
     // the sort compares integers; at one point removals come first, so the
     // set never holds a piece whose right end lies behind the sweep.
@@ -251,13 +252,17 @@ fn sweep_slab(pieces: &[Piece], lo: f64, hi: f64, check: &Check<'_>) -> SweepOut
     };
     let mut keyed: Vec<(u64, u64, u64)> = Vec::new();
     for p in pieces {
-        if p.b.x < lo || p.a.x > hi {
+        // Each piece is live over its x-range widened by `tol` on both
+        // sides, so pieces that only meet (or nearly meet) where one ends
+        // and another starts are in the set together and get compared.
+        let (enter_x, leave_x) = (p.a.x - tol, p.b.x + tol);
+        if leave_x < lo || enter_x > hi {
             continue;
         }
-        let enter = if p.a.x < lo { (0, 0) } else { (ordered(p.a.x), ordered(p.a.y)) };
+        let enter = if enter_x < lo { (0, 0) } else { (ordered(enter_x), ordered(p.a.y)) };
         keyed.push((enter.0, enter.1, 1 << 32 | p.id as u64));
-        if p.b.x <= hi {
-            keyed.push((ordered(p.b.x), ordered(p.b.y), p.id as u64));
+        if leave_x <= hi {
+            keyed.push((ordered(leave_x), ordered(p.b.y), p.id as u64));
         }
     }
     keyed.sort_unstable();

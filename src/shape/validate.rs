@@ -13,11 +13,10 @@ use super::intersect::element_pair_approach;
 use super::joints::{classify, turning_angle, JointKind};
 use super::options::ShapeOptions;
 use super::sweep::{sweep_intersections, SweepOutcome};
-use super::{MAX_COORDINATE, MIN_EXTENT};
+use super::{MAX_COORDINATE, MIN_EXTENT, MIN_RELATIVE_TOLERANCE};
 use crate::kernel::{BBox, FilteredKernel, Point};
 use rayon::prelude::*;
 use std::ops::ControlFlow;
-use std::sync::atomic::{AtomicUsize, Ordering as AtomicOrdering};
 
 /// The result of validation: normalised loops and what was learned on the way.
 pub(crate) struct Validated {
@@ -48,7 +47,10 @@ pub(crate) fn validate(mut loops: Vec<Loop>, opts: &ShapeOptions) -> Result<Vali
     if vbox.diagonal() < MIN_EXTENT {
         return Err(ShapeError::OutOfRange { at: at(0, 0), value: vbox.diagonal() });
     }
-    let tol = opts.tolerance_for(vbox.diagonal());
+    // Below a few hundred ulps of the largest coordinate, rounding in the
+    // constructions would decide crossings; such a tolerance is raised.
+    let scale = vbox.min.x.abs().max(vbox.min.y.abs()).max(vbox.max.x.abs()).max(vbox.max.y.abs()).max(vbox.diagonal());
+    let tol = opts.tolerance_for(vbox.diagonal()).max(MIN_RELATIVE_TOLERANCE * scale);
     let flatten =
         Flatten { sagitta: opts.flatten_sagitta.unwrap_or(tol), radius: opts.max_radius_ratio * vbox.diagonal() };
     let mut flattened = 0;
@@ -196,7 +198,11 @@ impl ElementIndex {
 /// Box-tree candidates visited per element before the sweep takes over: the
 /// tree is fast and parallel on ordinary boundaries, the sweep is O(n log n)
 /// on every boundary (dense spokes, combs) where element boxes overlap a lot.
-const TREE_BUDGET_PER_ELEMENT: usize = 48;
+const TREE_BUDGET_PER_ELEMENT: usize = 256;
+
+/// Mean candidates per element, estimated from a sample, above which the
+/// sweep is used straight away.
+const TREE_MEAN_CANDIDATES: usize = 32;
 
 fn check_intersections(loops: &[Loop], index: &ElementIndex, tol: f64) -> Result<(), ShapeError> {
     let tree_result = if tree_looks_cheap(index, tol) {
@@ -230,7 +236,7 @@ fn tree_looks_cheap(index: &ElementIndex, tol: f64) -> bool {
     let step = (total / 1024).max(1);
     let mut overlaps = 0usize;
     let samples = total.div_ceil(step);
-    let allowed = samples * TREE_BUDGET_PER_ELEMENT / 2;
+    let allowed = samples * TREE_MEAN_CANDIDATES;
     for gid in (0..total).step_by(step) {
         let query = index.tree.item_box(gid).inflate(tol);
         let over = index.tree.visit_overlapping(&query, |_| {
@@ -253,8 +259,10 @@ fn tree_looks_cheap(index: &ElementIndex, tol: f64) -> bool {
 /// budget (candidates per element) ran out before an answer.
 fn tree_intersections(loops: &[Loop], index: &ElementIndex, tol: f64, budget: Option<usize>) -> Option<Option<Pair>> {
     let total = *index.offsets.last().unwrap_or(&0);
-    let limit = budget.map_or(usize::MAX, |b| b.saturating_mul(total).max(4096));
-    let visited = AtomicUsize::new(0);
+    // A per-element cap keeps the total below cap × n, and since each
+    // element's count depends only on the input, the outcome is the same
+    // on every run and thread count.
+    let cap = budget.unwrap_or(usize::MAX);
     let first = (0..total).into_par_iter().find_map_first(|gid| {
         let r = index.locate(gid);
         let query = index.tree.item_box(gid).inflate(tol);
@@ -270,7 +278,7 @@ fn tree_intersections(loops: &[Loop], index: &ElementIndex, tol: f64, budget: Op
             }
             ControlFlow::Continue(())
         });
-        if visited.fetch_add(count, AtomicOrdering::Relaxed) + count > limit {
+        if count > cap {
             return Some(None);
         }
         worst.map(|(other, p)| Some((r, index.locate(other), p)))
@@ -368,5 +376,104 @@ mod tests {
         let index = ElementIndex::new(&loops);
         assert!(tree_intersections(&loops, &index, 1e-9, Some(TREE_BUDGET_PER_ELEMENT)).is_none());
         assert!(check_intersections(&loops, &index, 1e-9).is_ok());
+    }
+
+    fn lp(pts: &[(f64, f64)]) -> Loop {
+        Loop::new(pts.iter().map(|&(x, y)| Vertex { p: Point::new(x, y), bulge: 0.0 }).collect())
+    }
+
+    /// Runs the exhaustive tree search and the sweep with 1, 2 and 5 slabs;
+    /// all must agree. Returns whether they found a pair.
+    fn all_paths(loops: &[Loop], tol: f64) -> bool {
+        let index = ElementIndex::new(loops);
+        let tree = tree_intersections(loops, &index, tol, None).unwrap().is_some();
+        for slabs in [1, 2, 5] {
+            match sweep_in_slabs(loops, &index.offsets, tol, slabs) {
+                SweepOutcome::Clear => assert!(!tree, "{slabs} slabs missed what the tree found"),
+                SweepOutcome::Found(..) => assert!(tree, "{slabs} slabs found what the tree did not"),
+                SweepOutcome::Inconsistent => panic!("inconsistent order on a small input"),
+            }
+        }
+        tree
+    }
+
+    #[test]
+    fn touches_where_one_element_ends_and_another_starts() {
+        // Review findings: pieces meeting only at event points were never
+        // both in the sweep's set.
+        let outer = lp(&[(-3.0, -3.0), (3.0, -3.0), (3.0, 3.0), (-3.0, 3.0)]);
+        let a = lp(&[(0.0, 0.0), (-1.0, 1.0), (-2.0, 0.0), (-1.0, -1.0)]);
+        let b = lp(&[(0.0, 0.0), (1.0, -1.0), (2.0, 0.0), (1.0, 1.0)]);
+        assert!(all_paths(&[outer.clone(), a.clone(), b], 1e-9));
+        let tip = lp(&[(1e-10, 5.0), (1.0, 4.0), (2.0, 5.0), (1.0, 6.0)]);
+        let square = lp(&[(0.0, 0.0), (10.0, 0.0), (10.0, 10.0), (0.0, 10.0)]);
+        assert!(all_paths(&[square.clone(), tip], 1e-9));
+        let apart = lp(&[(1e-3, 5.0), (1.0, 4.0), (2.0, 5.0), (1.0, 6.0)]);
+        assert!(!all_paths(&[square.clone(), apart], 1e-9));
+        // A circle hole whose leftmost point nearly touches the wall.
+        let ring = Loop::new(vec![
+            Vertex { p: Point::new(2.0, 5.0), bulge: 1.0 },
+            Vertex { p: Point::new(1e-10, 5.0), bulge: 1.0 },
+        ]);
+        assert!(all_paths(&[square, ring], 1e-9));
+    }
+
+    #[test]
+    fn random_holes_with_touches_agree_on_every_path() {
+        let mut x = 0x2545_f491_4f6c_dd1du64;
+        let mut rnd = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut seen = [0usize; 2];
+        for _ in 0..300 {
+            let mut loops = vec![lp(&[(0.0, 0.0), (10.0, 0.0), (10.0, 10.0), (0.0, 10.0)])];
+            for _ in 0..5 {
+                // Squares and diamonds on a coarse grid, so that exact
+                // touches and shared vertices are common.
+                let (cx, cy) = (1.0 + (rnd() * 16.0).floor() * 0.5, 1.0 + (rnd() * 16.0).floor() * 0.5);
+                let h = 0.25 * (1.0 + (rnd() * 2.0).floor());
+                let mut l = if rnd() < 0.5 {
+                    lp(&[(cx - h, cy - h), (cx + h, cy - h), (cx + h, cy + h), (cx - h, cy + h)])
+                } else {
+                    lp(&[(cx, cy - h), (cx + h, cy), (cx, cy + h), (cx - h, cy)])
+                };
+                if rnd() < 0.3 {
+                    l.vertices[0].bulge = 0.4;
+                }
+                loops.push(l);
+            }
+            seen[all_paths(&loops, 1e-9) as usize] += 1;
+        }
+        assert!(seen[0] > 50 && seen[1] > 50, "{seen:?}");
+    }
+
+    #[test]
+    fn zero_tolerance_is_raised_and_still_finds_crossings() {
+        // Review finding: at tolerance 0 rounding hid most bow-tie crossings.
+        let mut x = 7u64;
+        for _ in 0..150 {
+            x = x.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            let t = (x >> 11) as f64 / (1u64 << 53) as f64;
+            let bow = lp(&[(0.0, 0.0), (3.0, 1.0 + t), (3.0, 0.0), (0.0, 1.1 + t)]);
+            let opts = ShapeOptions { tolerance: Some(0.0), ..ShapeOptions::default() };
+            assert!(matches!(validate(vec![bow], &opts), Err(ShapeError::Intersection { .. })));
+        }
+    }
+
+    #[test]
+    fn a_crossing_just_beside_a_shared_vertex_is_found() {
+        // Review finding: the arc leaves (0,0) almost along the incoming
+        // segment and crosses it about 7·tol away, then sweeps below it.
+        let l = Loop::new(vec![
+            Vertex { p: Point::new(-1.0, 0.0), bulge: 0.0 },
+            Vertex { p: Point::new(0.0, 0.0), bulge: 2.414222097932759 },
+            Vertex { p: Point::new(0.001999990000025, -0.002), bulge: 0.0 },
+            Vertex { p: Point::new(1.0, -1.0), bulge: 0.0 },
+            Vertex { p: Point::new(-1.0, -1.0), bulge: 0.0 },
+        ]);
+        assert!(validate(vec![l], &ShapeOptions::default()).is_err());
     }
 }
