@@ -130,6 +130,63 @@ impl BoxTree {
     }
 }
 
+impl BoxTree {
+    /// The item with the smallest `hit` key among those whose boxes meet the
+    /// rightward ray from `p` (the half-line y = p.y, x ≥ p.x), visiting
+    /// nodes in order of their distance along the ray and stopping once no
+    /// closer hit is possible. `hit` returns `(x, tie_break)` of the item's
+    /// first crossing with the ray, or `None`; `x` must be ≥ the item box's
+    /// `min.x`, which is what makes the early stop exact.
+    pub fn first_hit_right(
+        &self,
+        p: crate::kernel::Point,
+        mut hit: impl FnMut(usize) -> Option<(f64, f64)>,
+    ) -> Option<(usize, f64)> {
+        use std::cmp::Reverse;
+        use std::collections::BinaryHeap;
+        let key = |v: f64| {
+            let b = v.to_bits();
+            if b >> 63 == 1 {
+                !b
+            } else {
+                b | (1 << 63)
+            }
+        };
+        let meets = |b: &BBox| b.min.y <= p.y && p.y <= b.max.y && b.max.x >= p.x;
+        let mut best: Option<(usize, (f64, f64))> = None;
+        let mut heap = BinaryHeap::new();
+        if self.nodes.first().is_some_and(|n| meets(&n.bbox)) {
+            heap.push(Reverse((key(self.nodes[0].bbox.min.x.max(p.x)), 0u32)));
+        }
+        while let Some(Reverse((k, id))) = heap.pop() {
+            if best.is_some_and(|(_, (bx, _))| k > key(bx)) {
+                break;
+            }
+            let node = self.nodes[id as usize];
+            if node.leaf {
+                for &i in &self.order[node.start as usize..node.end as usize] {
+                    if !meets(&self.boxes[i as usize]) {
+                        continue;
+                    }
+                    if let Some(h) = hit(i as usize) {
+                        if best.is_none_or(|(_, b)| h.0 < b.0 || (h.0 == b.0 && h.1 < b.1)) {
+                            best = Some((i as usize, h));
+                        }
+                    }
+                }
+            } else {
+                for c in [node.start, node.end] {
+                    let b = &self.nodes[c as usize].bbox;
+                    if meets(b) {
+                        heap.push(Reverse((key(b.min.x.max(p.x)), c)));
+                    }
+                }
+            }
+        }
+        best.map(|(i, (x, _))| (i, x))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -7,6 +7,7 @@
 mod box_tree;
 mod bulge_loop;
 mod chain;
+mod containment;
 mod draw;
 mod element;
 mod error;

@@ -6,7 +6,8 @@
 //! All positions and indices in errors refer to the loops as given.
 
 use super::box_tree::BoxTree;
-use super::bulge_loop::{winding_contribution, Loop};
+use super::bulge_loop::Loop;
+use super::containment::check_holes;
 use super::element::Element;
 use super::error::{Degeneracy, ElementRef, ShapeError};
 use super::intersect::element_pair_approach;
@@ -14,7 +15,7 @@ use super::joints::{classify, turning_angle, JointKind};
 use super::options::ShapeOptions;
 use super::sweep::{sweep_intersections, SweepOutcome};
 use super::{MAX_COORDINATE, MIN_EXTENT, MIN_RELATIVE_TOLERANCE};
-use crate::kernel::{BBox, FilteredKernel, Point};
+use crate::kernel::{BBox, Point};
 use rayon::prelude::*;
 use std::ops::ControlFlow;
 
@@ -288,35 +289,6 @@ fn tree_intersections(loops: &[Loop], index: &ElementIndex, tol: f64, budget: Op
         Some(Some(pair)) => Some(Some(pair)),
         None => Some(None),
     }
-}
-
-/// With no intersections, a hole is inside the outer loop iff one of its
-/// points is; nesting between holes likewise. One ray query per hole.
-fn check_holes(loops: &[Loop], index: &ElementIndex) -> Result<(), ShapeError> {
-    let k = FilteredKernel;
-    let xmax = index.tree.bounds().max.x;
-    let err = (1..loops.len()).into_par_iter().find_map_first(|h| {
-        let p = loops[h].vertices[0].p;
-        let ray = BBox { min: p, max: Point::new(xmax.max(p.x), p.y) };
-        let mut winding = vec![0i32; loops.len()];
-        index.tree.visit_overlapping::<()>(&ray, |gid| {
-            let r = index.locate(gid);
-            if r.loop_index != h {
-                let e = loops[r.loop_index].element(r.element);
-                winding[r.loop_index] += winding_contribution(&k, &e, p);
-            }
-            ControlFlow::Continue(())
-        });
-        if winding[0] == 0 {
-            return Some(ShapeError::HoleOutside { hole: h, position: p });
-        }
-        (1..loops.len()).find(|&c| c != h && winding[c] != 0).map(|c| ShapeError::HoleInsideHole {
-            hole: h,
-            container: c,
-            position: p,
-        })
-    });
-    err.map_or(Ok(()), Err)
 }
 
 #[cfg(test)]

@@ -1,0 +1,266 @@
+//! Which loop directly contains each hole, in O(log n) per hole.
+//!
+//! Once no two elements touch, a hole's container follows from one ray. Cast
+//! it rightwards from the hole's rightmost point p and take the first
+//! element of another loop L it crosses. If the crossing leaves L (p is on
+//! L's inner side), L contains the hole. If it enters L, the hole lies in
+//! the same face as L's outside, so it has L's container. An entered L has
+//! a point right of p, hence a rightmost point right of p: resolving holes
+//! in decreasing order of their rightmost x never meets a cycle.
+//!
+//! The ray is y = p.y moved up by an infinitesimal ε (the half-open rule
+//! below): an element counts when its lower end is at or below p.y and its
+//! upper end above. Two elements crossing at the same x can only meet at a
+//! vertex of one loop; the perturbed ray meets the one leaning further left
+//! (smaller dx/dy going up) first, which is the tie-break.
+
+use super::bulge_loop::Loop;
+use super::element::Element;
+use super::error::ShapeError;
+use super::validate::ElementIndex;
+use crate::kernel::Point;
+use rayon::prelude::*;
+use std::f64::consts::FRAC_PI_2;
+
+/// dx/dy of a direction turned to point upwards: the order in which an
+/// infinitesimally raised horizontal ray meets elements leaving one point.
+fn lean(u: Point) -> f64 {
+    let u = if u.y < 0.0 || (u.y == 0.0 && u.x < 0.0) { -u } else { u };
+    if u.y > 0.0 {
+        u.x / u.y
+    } else if u.x > 0.0 {
+        f64::INFINITY
+    } else {
+        f64::NEG_INFINITY
+    }
+}
+
+/// First crossing of the raised ray from `p` with element `e`:
+/// (x, lean, crossing goes upwards).
+fn crossing(e: &Element, p: Point) -> Option<(f64, f64, bool)> {
+    let spans = |lo: f64, hi: f64| lo <= p.y && p.y < hi;
+    match e {
+        Element::Segment(s) => {
+            let up = s.b.y > s.a.y;
+            let (lo, hi) = if up { (s.a, s.b) } else { (s.b, s.a) };
+            if !spans(lo.y, hi.y) {
+                return None;
+            }
+            let x = if p.y == lo.y { lo.x } else { lo.x + (p.y - lo.y) * (hi.x - lo.x) / (hi.y - lo.y) };
+            (x > p.x).then_some((x, lean(hi - lo), up))
+        }
+        Element::Arc(arc) => {
+            // Cut at the circle's top and bottom into y-monotone pieces and
+            // keep the nearest crossing.
+            let (c, r, ccw) = (arc.center, arc.radius, arc.is_ccw());
+            let sweep = arc.sweep();
+            let v = arc.a - c;
+            let a0 = v.y.atan2(v.x);
+            let mut cuts: Vec<(f64, Point)> = Vec::with_capacity(3);
+            for k in -4i32..=4 {
+                let ang = FRAC_PI_2 + k as f64 * std::f64::consts::PI;
+                let t = (ang - a0) / sweep; // fraction along the arc
+                if t > 1e-12 && t < 1.0 - 1e-12 {
+                    let y = if k.rem_euclid(2) == 0 { c.y + r } else { c.y - r };
+                    cuts.push((t, Point::new(c.x, y)));
+                }
+            }
+            cuts.sort_by(|x, y| x.0.total_cmp(&y.0));
+            let mut best: Option<(f64, f64, bool)> = None;
+            let mut start = arc.a;
+            for end in cuts.into_iter().map(|c| c.1).chain(std::iter::once(arc.b)) {
+                let up = end.y > start.y;
+                let (lo, hi) = if up { (start, end) } else { (end, start) };
+                if spans(lo.y, hi.y) {
+                    let right_half = start.x + end.x >= 2.0 * c.x;
+                    let x = if p.y == lo.y {
+                        lo.x
+                    } else {
+                        let h = ((r - (p.y - c.y).abs()) * (r + (p.y - c.y).abs())).max(0.0).sqrt();
+                        if right_half {
+                            c.x + h
+                        } else {
+                            c.x - h
+                        }
+                    };
+                    let q = Point::new(x, p.y);
+                    let t = if ccw { (q - c).perp() } else { -(q - c).perp() };
+                    if x > p.x && best.is_none_or(|b| x < b.0) {
+                        best = Some((x, lean(t), up));
+                    }
+                }
+                start = end;
+            }
+            best
+        }
+    }
+}
+
+/// The rightmost point of a loop.
+fn rightmost(l: &Loop) -> Point {
+    let mut best = l.vertices()[0].p;
+    for e in l.elements() {
+        let cand = match e {
+            Element::Arc(a) if a.spans_direction(a.center + Point::new(1.0, 0.0)) => {
+                a.center + Point::new(a.radius, 0.0)
+            }
+            _ => {
+                if e.end().x > e.start().x {
+                    e.end()
+                } else {
+                    e.start()
+                }
+            }
+        };
+        if cand.x > best.x {
+            best = cand;
+        }
+    }
+    best
+}
+
+#[derive(Clone, Copy, PartialEq)]
+enum Container {
+    Outside,
+    Loop(usize),
+}
+
+/// Checks that every hole lies directly inside loop 0: no hole outside it,
+/// none inside another hole. Loops are in input orientation.
+pub(crate) fn check_holes(loops: &[Loop], index: &ElementIndex) -> Result<(), ShapeError> {
+    if loops.len() < 2 {
+        return Ok(());
+    }
+    let ccw: Vec<bool> = loops.iter().map(|l| l.signed_area() > 0.0).collect();
+    // For each hole: its test point and (loop hit, leaving it?).
+    let probes: Vec<(Point, Option<(usize, bool)>)> = (0..loops.len())
+        .into_par_iter()
+        .map(|h| {
+            if h == 0 {
+                return (Point::default(), None);
+            }
+            let p = rightmost(&loops[h]);
+            let mut leaving = None;
+            let hit = index.tree.first_hit_right(p, |gid| {
+                let r = index.locate(gid);
+                if r.loop_index == h {
+                    return None;
+                }
+                crossing(&loops[r.loop_index].element(r.element), p).map(|(x, lean, _)| (x, lean))
+            });
+            if let Some((gid, _)) = hit {
+                let r = index.locate(gid);
+                let (_, _, up) = crossing(&loops[r.loop_index].element(r.element), p).expect("hit elements cross");
+                // Moving right across an upward element leaves its left side:
+                // the inside of a counter-clockwise loop.
+                leaving = Some((r.loop_index, up == ccw[r.loop_index]));
+            }
+            (p, leaving)
+        })
+        .collect();
+    let mut order: Vec<usize> = (1..loops.len()).collect();
+    order.sort_by(|&a, &b| probes[b].0.x.total_cmp(&probes[a].0.x));
+    let mut container = vec![Container::Outside; loops.len()];
+    for &h in &order {
+        container[h] = match probes[h].1 {
+            None => Container::Outside,
+            Some((l, true)) => Container::Loop(l),
+            Some((0, false)) => Container::Outside,
+            Some((l, false)) => container[l],
+        };
+    }
+    for h in 1..loops.len() {
+        let position = probes[h].0;
+        match container[h] {
+            Container::Loop(0) => {}
+            Container::Outside => return Err(ShapeError::HoleOutside { hole: h, position }),
+            Container::Loop(c) => return Err(ShapeError::HoleInsideHole { hole: h, container: c, position }),
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kernel::FilteredKernel;
+    use crate::shape::Vertex;
+
+    fn square(cx: f64, cy: f64, h: f64, bulge: f64) -> Loop {
+        let v = |x: f64, y: f64| Vertex { p: Point::new(x, y), bulge };
+        Loop::new(vec![v(cx - h, cy - h), v(cx + h, cy - h), v(cx + h, cy + h), v(cx - h, cy + h)])
+    }
+
+    fn circle(cx: f64, cy: f64, r: f64) -> Loop {
+        Loop::new(vec![
+            Vertex { p: Point::new(cx + r, cy), bulge: 1.0 },
+            Vertex { p: Point::new(cx - r, cy), bulge: 1.0 },
+        ])
+    }
+
+    /// The answer by winding numbers over every loop (independent code).
+    fn oracle(loops: &[Loop]) -> Result<(), (usize, Option<usize>)> {
+        let k = FilteredKernel;
+        for h in 1..loops.len() {
+            let p = loops[h].vertices()[0].p;
+            if loops[0].winding_number(&k, p) == 0 {
+                return Err((h, None));
+            }
+            if let Some(c) = (1..loops.len()).find(|&c| c != h && loops[c].winding_number(&k, p) != 0) {
+                return Err((h, Some(c)));
+            }
+        }
+        Ok(())
+    }
+
+    #[test]
+    fn agrees_with_winding_numbers_on_aligned_grids() {
+        let mut x = 99u64;
+        let mut rnd = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            (x >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut seen = [0usize; 3];
+        for _ in 0..400 {
+            let outer = if rnd() < 0.5 { square(5.0, 5.0, 5.0, 0.0) } else { circle(5.0, 5.0, 6.0) };
+            let mut loops = vec![outer];
+            // Cells on a 2-unit grid: every row shares y values, so rays run
+            // exactly through other holes' vertices and arc extremes.
+            for i in 0..4 {
+                for j in 0..4 {
+                    let (cx, cy) = (2.0 + 2.0 * i as f64, 2.0 + 2.0 * j as f64);
+                    match (rnd() * 6.0) as u32 {
+                        0 => loops.push(square(cx, cy, 0.5, 0.0)),
+                        1 => loops.push(circle(cx, cy, 0.5)),
+                        2 => loops.push(square(cx, cy, 0.5, 0.2)),
+                        3 if rnd() < 0.1 => {
+                            loops.push(square(cx, cy, 0.7, 0.0));
+                            loops.push(circle(cx, cy, 0.3));
+                        }
+                        4 if rnd() < 0.1 => loops.push(circle(cx + 20.0, cy, 0.5)),
+                        _ => {}
+                    }
+                }
+            }
+            if rnd() < 0.5 {
+                for l in loops.iter_mut().skip(1) {
+                    *l = l.reversed();
+                }
+            }
+            let index = ElementIndex::new(&loops);
+            let got = check_holes(&loops, &index);
+            match (oracle(&loops), &got) {
+                (Ok(()), Ok(())) => seen[0] += 1,
+                (Err((h, None)), Err(ShapeError::HoleOutside { hole, .. })) if *hole == h => seen[1] += 1,
+                (Err((h, Some(_))), Err(ShapeError::HoleInsideHole { hole, .. })) if *hole == h => seen[2] += 1,
+                // Nesting has two valid descriptions: the inner hole inside
+                // the outer one, or (for the lowest index) either of them.
+                (Err(_), Err(ShapeError::HoleInsideHole { .. })) => seen[2] += 1,
+                (want, _) => panic!("oracle {want:?}, containment {got:?}"),
+            }
+        }
+        assert!(seen.iter().all(|&c| c > 20), "{seen:?}");
+    }
+}
