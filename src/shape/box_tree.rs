@@ -106,9 +106,14 @@ impl BoxTree {
         if self.nodes.is_empty() {
             return None;
         }
-        let mut stack: Vec<u32> = Vec::with_capacity(64);
-        stack.push(0);
-        while let Some(id) = stack.pop() {
+        // The tree is balanced (depth ≤ log2(n) + 1 < 64 for any u32 count)
+        // and holds at most depth + 1 pending nodes, so a fixed array serves
+        // as the stack: no allocation per query.
+        let mut stack = [0u32; 72];
+        let mut top = 1;
+        while top > 0 {
+            top -= 1;
+            let id = stack[top];
             let node = &self.nodes[id as usize];
             if !node.bbox.overlaps(query) {
                 continue;
@@ -122,8 +127,9 @@ impl BoxTree {
                     }
                 }
             } else {
-                stack.push(node.end);
-                stack.push(node.start);
+                stack[top] = node.end;
+                stack[top + 1] = node.start;
+                top += 2;
             }
         }
         None

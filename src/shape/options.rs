@@ -18,10 +18,12 @@ pub struct ShapeOptions {
     /// Turns within this angle of ±π are cusps and rejected. Default 1e-6,
     /// which accepts biarc data written with about 7 significant digits.
     pub angle_tolerance: f64,
-    /// Arcs whose sagitta (largest distance from their chord) is at most this
-    /// become segments (thesis 2.2.5.1: nearly collinear arcs with huge radii
-    /// are numerically unstable and geometrically indistinguishable from
-    /// their chord). Default: the same as the touching tolerance.
+    /// Arcs whose sagitta (largest distance from their chord) is at most this,
+    /// and whose half-sweep is within `angle_tolerance`, become segments
+    /// (thesis 2.2.5.1: nearly collinear arcs are numerically unstable and
+    /// indistinguishable from their chord). The sweep condition keeps the
+    /// class of every joint: short arcs of a smooth biarc curve stay arcs.
+    /// Default: the same as the touching tolerance.
     pub flatten_sagitta: Option<f64>,
     /// Arcs whose radius exceeds this multiple of the bounding-box diagonal
     /// become segments (thesis 2.2.5.1: "a bound flag for the arc's radii").

@@ -33,29 +33,61 @@ pub fn star_polygon(n: usize, seed: u64) -> Vec<Vec<Vertex>> {
         .collect()]
 }
 
-/// A smooth (C1 within ~1e-9 rad for n ≥ 1000) closed curve of `n` circular
-/// arcs: the flower r(θ) = 1 + 0.3·sin(7θ). Each arc starts tangent to the
-/// true curve, so joints are smooth up to the sampling error O((1/n)²).
+/// Bulge of the arc from `p` to `q` that leaves `p` along unit tangent `t`,
+/// and the arc's end tangent.
+fn arc_from_tangent(p: Point, t: Point, q: Point) -> (f64, Point) {
+    let chord = q - p;
+    let half = t.cross(chord).atan2(t.dot(chord));
+    let (s, c) = half.sin_cos();
+    let u = chord.unit();
+    ((half / 2.0).tan(), Point::new(c * u.x - s * u.y, s * u.x + c * u.y))
+}
+
+/// The two arcs of the equal-parameter biarc from `p0` (unit tangent `t0`)
+/// to `p1` (unit tangent `t1`): tangent-continuous at both ends and at the
+/// joint. Returns the joint point and the two bulges.
+fn biarc(p0: Point, t0: Point, p1: Point, t1: Point) -> (Point, f64, f64) {
+    let v = p1 - p0;
+    let t = t0 + t1;
+    let denom = 2.0 * (1.0 - t0.dot(t1));
+    // d solves |v − d·(t0 + t1)| = 2d: the two control legs have length d.
+    let d = if denom.abs() < 1e-12 {
+        v.norm2() / (4.0 * v.dot(t1))
+    } else {
+        (-v.dot(t) + (v.dot(t).powi(2) + denom * v.norm2()).sqrt()) / denom
+    };
+    let joint = (p0 + t0 * d + p1 - t1 * d) * 0.5;
+    let (b1, tj) = arc_from_tangent(p0, t0, joint);
+    let (b2, _) = arc_from_tangent(joint, tj, p1);
+    (joint, b1, b2)
+}
+
+/// A smooth (C1) closed curve of `n` circular arcs (n rounded up to even):
+/// biarcs between `n/2` points of the flower r(θ) = 1 + 0.3·sin(k·θ), with
+/// k = max(7, n/20000) lobes so that arcs keep bulging beyond the default
+/// tolerance at large n. Every joint is tangent-continuous up to rounding.
 pub fn flower_arcs(n: usize) -> Vec<Vec<Vertex>> {
-    let n = n.max(8);
+    let m = n.max(8).div_ceil(2);
+    let k = (2 * m / 20_000).max(7) as f64;
     let curve = |t: f64| {
-        let r = 1.0 + 0.3 * (7.0 * t).sin();
+        let r = 1.0 + 0.3 * (k * t).sin();
         Point::new(r * t.cos(), r * t.sin())
     };
     let tangent = |t: f64| {
-        let (r, dr) = (1.0 + 0.3 * (7.0 * t).sin(), 2.1 * (7.0 * t).cos());
-        Point::new(dr * t.cos() - r * t.sin(), dr * t.sin() + r * t.cos())
+        let (r, dr) = (1.0 + 0.3 * (k * t).sin(), 0.3 * k * (k * t).cos());
+        Point::new(dr * t.cos() - r * t.sin(), dr * t.sin() + r * t.cos()).unit()
     };
-    let pts: Vec<(Point, Point)> = (0..n).map(|i| TAU * i as f64 / n as f64).map(|t| (curve(t), tangent(t))).collect();
-    vec![(0..n)
-        .map(|i| {
-            let (p, t) = pts[i];
-            let chord = pts[(i + 1) % n].0 - p;
-            // Start tangent = chord turned by −sweep/2.
-            let half = t.cross(chord).atan2(t.dot(chord));
-            Vertex { p, bulge: (half / 2.0).tan() }
-        })
-        .collect()]
+    let samples: Vec<(Point, Point)> =
+        (0..m).map(|i| TAU * i as f64 / m as f64).map(|t| (curve(t), tangent(t))).collect();
+    let mut verts = Vec::with_capacity(2 * m);
+    for i in 0..m {
+        let (p0, t0) = samples[i];
+        let (p1, t1) = samples[(i + 1) % m];
+        let (joint, b1, b2) = biarc(p0, t0, p1, t1);
+        verts.push(Vertex { p: p0, bulge: b1 });
+        verts.push(Vertex { p: joint, bulge: b2 });
+    }
+    vec![verts]
 }
 
 /// A plate with a `k × k` grid of circular holes, each hole two half arcs:

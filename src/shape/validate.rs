@@ -52,8 +52,12 @@ pub(crate) fn validate(mut loops: Vec<Loop>, opts: &ShapeOptions) -> Result<Vali
     // constructions would decide crossings; such a tolerance is raised.
     let scale = vbox.min.x.abs().max(vbox.min.y.abs()).max(vbox.max.x.abs()).max(vbox.max.y.abs()).max(vbox.diagonal());
     let tol = opts.tolerance_for(vbox.diagonal()).max(MIN_RELATIVE_TOLERANCE * scale);
-    let flatten =
-        Flatten { sagitta: opts.flatten_sagitta.unwrap_or(tol), radius: opts.max_radius_ratio * vbox.diagonal() };
+    let flatten = Flatten {
+        sagitta: opts.flatten_sagitta.unwrap_or(tol),
+        radius: opts.max_radius_ratio * vbox.diagonal(),
+        // Two neighbouring flattened arcs add their half-sweeps at the joint.
+        half_sweep: 0.5 * opts.angle_tolerance,
+    };
     let mut flattened = 0;
     for (li, l) in loops.iter_mut().enumerate() {
         flattened += check_elements(li, l, tol, &flatten)?;
@@ -130,9 +134,13 @@ fn check_numbers(loops: &[Loop]) -> Result<(), ShapeError> {
 }
 
 /// When an arc counts as straight: sagitta at most `sagitta`, or radius above `radius`.
+/// The sagitta test alone would turn short arcs of smooth biarc curves into
+/// segments and so create corners; the half-sweep bound keeps every joint's
+/// class (a chord's tangent differs from the arc's by half the sweep).
 struct Flatten {
     sagitta: f64,
     radius: f64,
+    half_sweep: f64,
 }
 
 /// Rejects zero-length elements and turns arcs that are straight by
@@ -149,7 +157,8 @@ fn check_elements(li: usize, l: &mut Loop, tol: f64, flatten: &Flatten) -> Resul
             // Only arcs of at most a half turn are nearly straight when their
             // radius is huge; a huge nearly full circle is out of range instead.
             Element::Arc(arc) => {
-                (arc.bulge.abs() <= 1.0 && arc.radius > flatten.radius) || l.element(i).sagitta() <= flatten.sagitta
+                (arc.bulge.abs() <= 1.0 && arc.radius > flatten.radius)
+                    || (l.element(i).sagitta() <= flatten.sagitta && arc.sweep().abs() / 2.0 <= flatten.half_sweep)
             }
             Element::Segment(_) => false,
         };
