@@ -148,43 +148,43 @@ impl BoxTree {
         p: crate::kernel::Point,
         mut hit: impl FnMut(usize) -> Option<(f64, f64)>,
     ) -> Option<(usize, f64)> {
-        use std::cmp::Reverse;
-        use std::collections::BinaryHeap;
-        let key = |v: f64| {
-            let b = v.to_bits();
-            if b >> 63 == 1 {
-                !b
-            } else {
-                b | (1 << 63)
-            }
-        };
         let meets = |b: &BBox| b.min.y <= p.y && p.y <= b.max.y && b.max.x >= p.x;
         let mut best: Option<(usize, (f64, f64))> = None;
-        let mut heap = BinaryHeap::new();
-        if self.nodes.first().is_some_and(|n| meets(&n.bbox)) {
-            heap.push(Reverse((key(self.nodes[0].bbox.min.x.max(p.x)), 0u32)));
+        let beaten = |b: &BBox, best: &Option<(usize, (f64, f64))>| best.is_some_and(|(_, (bx, _))| b.min.x > bx);
+        if !self.nodes.first().is_some_and(|n| meets(&n.bbox)) {
+            return None;
         }
-        while let Some(Reverse((k, id))) = heap.pop() {
-            if best.is_some_and(|(_, (bx, _))| k > key(bx)) {
-                break;
+        // Depth-first, nearer child first, skipping subtrees that start
+        // beyond the best hit so far; a fixed stack as in `visit_overlapping`.
+        let mut stack = [0u32; 72];
+        let mut top = 1;
+        while top > 0 {
+            top -= 1;
+            let node = self.nodes[stack[top] as usize];
+            if beaten(&node.bbox, &best) {
+                continue;
             }
-            let node = self.nodes[id as usize];
             if node.leaf {
                 for &i in &self.order[node.start as usize..node.end as usize] {
-                    if !meets(&self.boxes[i as usize]) {
+                    let b = &self.boxes[i as usize];
+                    if !meets(b) || beaten(b, &best) {
                         continue;
                     }
                     if let Some(h) = hit(i as usize) {
-                        if best.is_none_or(|(_, b)| h.0 < b.0 || (h.0 == b.0 && h.1 < b.1)) {
+                        if best.is_none_or(|(_, bh)| h.0 < bh.0 || (h.0 == bh.0 && h.1 < bh.1)) {
                             best = Some((i as usize, h));
                         }
                     }
                 }
             } else {
-                for c in [node.start, node.end] {
-                    let b = &self.nodes[c as usize].bbox;
-                    if meets(b) {
-                        heap.push(Reverse((key(b.min.x.max(p.x)), c)));
+                let (l, r) = (node.start, node.end);
+                let (lb, rb) = (&self.nodes[l as usize].bbox, &self.nodes[r as usize].bbox);
+                // Push the farther child first so the nearer one is popped first.
+                let (near, far) = if lb.min.x.max(p.x) <= rb.min.x.max(p.x) { (l, r) } else { (r, l) };
+                for c in [far, near] {
+                    if meets(&self.nodes[c as usize].bbox) {
+                        stack[top] = c;
+                        top += 1;
                     }
                 }
             }
