@@ -203,6 +203,27 @@ mod tests {
     }
 
     #[test]
+    fn joint_cones_separate_corners_but_not_near_reversals() {
+        // A right-angle corner of two segments: cones far apart.
+        assert!(joint_cones_apart(&seg(0.0, 0.0, 1.0, 0.0), &seg(1.0, 0.0, 1.0, 1.0)));
+        // A smooth joint of two short arcs.
+        let a = Element::from_bulge(Point::new(-1.0, 0.0), Point::new(0.0, 0.0), 0.1);
+        let b = Element::from_bulge(Point::new(0.0, 0.0), Point::new(1.0, 0.0), 0.1);
+        assert!(joint_cones_apart(&a, &b));
+        // The second segment turns back to within 1/100 rad of the first:
+        // too close to rule out a near-touch without the full test.
+        assert!(!joint_cones_apart(&seg(0.0, 0.0, 1.0, 0.0), &seg(1.0, 0.0, 0.0, 0.01)));
+        // A 270° arc turning left wraps back over the incoming side: its
+        // cone (half the sweep, 135°..270°) contains direction 180°.
+        let big = (3.0f64 * std::f64::consts::PI / 8.0).tan();
+        let left = Element::from_bulge(Point::new(1.0, 0.0), Point::new(1.0, -1.0), big);
+        assert!(!joint_cones_apart(&seg(0.0, 0.0, 1.0, 0.0), &left));
+        // Turning right it bends away (cone 45°..−90°).
+        let right = Element::from_bulge(Point::new(1.0, 0.0), Point::new(1.0, -1.0), -big);
+        assert!(joint_cones_apart(&seg(0.0, 0.0, 1.0, 0.0), &right));
+    }
+
+    #[test]
     fn shared_vertex_is_excluded() {
         let a = seg(0.0, 0.0, 1.0, 0.0);
         let b = seg(1.0, 0.0, 1.0, 1.0);
