@@ -67,12 +67,14 @@ fn crossing(e: &Element, p: Point) -> Option<(f64, f64, bool)> {
             }
             cuts.sort_by(|x, y| x.0.total_cmp(&y.0));
             let mut best: Option<(f64, f64, bool)> = None;
-            let mut start = arc.a;
-            for end in cuts.into_iter().map(|c| c.1).chain(std::iter::once(arc.b)) {
+            let (mut start, mut t0) = (arc.a, 0.0);
+            for (t1, end) in cuts.into_iter().chain(std::iter::once((1.0, arc.b))) {
                 let up = end.y > start.y;
                 let (lo, hi) = if up { (start, end) } else { (end, start) };
                 if spans(lo.y, hi.y) {
-                    let right_half = start.x + end.x >= 2.0 * c.x;
+                    // The half of the circle from the piece's middle angle: a
+                    // piece from top to bottom has both ends at x = c.x.
+                    let right_half = (a0 + 0.5 * (t0 + t1) * sweep).cos() >= 0.0;
                     let x = if p.y == lo.y {
                         lo.x
                     } else {
@@ -90,6 +92,7 @@ fn crossing(e: &Element, p: Point) -> Option<(f64, f64, bool)> {
                     }
                 }
                 start = end;
+                t0 = t1;
             }
             best
         }
@@ -214,6 +217,18 @@ mod tests {
     }
 
     #[test]
+    fn crossing_of_a_half_circle_piece_from_top_to_bottom() {
+        // fuzz/json: the left half of a large arc, from its top to its bottom
+        // point, was taken for the right half.
+        let e = Element::from_bulge(Point::new(0.0, 3.0), Point::new(2.0, 2.0), 5.0);
+        let (x, _, up) = crossing(&e, Point::new(2.0, 1.0)).unwrap();
+        assert!((x - 2.5640549922170512).abs() < 1e-12);
+        assert!(up);
+        let (x, _, up) = crossing(&e, Point::new(-4.0, 1.0)).unwrap();
+        assert!(x < -2.9 && !up);
+    }
+
+    #[test]
     fn agrees_with_winding_numbers_on_aligned_grids() {
         let mut x = 99u64;
         let mut rnd = || {
@@ -224,14 +239,22 @@ mod tests {
         };
         let mut seen = [0usize; 3];
         for _ in 0..400 {
-            let outer = if rnd() < 0.5 { square(5.0, 5.0, 5.0, 0.0) } else { circle(5.0, 5.0, 6.0) };
+            let outer = match (rnd() * 3.0) as u32 {
+                0 => square(5.0, 5.0, 5.0, 0.0),
+                1 => circle(5.0, 5.0, 6.0),
+                // A big arc and its chord around the grid.
+                _ => Loop::new(vec![
+                    Vertex { p: Point::new(11.0, 11.0), bulge: 5.0 },
+                    Vertex { p: Point::new(8.0, 12.0), bulge: 0.0 },
+                ]),
+            };
             let mut loops = vec![outer];
             // Cells on a 2-unit grid: every row shares y values, so rays run
             // exactly through other holes' vertices and arc extremes.
             for i in 0..4 {
                 for j in 0..4 {
                     let (cx, cy) = (2.0 + 2.0 * i as f64, 2.0 + 2.0 * j as f64);
-                    match (rnd() * 6.0) as u32 {
+                    match (rnd() * 7.0) as u32 {
                         0 => loops.push(square(cx, cy, 0.5, 0.0)),
                         1 => loops.push(circle(cx, cy, 0.5)),
                         2 => loops.push(square(cx, cy, 0.5, 0.2)),
@@ -240,6 +263,12 @@ mod tests {
                             loops.push(circle(cx, cy, 0.3));
                         }
                         4 if rnd() < 0.1 => loops.push(circle(cx + 20.0, cy, 0.5)),
+                        // A 286° arc closed by a chord: pieces from the
+                        // circle's top to its bottom.
+                        5 => loops.push(Loop::new(vec![
+                            Vertex { p: Point::new(cx + 0.4, cy), bulge: 3.0 },
+                            Vertex { p: Point::new(cx, cy + 0.4), bulge: 0.0 },
+                        ])),
                         _ => {}
                     }
                 }
