@@ -22,10 +22,11 @@ use crate::kernel::Point;
 use rayon::prelude::*;
 use std::f64::consts::FRAC_PI_2;
 
-/// dx/dy of a direction turned to point upwards: the order in which an
-/// infinitesimally raised horizontal ray meets elements leaving one point.
+/// dx/dy of `u`, a direction pointing into an element from the crossing
+/// (upwards, or horizontal at a lowest point): the order in which an
+/// infinitesimally raised horizontal ray meets elements that leave one
+/// point. A horizontal direction leans fully left or right.
 fn lean(u: Point) -> f64 {
-    let u = if u.y < 0.0 || (u.y == 0.0 && u.x < 0.0) { -u } else { u };
     if u.y > 0.0 {
         u.x / u.y
     } else if u.x > 0.0 {
@@ -86,9 +87,15 @@ fn crossing(e: &Element, p: Point) -> Option<(f64, f64, bool)> {
                         }
                     };
                     let q = Point::new(x, p.y);
-                    let t = if ccw { (q - c).perp() } else { -(q - c).perp() };
-                    if x > p.x && best.is_none_or(|b| x < b.0) {
-                        best = Some((x, lean(t), up));
+                    // Travel tangent at q, then turned to point along the
+                    // piece away from its lower end.
+                    let travel = if ccw { (q - c).perp() } else { -(q - c).perp() };
+                    let into = if up { travel } else { -travel };
+                    let l = lean(into);
+                    // Two pieces of one arc can meet the ray at the same
+                    // point (its lowest); the lean decides as between elements.
+                    if x > p.x && best.is_none_or(|b| x < b.0 || (x == b.0 && l < b.1)) {
+                        best = Some((x, l, up));
                     }
                 }
                 start = end;
@@ -226,6 +233,27 @@ mod tests {
         assert!(up);
         let (x, _, up) = crossing(&e, Point::new(-4.0, 1.0)).unwrap();
         assert!(x < -2.9 && !up);
+    }
+
+    #[test]
+    fn ray_tangent_to_the_bottom_of_a_circle_meets_its_left_side_first() {
+        // fuzz/svg: a square hole's corner (5, 4) level with the bottom of a
+        // circular hole at (6, 4); both circle pieces start there with a
+        // horizontal tangent. The raised ray enters the circle, then leaves.
+        let k = FilteredKernel;
+        let outer = square(5.0, 5.0, 5.0, 0.0);
+        let sq = square(4.0, 3.0, 1.0, 0.0);
+        let circ = |b: f64| {
+            Loop::new(vec![Vertex { p: Point::new(5.0, 5.0), bulge: b }, Vertex { p: Point::new(7.0, 5.0), bulge: b }])
+        };
+        // Exactly −1 puts the lowest point at a vertex; one ulp less puts it
+        // inside an arc, which is then cut there into two pieces.
+        for c in [circ(-1.0), circ(-1.0).reversed(), circ(-0.9999999999999999), circ(-0.9999999999999999).reversed()] {
+            let loops = vec![outer.clone(), sq.clone(), c];
+            let index = ElementIndex::new(&loops);
+            assert_eq!(check_holes(&loops, &index), Ok(()));
+            assert_eq!(loops[2].winding_number(&k, Point::new(4.0, 3.0)), 0);
+        }
     }
 
     #[test]
