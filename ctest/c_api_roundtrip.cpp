@@ -226,12 +226,14 @@ void test_options() {
 
     // flatten_sagitta: an arc whose sagitta (b * chord / 2 = 2e-12) is below
     // the default bound (the touching tolerance) is stored as a segment; with
-    // flatten_sagitta = 0 it stays an arc.
+    // flatten_sagitta = 0, and the radius bound (radius 1e12 here) lifted, it
+    // stays an arc.
     const std::vector<std::vector<double>> flat = {{0, 0, 1e-12, 4, 0, 0, 4, 2, 0, 0, 2, 0}};
     auto f = make(flat);
     MT_CHECK_EQ(element_of(f.get(), 0, 0).kind, static_cast<uint32_t>(MX_ELEMENT_SEGMENT));
     mx_shape_options keep = o;
     keep.flatten_sagitta = 0.0;
+    keep.max_radius_ratio = 1e15;
     auto g = make(flat, &keep);
     const mx_element ge = element_of(g.get(), 0, 0);
     MT_CHECK_EQ(ge.kind, static_cast<uint32_t>(MX_ELEMENT_ARC));
