@@ -92,6 +92,18 @@ impl SweepStatus {
         }
     }
 
+    /// Makes `child` the left or right child of `parent`, or the root when
+    /// `parent` is NIL.
+    fn attach(&mut self, parent: u32, left: bool, child: u32) {
+        if parent == NIL {
+            self.root = child;
+        } else if left {
+            self.nodes[parent as usize].left = child;
+        } else {
+            self.nodes[parent as usize].right = child;
+        }
+    }
+
     /// Inserts `item` and returns its neighbours. One descent: down to where
     /// the item's priority places it, then the subtree there is split around it.
     pub fn insert(&mut self, item: u32, cmp: &impl Fn(u32, u32) -> Ordering) -> Neighbours {
@@ -119,13 +131,7 @@ impl SweepStatus {
         }
         self.nodes[item as usize].left = l;
         self.nodes[item as usize].right = r;
-        if parent == NIL {
-            self.root = item;
-        } else if went_left {
-            self.nodes[parent as usize].left = item;
-        } else {
-            self.nodes[parent as usize].right = item;
-        }
+        self.attach(parent, went_left, item);
         (Self::some(below), Self::some(above))
     }
 
@@ -158,13 +164,7 @@ impl SweepStatus {
             above = self.leftmost(right);
         }
         let joined = self.merge(left, right);
-        if parent == NIL {
-            self.root = joined;
-        } else if went_left {
-            self.nodes[parent as usize].left = joined;
-        } else {
-            self.nodes[parent as usize].right = joined;
-        }
+        self.attach(parent, went_left, joined);
         Some((Self::some(below), Self::some(above)))
     }
 }
