@@ -20,7 +20,6 @@ use super::error::ShapeError;
 use super::validate::ElementIndex;
 use crate::kernel::Point;
 use rayon::prelude::*;
-use std::f64::consts::FRAC_PI_2;
 
 /// dx/dy of `u`, a direction pointing into an element from the crossing
 /// (upwards, or horizontal at a lowest point): the order in which an
@@ -54,52 +53,37 @@ fn crossing(e: &Element, p: Point) -> Option<(f64, f64, bool)> {
             // Cut at the circle's top and bottom into y-monotone pieces and
             // keep the nearest crossing.
             let (c, r, ccw) = (arc.center, arc.radius, arc.is_ccw());
-            let sweep = arc.sweep();
-            let v = arc.a - c;
-            let a0 = v.y.atan2(v.x);
-            let mut cuts: Vec<(f64, Point)> = Vec::with_capacity(3);
-            for k in -4i32..=4 {
-                let ang = FRAC_PI_2 + k as f64 * std::f64::consts::PI;
-                let t = (ang - a0) / sweep; // fraction along the arc
-                if t > 1e-12 && t < 1.0 - 1e-12 {
-                    let y = if k.rem_euclid(2) == 0 { c.y + r } else { c.y - r };
-                    cuts.push((t, Point::new(c.x, y)));
-                }
-            }
-            cuts.sort_by(|x, y| x.0.total_cmp(&y.0));
             let mut best: Option<(f64, f64, bool)> = None;
-            let (mut start, mut t0) = (arc.a, 0.0);
-            for (t1, end) in cuts.into_iter().chain(std::iter::once((1.0, arc.b))) {
+            for (start, end, mid) in arc.monotone_pieces(Point::new(0.0, 1.0)) {
                 let up = end.y > start.y;
                 let (lo, hi) = if up { (start, end) } else { (end, start) };
-                if spans(lo.y, hi.y) {
-                    // The half of the circle from the piece's middle angle: a
-                    // piece from top to bottom has both ends at x = c.x.
-                    let right_half = (a0 + 0.5 * (t0 + t1) * sweep).cos() >= 0.0;
-                    let x = if p.y == lo.y {
-                        lo.x
-                    } else {
-                        let h = ((r - (p.y - c.y).abs()) * (r + (p.y - c.y).abs())).max(0.0).sqrt();
-                        if right_half {
-                            c.x + h
-                        } else {
-                            c.x - h
-                        }
-                    };
-                    let q = Point::new(x, p.y);
-                    // Travel tangent at q, then turned to point along the
-                    // piece away from its lower end.
-                    let travel = if ccw { (q - c).perp() } else { -(q - c).perp() };
-                    let into = if up { travel } else { -travel };
-                    let l = lean(into);
-                    // Two pieces of one arc can meet the ray at the same
-                    // point (its lowest); the lean decides as between elements.
-                    if x > p.x && best.is_none_or(|b| x < b.0 || (x == b.0 && l < b.1)) {
-                        best = Some((x, l, up));
-                    }
+                if !spans(lo.y, hi.y) {
+                    continue;
                 }
-                start = end;
-                t0 = t1;
+                // The half of the circle from the piece's middle angle: a
+                // piece from top to bottom has both ends at x = c.x.
+                let right_half = mid.cos() >= 0.0;
+                let x = if p.y == lo.y {
+                    lo.x
+                } else {
+                    let h = ((r - (p.y - c.y).abs()) * (r + (p.y - c.y).abs())).max(0.0).sqrt();
+                    if right_half {
+                        c.x + h
+                    } else {
+                        c.x - h
+                    }
+                };
+                let q = Point::new(x, p.y);
+                // Travel tangent at q, then turned to point along the piece
+                // away from its lower end.
+                let travel = if ccw { (q - c).perp() } else { -(q - c).perp() };
+                let into = if up { travel } else { -travel };
+                let l = lean(into);
+                // Two pieces of one arc can meet the ray at the same point
+                // (its lowest); the lean decides as between elements.
+                if x > p.x && best.is_none_or(|b| x < b.0 || (x == b.0 && l < b.1)) {
+                    best = Some((x, l, up));
+                }
             }
             best
         }

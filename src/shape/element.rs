@@ -87,6 +87,35 @@ impl Arc {
         }
     }
 
+    /// Cuts the arc where it passes the circle points `center ± radius·axis`
+    /// (`axis` a unit vector): with `axis` = x the pieces are x-monotone,
+    /// with `axis` = y they are y-monotone. Pieces come in travel order as
+    /// (start, end, angle of the piece's middle from the centre). Cut points
+    /// are placed exactly on the axis so neighbouring pieces share them.
+    pub fn monotone_pieces(&self, axis: Point) -> Vec<(Point, Point, f64)> {
+        let (c, r, sweep) = (self.center, self.radius, self.sweep());
+        let v = self.a - c;
+        let a0 = v.y.atan2(v.x);
+        let phase = axis.y.atan2(axis.x);
+        // Fractions t of the sweep at which the direction is phase + k·π.
+        let mut cuts: Vec<(f64, Point)> = (-4i32..=4)
+            .filter_map(|k| {
+                let t = (phase + k as f64 * std::f64::consts::PI - a0) / sweep;
+                let sign = if k.rem_euclid(2) == 0 { 1.0 } else { -1.0 };
+                (t > 1e-12 && t < 1.0 - 1e-12).then(|| (t, c + axis * (sign * r)))
+            })
+            .collect();
+        cuts.sort_by(|x, y| x.0.total_cmp(&y.0));
+        let mut pieces = Vec::with_capacity(cuts.len() + 1);
+        let (mut start, mut t0) = (self.a, 0.0);
+        for (t1, end) in cuts.into_iter().chain(std::iter::once((1.0, self.b))) {
+            pieces.push((start, end, a0 + 0.5 * (t0 + t1) * sweep));
+            start = end;
+            t0 = t1;
+        }
+        pieces
+    }
+
     /// The arc's length.
     pub fn length(&self) -> f64 {
         self.radius * self.sweep().abs()
@@ -298,6 +327,27 @@ mod tests {
         assert!(!a.spans_direction(Point::new(1.0, 1.0)));
         assert!(close(e.point_at(1.0).x, 0.0) && close(e.point_at(1.0).y, 1.0));
         assert!(close(e.point_at(1.0 / 3.0).y, -1.0));
+    }
+
+    #[test]
+    fn monotone_pieces_cut_at_the_axis_points() {
+        // Clockwise 270° from (1,0) to (0,1) around the origin: passes the
+        // bottom (0,−1) and the leftmost point (−1,0).
+        let Element::Arc(a) = Element::from_bulge(Point::new(1.0, 0.0), Point::new(0.0, 1.0), -(PI * 3.0 / 8.0).tan())
+        else {
+            panic!()
+        };
+        let xs = a.monotone_pieces(Point::new(1.0, 0.0));
+        assert_eq!(xs.len(), 2);
+        assert!(xs[0].1.dist(Point::new(-1.0, 0.0)) < 1e-12);
+        let ys = a.monotone_pieces(Point::new(0.0, 1.0));
+        assert_eq!(ys.len(), 2);
+        assert!(ys[0].1.dist(Point::new(0.0, -1.0)) < 1e-12);
+        for (s, e, mid) in ys {
+            // Each y-monotone piece lies in one half: left or right of the centre.
+            let m = Point::new(mid.cos(), mid.sin());
+            assert!(s.x * m.x >= -1e-12 && e.x * m.x >= -1e-12, "{s:?} {e:?} {m:?}");
+        }
     }
 
     #[test]

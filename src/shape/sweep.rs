@@ -21,7 +21,6 @@ use super::sweep_status::SweepStatus;
 use crate::kernel::Point;
 use rayon::prelude::*;
 use std::cmp::Ordering;
-use std::f64::consts::{FRAC_PI_2, PI};
 
 #[derive(Debug, Clone, Copy)]
 enum Shape {
@@ -129,40 +128,9 @@ fn pieces_of(e: &Element, elem: u32, out: &mut Vec<Piece>) {
             push(s.a, s.b, shape)
         }
         Element::Arc(arc) => {
-            // Walk the arc counter-clockwise from its ccw start; cut where it
-            // passes angle 0 or π (the circle's rightmost / leftmost points).
-            let (start, sweep) = if arc.is_ccw() { (arc.a, arc.sweep()) } else { (arc.b, -arc.sweep()) };
-            let v = start - arc.center;
-            let a0 = v.y.atan2(v.x);
-            let mut cuts: Vec<f64> = Vec::with_capacity(4);
-            for k in -2..=4 {
-                let t = k as f64 * PI - a0;
-                if t > 1e-12 && t < sweep - 1e-12 {
-                    cuts.push(t);
-                }
-            }
-            cuts.sort_by(f64::total_cmp);
             let (c, r) = (arc.center, arc.radius);
-            let at = |t: f64| {
-                let (s, co) = (a0 + t).sin_cos();
-                c + Point::new(co * r, s * r)
-            };
-            let mut t0 = 0.0;
-            let mut p0 = start;
-            for t1 in cuts.into_iter().chain(std::iter::once(sweep)) {
-                let p1 = if t1 == sweep {
-                    if arc.is_ccw() {
-                        arc.b
-                    } else {
-                        arc.a
-                    }
-                } else {
-                    at(t1)
-                };
-                let mid = (a0 + 0.5 * (t0 + t1)).sin();
-                push(p0, p1, Shape::Arc { c, r, upper: mid > 0.0 || (mid == 0.0 && (a0 + t0) < FRAC_PI_2) });
-                t0 = t1;
-                p0 = p1;
+            for (p0, p1, mid) in arc.monotone_pieces(Point::new(1.0, 0.0)) {
+                push(p0, p1, Shape::Arc { c, r, upper: mid.sin() > 0.0 });
             }
         }
     }
