@@ -22,7 +22,7 @@ pub fn report(s: &Shape2d) -> String {
         out += &format!("reversed to normalise orientation: loop(s) {}\n", reversed.join(", "));
     }
     if s.flattened_arcs() > 0 {
-        out += &format!("arcs flattened to segments (sagitta below tolerance): {}\n", s.flattened_arcs());
+        out += &format!("nearly straight arcs stored as segments: {}\n", s.flattened_arcs());
     }
     out
 }

@@ -110,14 +110,15 @@ pub const MX_FORMAT_DXF: u32 = 2;
 /// Format argument: SVG document or path data.
 pub const MX_FORMAT_SVG: u32 = 3;
 
+/// `ShapeOptions::DEFAULT` in C form (0 and −1 stand for "derived").
 const DEFAULT_OPTIONS: mx_shape_options = mx_shape_options {
     struct_size: std::mem::size_of::<mx_shape_options>(),
     tolerance: 0.0,
-    relative_tolerance: 1e-9,
-    angle_tolerance: 1e-6,
+    relative_tolerance: ShapeOptions::DEFAULT.relative_tolerance,
+    angle_tolerance: ShapeOptions::DEFAULT.angle_tolerance,
     flatten_sagitta: -1.0,
     chain_tolerance: 0.0,
-    max_radius_ratio: 1e6,
+    max_radius_ratio: ShapeOptions::DEFAULT.max_radius_ratio,
 };
 
 /// Fills `out` with the default options (and its `struct_size`).

@@ -41,18 +41,24 @@ pub struct ShapeOptions {
 
 impl Default for ShapeOptions {
     fn default() -> Self {
-        ShapeOptions {
-            tolerance: None,
-            relative_tolerance: 1e-9,
-            angle_tolerance: 1e-6,
-            flatten_sagitta: None,
-            max_radius_ratio: 1e6,
-            chain_tolerance: None,
-        }
+        Self::DEFAULT
     }
 }
 
+// The annotation below keeps cbindgen from exporting `DEFAULT` (a Rust-only
+// constant) into the C header.
+/// cbindgen:ignore
 impl ShapeOptions {
+    /// The defaults, as a constant (the C ABI builds its defaults from it).
+    pub const DEFAULT: ShapeOptions = ShapeOptions {
+        tolerance: None,
+        relative_tolerance: 1e-9,
+        angle_tolerance: 1e-6,
+        flatten_sagitta: None,
+        max_radius_ratio: 1e6,
+        chain_tolerance: None,
+    };
+
     /// The absolute touching tolerance for a shape whose bounding-box diagonal is `diagonal`.
     pub fn tolerance_for(&self, diagonal: f64) -> f64 {
         self.tolerance.unwrap_or(self.relative_tolerance * diagonal)

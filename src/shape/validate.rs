@@ -153,27 +153,20 @@ fn check_elements(li: usize, l: &mut Loop, tol: f64, flatten: &Flatten) -> Resul
         if a.dist(b) <= tol {
             return Err(ShapeError::Degenerate { at: at(li, i), kind: Degeneracy::ZeroLength, position: a });
         }
-        let straight = match l.element(i) {
-            // Only arcs of at most a half turn are nearly straight when their
-            // radius is huge; a huge nearly full circle is out of range instead.
-            Element::Arc(arc) => {
-                (arc.bulge.abs() <= 1.0 && arc.radius > flatten.radius)
-                    || (l.element(i).sagitta() <= flatten.sagitta && arc.sweep().abs() / 2.0 <= flatten.half_sweep)
-            }
-            Element::Segment(_) => false,
-        };
+        let Element::Arc(arc) = l.element(i) else { continue };
+        // Only arcs of at most a half turn are nearly straight when their
+        // radius is huge; a huge nearly full circle is out of range instead.
+        let straight = (arc.bulge.abs() <= 1.0 && arc.radius > flatten.radius)
+            || (Element::Arc(arc).sagitta() <= flatten.sagitta && arc.sweep().abs() / 2.0 <= flatten.half_sweep);
         if straight {
             l.vertices[i].bulge = 0.0;
             flattened += 1;
-        }
-        // A nearly full circle on a tiny chord (huge bulge) can have a radius
-        // that overflows; large but finite radii of flat arcs are fine (their
-        // sagitta exceeds the tolerance, so the radius stays below
-        // diagonal² / (8·tolerance)).
-        if let Element::Arc(arc) = l.element(i) {
-            if !(arc.center.is_finite() && arc.radius.is_finite()) {
-                return Err(ShapeError::OutOfRange { at: at(li, i), value: arc.radius });
-            }
+        } else if !(arc.center.is_finite() && arc.radius.is_finite()) {
+            // A nearly full circle on a tiny chord (huge bulge) can have a
+            // radius that overflows; large but finite radii of flat arcs are
+            // fine (their sagitta exceeds the tolerance, so the radius stays
+            // below diagonal² / (8·tolerance)).
+            return Err(ShapeError::OutOfRange { at: at(li, i), value: arc.radius });
         }
     }
     Ok(flattened)
