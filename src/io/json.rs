@@ -46,6 +46,35 @@ impl<'de> Deserialize<'de> for JsonVertex {
 
 /// Reads shape JSON into closed polylines (loop order preserved).
 pub fn read_loops(text: &str) -> Result<Vec<RawPolyline>, ParseError> {
+    match read_loops_fast(text.as_bytes()) {
+        Some(loops) => Ok(loops),
+        None => read_loops_generic(text),
+    }
+}
+
+/// The fast path of [`read_loops`] on raw bytes: `Some` exactly when the
+/// bytes are a plain `{"loops": ...}` document (then equal to what
+/// [`read_loops`] returns for them); `None` means "decode and use
+/// [`read_loops`]", which reports errors with positions.
+pub fn read_loops_fast(bytes: &[u8]) -> Option<Vec<RawPolyline>> {
+    super::json_scan::scan_loops(bytes, PIECE_BYTES)
+}
+
+/// Documents are read in parallel pieces of about this many bytes.
+const PIECE_BYTES: usize = 4 << 20;
+
+/// [`read_loops_fast`] with a given piece size, so that tests and fuzzing
+/// exercise the splitting on small inputs.
+#[doc(hidden)]
+pub fn read_loops_fast_in_pieces(bytes: &[u8], piece_bytes: usize) -> Option<Vec<RawPolyline>> {
+    super::json_scan::scan_loops(bytes, piece_bytes)
+}
+
+/// [`read_loops`] through the general deserializer only, without the fast
+/// path; the two must agree on every input the fast path accepts (tests and
+/// the fuzz target compare them).
+#[doc(hidden)]
+pub fn read_loops_generic(text: &str) -> Result<Vec<RawPolyline>, ParseError> {
     let file: ShapeFile = serde_json::from_str(text).map_err(|e| ParseError {
         format: Format::Json,
         line: e.line(),
@@ -104,6 +133,45 @@ mod tests {
         let e = read_loops("{\"loops\": [[[0, 0],\n  [0, 0, 1, 2]]]}").unwrap_err();
         assert!(e.message.contains("expected [x, y] or [x, y, bulge]"), "{}", e.message);
         assert_eq!(e.line, 2);
+    }
+
+    #[test]
+    fn fast_path_agrees_with_the_general_reader() {
+        let cases = [
+            r#"{"loops": [[[0,0,0.5],[1,0],[1,1,-1]]]}"#,
+            " {\n\"loops\" :[ [ [ -0.0 , 1e3 , 2.5E-3 ] ,[1,2] ] , [] ] } \n",
+            r#"{"loops": []}"#,
+            r#"{"loops": [[[0.1, 0.2, 0.30000000000000004], [123456789012345678901234567890, -1e-320]]]}"#,
+            r#"{"loops": [[[0, 0], [1, 0] , [1, 1]], [], [[2, 2, 0.5] ,[ -3, 3]],[[4,4]]]}"#,
+            r#"{"loops": [[[0, 0], [1, 0]], [[1, 1]] [[2, 2]]]}"#,
+            r#"{"loops": [[[0, 0], [1, 0]], [[1, 1], ]]}"#,
+            // Everything below leaves the fast path; the result must not change.
+            r#"{"loops": [[[0,0]]], "name": "x"}"#,
+            r#"{"loops": [[[01, 0]]]}"#,
+            r#"{"loops": [[[1., 0]]]}"#,
+            r#"{"loops": [[[.5, 0]]]}"#,
+            r#"{"loops": [[[1e, 0]]]}"#,
+            r#"{"loops": [[[+1, 0]]]}"#,
+            r#"{"loops": [[[1e999, 0]]]}"#,
+            r#"{"loops": [[[1, 0, 0, 0]]]}"#,
+            r#"{"loops": [[[1]]]}"#,
+            r#"{"loops": [[[1, 0],]]}"#,
+            r#"{"loops": [[[1, 0]]]} x"#,
+            r#"{"lo\u006fps": [[[1, 0]]]}"#,
+        ];
+        for c in cases {
+            let fast = read_loops_fast(c.as_bytes());
+            let full = read_loops_generic(c);
+            match fast.clone() {
+                Some(v) => assert_eq!(Ok(v), full, "{c}"),
+                None => assert!(full.is_err() || c.contains("name") || c.contains("\\u"), "{c}: {full:?}"),
+            }
+            assert_eq!(read_loops(c), full, "{c}");
+            for piece in 1..c.len() {
+                assert_eq!(read_loops_fast_in_pieces(c.as_bytes(), piece), fast, "{c} in pieces of {piece}");
+            }
+        }
+        assert!(read_loops_fast(cases[3].as_bytes()).is_some());
     }
 
     #[test]

@@ -8,6 +8,7 @@
 
 pub mod dxf;
 pub mod json;
+mod json_scan;
 pub mod svg_path;
 pub mod svg_writer;
 

@@ -7,26 +7,34 @@
 //! (elements that are short relative to the shape) that is O(log n + k).
 
 use crate::kernel::BBox;
+use rayon::prelude::*;
 use std::ops::ControlFlow;
 
 const LEAF: usize = 8;
 
 #[derive(Debug, Clone, Copy)]
-struct Node {
-    bbox: BBox,
-    /// Leaf: range [start, end) of `order`. Inner: children at `start`, `end`.
-    start: u32,
-    end: u32,
-    leaf: bool,
+pub(super) struct Node {
+    pub bbox: BBox,
+    /// Leaf: range [start, end) of tree positions. Inner: children at `start`, `end`.
+    pub start: u32,
+    pub end: u32,
+    pub leaf: bool,
 }
 
 /// Bounding-volume hierarchy over item boxes; item ids are the indices of
 /// the slice it was built from.
+///
+/// Boxes are stored in tree order (a leaf's boxes are contiguous), because
+/// queries scan leaves and the scan should not jump around in memory.
 #[derive(Debug, Clone, Default)]
 pub struct BoxTree {
-    nodes: Vec<Node>,
-    order: Vec<u32>,
-    boxes: Vec<BBox>,
+    pub(super) nodes: Vec<Node>,
+    /// Item id at each tree position.
+    pub(super) ids: Vec<u32>,
+    /// Box at each tree position.
+    pub(super) boxes: Vec<BBox>,
+    /// Tree position of each item id.
+    rank: Vec<u32>,
 }
 
 fn spread_bits(v: u32) -> u64 {
@@ -47,7 +55,7 @@ impl BoxTree {
         let (w, h) = (all.width().max(f64::MIN_POSITIVE), all.height().max(f64::MIN_POSITIVE));
         let scale = |v: f64, lo: f64, ext: f64| (((v - lo) / ext).clamp(0.0, 1.0) * 65535.0) as u32;
         let mut keyed: Vec<(u64, u32)> = boxes
-            .iter()
+            .par_iter()
             .enumerate()
             .map(|(i, b)| {
                 let c = b.center();
@@ -55,9 +63,14 @@ impl BoxTree {
                 (key, i as u32)
             })
             .collect();
-        keyed.sort_unstable();
-        let order: Vec<u32> = keyed.into_iter().map(|(_, i)| i).collect();
-        let mut tree = BoxTree { nodes: Vec::with_capacity(2 * n / LEAF + 2), order, boxes };
+        keyed.par_sort_unstable();
+        let ids: Vec<u32> = keyed.par_iter().map(|&(_, i)| i).collect();
+        let mut rank = vec![0u32; n];
+        for (k, &i) in ids.iter().enumerate() {
+            rank[i as usize] = k as u32;
+        }
+        let boxes = ids.par_iter().map(|&i| boxes[i as usize]).collect();
+        let mut tree = BoxTree { nodes: Vec::with_capacity(2 * n / LEAF + 2), ids, boxes, rank };
         if n > 0 {
             tree.build(0, n);
         }
@@ -67,7 +80,7 @@ impl BoxTree {
     fn build(&mut self, start: usize, end: usize) -> u32 {
         let id = self.nodes.len() as u32;
         if end - start <= LEAF {
-            let bbox = self.order[start..end].iter().fold(BBox::EMPTY, |a, &i| a.union(&self.boxes[i as usize]));
+            let bbox = self.boxes[start..end].iter().fold(BBox::EMPTY, |a, b| a.union(b));
             self.nodes.push(Node { bbox, start: start as u32, end: end as u32, leaf: true });
             return id;
         }
@@ -92,7 +105,7 @@ impl BoxTree {
 
     /// The box of item `i`.
     pub fn item_box(&self, i: usize) -> &BBox {
-        &self.boxes[i]
+        &self.boxes[self.rank[i] as usize]
     }
 
     /// The box around all items (empty for an empty tree).
@@ -119,9 +132,9 @@ impl BoxTree {
                 continue;
             }
             if node.leaf {
-                for &i in &self.order[node.start as usize..node.end as usize] {
-                    if self.boxes[i as usize].overlaps(query) {
-                        if let ControlFlow::Break(b) = f(i as usize) {
+                for k in node.start as usize..node.end as usize {
+                    if self.boxes[k].overlaps(query) {
+                        if let ControlFlow::Break(b) = f(self.ids[k] as usize) {
                             return Some(b);
                         }
                     }
@@ -156,17 +169,21 @@ impl BoxTree {
         }
         // Depth-first, nearer child first, skipping subtrees that start
         // beyond the best hit so far; a fixed stack as in `visit_overlapping`.
-        let mut stack = [0u32; 72];
+        // Entries carry their node's min.x, so a subtree beaten while it
+        // waited on the stack is dropped without touching its node.
+        let mut stack = [(0u32, f64::NEG_INFINITY); 72];
         let mut top = 1;
+        let beaten_at = |min_x: f64, best: &Option<(usize, (f64, f64))>| best.is_some_and(|(_, (bx, _))| min_x > bx);
         while top > 0 {
             top -= 1;
-            let node = self.nodes[stack[top] as usize];
-            if beaten(&node.bbox, &best) {
+            let (id, min_x) = stack[top];
+            if beaten_at(min_x, &best) {
                 continue;
             }
+            let node = self.nodes[id as usize];
             if node.leaf {
-                for &i in &self.order[node.start as usize..node.end as usize] {
-                    let b = &self.boxes[i as usize];
+                for k in node.start as usize..node.end as usize {
+                    let (b, i) = (&self.boxes[k], self.ids[k]);
                     if !meets(b) || beaten(b, &best) {
                         continue;
                     }
@@ -180,10 +197,11 @@ impl BoxTree {
                 let (l, r) = (node.start, node.end);
                 let (lb, rb) = (&self.nodes[l as usize].bbox, &self.nodes[r as usize].bbox);
                 // Push the farther child first so the nearer one is popped first.
-                let (near, far) = if lb.min.x.max(p.x) <= rb.min.x.max(p.x) { (l, r) } else { (r, l) };
-                for c in [far, near] {
-                    if meets(&self.nodes[c as usize].bbox) {
-                        stack[top] = c;
+                let ((near, nb), (far, fb)) =
+                    if lb.min.x.max(p.x) <= rb.min.x.max(p.x) { ((l, lb), (r, rb)) } else { ((r, rb), (l, lb)) };
+                for (c, b) in [(far, fb), (near, nb)] {
+                    if meets(b) && !beaten(b, &best) {
+                        stack[top] = (c, b.min.x);
                         top += 1;
                     }
                 }

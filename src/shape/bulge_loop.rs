@@ -57,20 +57,19 @@ impl Loop {
     /// rounding for arcs (no flattening).
     pub fn signed_area(&self) -> f64 {
         let n = self.vertices.len();
-        let mut chords = 0.0;
-        let mut bulges = 0.0;
         // Shoelace relative to the first vertex keeps the digits of shapes far
         // from the origin.
         let o = self.vertices.first().map(|v| v.p).unwrap_or_default();
-        for i in 0..n {
+        super::per_element::chunked_sum(n, |i| {
             let a = self.vertices[i].p - o;
             let b = self.vertices[(i + 1) % n].p - o;
-            chords += a.cross(b);
+            let chord = 0.5 * a.cross(b);
             if self.vertices[i].bulge != 0.0 {
-                bulges += self.element(i).bulge_area();
+                chord + self.element(i).bulge_area()
+            } else {
+                chord
             }
-        }
-        0.5 * chords + bulges
+        })
     }
 
     /// Tight bounding box of the loop.
@@ -80,7 +79,7 @@ impl Loop {
 
     /// Total length.
     pub fn perimeter(&self) -> f64 {
-        self.elements().map(|e| e.length()).sum()
+        super::per_element::chunked_sum(self.len(), |i| self.element(i).length())
     }
 
     /// The same loop traversed the other way. Element `k` of the result is

@@ -92,28 +92,33 @@ impl Arc {
     /// with `axis` = y they are y-monotone. Pieces come in travel order as
     /// (start, end, angle of the piece's middle from the centre). Cut points
     /// are placed exactly on the axis so neighbouring pieces share them.
-    pub fn monotone_pieces(&self, axis: Point) -> Vec<(Point, Point, f64)> {
+    pub fn monotone_pieces(&self, axis: Point) -> impl Iterator<Item = (Point, Point, f64)> {
         let (c, r, sweep) = (self.center, self.radius, self.sweep());
         let v = self.a - c;
         let a0 = v.y.atan2(v.x);
         let phase = axis.y.atan2(axis.x);
-        // Fractions t of the sweep at which the direction is phase + k·π.
-        let mut cuts: Vec<(f64, Point)> = (-4i32..=4)
-            .filter_map(|k| {
-                let t = (phase + k as f64 * std::f64::consts::PI - a0) / sweep;
-                let sign = if k.rem_euclid(2) == 0 { 1.0 } else { -1.0 };
-                (t > 1e-12 && t < 1.0 - 1e-12).then(|| (t, c + axis * (sign * r)))
-            })
-            .collect();
-        cuts.sort_by(|x, y| x.0.total_cmp(&y.0));
-        let mut pieces = Vec::with_capacity(cuts.len() + 1);
+        // Fractions t of the sweep at which the direction is phase + k·π; a
+        // sweep below 2π passes at most two of them. Fixed arrays, because
+        // this runs once per element in the sweep and per ray test.
+        let mut cuts = [(1.0, self.b); 3];
+        let mut n = 0;
+        for k in -4i32..=4 {
+            let t = (phase + k as f64 * std::f64::consts::PI - a0) / sweep;
+            let sign = if k.rem_euclid(2) == 0 { 1.0 } else { -1.0 };
+            if t > 1e-12 && t < 1.0 - 1e-12 && n < 2 {
+                cuts[n] = (t, c + axis * (sign * r));
+                n += 1;
+            }
+        }
+        cuts[..n].sort_by(|x, y| x.0.total_cmp(&y.0));
+        let mut pieces = [(self.a, self.b, 0.0); 3];
         let (mut start, mut t0) = (self.a, 0.0);
-        for (t1, end) in cuts.into_iter().chain(std::iter::once((1.0, self.b))) {
-            pieces.push((start, end, a0 + 0.5 * (t0 + t1) * sweep));
+        for (piece, &(t1, end)) in pieces.iter_mut().zip(&cuts[..=n]) {
+            *piece = (start, end, a0 + 0.5 * (t0 + t1) * sweep);
             start = end;
             t0 = t1;
         }
-        pieces
+        pieces.into_iter().take(n + 1)
     }
 
     /// The arc's length.
@@ -337,10 +342,10 @@ mod tests {
         else {
             panic!()
         };
-        let xs = a.monotone_pieces(Point::new(1.0, 0.0));
+        let xs: Vec<_> = a.monotone_pieces(Point::new(1.0, 0.0)).collect();
         assert_eq!(xs.len(), 2);
         assert!(xs[0].1.dist(Point::new(-1.0, 0.0)) < 1e-12);
-        let ys = a.monotone_pieces(Point::new(0.0, 1.0));
+        let ys: Vec<_> = a.monotone_pieces(Point::new(0.0, 1.0)).collect();
         assert_eq!(ys.len(), 2);
         assert!(ys[0].1.dist(Point::new(0.0, -1.0)) < 1e-12);
         for (s, e, mid) in ys {

@@ -129,7 +129,10 @@ fn svg_loops(paths: &[SvgSubpath], opts: &ShapeOptions) -> Result<Vec<Loop>, Sha
 impl Shape2d {
     /// Reads medax shape JSON (`{"loops": [[[x, y, bulge], ...], ...]}`; first loop outer).
     pub fn from_json_str(text: &str, opts: &ShapeOptions) -> Result<Shape2d, ShapeError> {
-        let raw = json::read_loops(text)?;
+        Shape2d::from_raw_json(json::read_loops(text)?, opts)
+    }
+
+    fn from_raw_json(raw: Vec<RawPolyline>, opts: &ShapeOptions) -> Result<Shape2d, ShapeError> {
         let loops = raw
             .into_iter()
             .map(|p| p.vertices.into_iter().map(|v| Vertex { p: Point::new(v.x, v.y), bulge: v.bulge }).collect())
@@ -159,8 +162,20 @@ impl Shape2d {
         let path = path.as_ref();
         let io_err = |e: std::io::Error| ShapeError::Io { path: path.display().to_string(), message: e.to_string() };
         let bytes = std::fs::read(path).map_err(io_err)?;
-        let text = String::from_utf8_lossy(&bytes);
-        let format = Format::from_path(path).unwrap_or_else(|| sniff(&text));
+        let hint = Format::from_path(path);
+        let looks_json = || bytes.iter().find(|b| !b.is_ascii_whitespace()) == Some(&b'{');
+        if hint == Some(Format::Json) || (hint.is_none() && looks_json()) {
+            if let Some(raw) = json::read_loops_fast(&bytes) {
+                return Shape2d::from_raw_json(raw, opts);
+            }
+        }
+        // Strict decoding first: it is several times faster than the lossy
+        // one, which is kept for files with stray bytes in comments.
+        let text = match std::str::from_utf8(&bytes) {
+            Ok(t) => std::borrow::Cow::Borrowed(t),
+            Err(_) => String::from_utf8_lossy(&bytes),
+        };
+        let format = hint.unwrap_or_else(|| sniff(&text));
         Shape2d::from_str_as(&text, format, opts)
     }
 

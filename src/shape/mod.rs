@@ -4,6 +4,7 @@
 //! 2.2.1 (joint classification); holes as in 2.3. Built from bulge loops,
 //! explicit elements or files, validated once, immutable afterwards.
 
+mod box_pairs;
 mod box_tree;
 mod bulge_loop;
 mod chain;
@@ -15,6 +16,7 @@ mod import;
 mod intersect;
 mod joints;
 mod options;
+mod per_element;
 pub mod samples;
 mod shape2d;
 mod sweep;

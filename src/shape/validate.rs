@@ -13,10 +13,10 @@ use super::error::{Degeneracy, ElementRef, ShapeError};
 use super::intersect::element_pair_approach;
 use super::joints::{classify, turning_angle, JointKind};
 use super::options::ShapeOptions;
+use super::per_element;
 use super::sweep::{sweep_intersections, SweepOutcome};
 use super::{MAX_COORDINATE, MIN_EXTENT, MIN_RELATIVE_TOLERANCE};
 use crate::kernel::{BBox, Point};
-use rayon::prelude::*;
 use std::ops::ControlFlow;
 
 /// The result of validation: normalised loops and what was learned on the way.
@@ -58,36 +58,34 @@ pub(crate) fn validate(mut loops: Vec<Loop>, opts: &ShapeOptions) -> Result<Vali
         // Two neighbouring flattened arcs add their half-sweeps at the joint.
         half_sweep: 0.5 * opts.angle_tolerance,
     };
-    let mut flattened = 0;
-    for (li, l) in loops.iter_mut().enumerate() {
-        flattened += check_elements(li, l, tol, &flatten)?;
+    let offsets = per_element::offsets(&loops);
+    let flattened = check_elements(&mut loops, &offsets, tol, &flatten)?;
+    let boxes = per_element::map_elements(&loops, &offsets, |l, i| loops[l].element(i).bbox());
+    let bbox = boxes.iter().fold(BBox::EMPTY, |b, e| b.union(e));
+    if bbox.min.x.min(bbox.min.y) < -MAX_COORDINATE || bbox.max.x.max(bbox.max.y) > MAX_COORDINATE {
+        let (gid, value) = boxes
+            .iter()
+            .enumerate()
+            .find_map(|(g, b)| {
+                [b.min.x, b.min.y, b.max.x, b.max.y].into_iter().find(|v| v.abs() > MAX_COORDINATE).map(|v| (g, v))
+            })
+            .expect("some box is out of range");
+        let (l, i) = locate(&offsets, gid);
+        return Err(ShapeError::OutOfRange { at: at(l, i), value });
     }
-    let bbox = loops.iter().fold(BBox::EMPTY, |b, l| b.union(&l.bbox()));
-    for (li, l) in loops.iter().enumerate() {
-        for (i, e) in l.elements().enumerate() {
-            let bb = e.bbox();
-            for v in [bb.min.x, bb.min.y, bb.max.x, bb.max.y] {
-                if v.abs() > MAX_COORDINATE {
-                    return Err(ShapeError::OutOfRange { at: at(li, i), value: v });
-                }
-            }
-        }
-        for i in 0..l.len() {
-            if turning_angle(l, i).abs() > std::f64::consts::PI - opts.angle_tolerance {
-                return Err(ShapeError::Degenerate {
-                    at: at(li, i),
-                    kind: Degeneracy::Cusp,
-                    position: l.vertices[i].p,
-                });
-            }
-        }
+    // Turning angles once: the cusp check needs them now, the joint classes later.
+    let mut turns = per_element::map_elements(&loops, &offsets, |l, i| turning_angle(&loops[l], i));
+    if let Some(gid) = turns.iter().position(|t| t.abs() > std::f64::consts::PI - opts.angle_tolerance) {
+        let (l, i) = locate(&offsets, gid);
+        return Err(ShapeError::Degenerate { at: at(l, i), kind: Degeneracy::Cusp, position: loops[l].vertices[i].p });
     }
-    let index = ElementIndex::new(&loops);
+    let index = ElementIndex::with_boxes(boxes, offsets);
     check_intersections(&loops, &index, tol)?;
     // After the intersection check, so that a symmetric bow-tie is reported
     // as the crossing it is rather than as "no area".
+    let areas: Vec<f64> = loops.iter().map(Loop::signed_area).collect();
     for (li, l) in loops.iter().enumerate() {
-        if l.signed_area().abs() <= tol * l.perimeter() {
+        if areas[li].abs() <= tol * l.perimeter() {
             return Err(ShapeError::Degenerate {
                 at: at(li, 0),
                 kind: Degeneracy::ZeroArea,
@@ -95,22 +93,36 @@ pub(crate) fn validate(mut loops: Vec<Loop>, opts: &ShapeOptions) -> Result<Vali
             });
         }
     }
-    check_holes(&loops, &index)?;
+    check_holes(&loops, &index, &areas)?;
 
     let mut reversed = Vec::with_capacity(loops.len());
     for (li, l) in loops.iter_mut().enumerate() {
         let want_ccw = li == 0;
-        let flip = (l.signed_area() > 0.0) != want_ccw;
+        let flip = (areas[li] > 0.0) != want_ccw;
         if flip {
             *l = l.reversed();
+            // Vertex k of the reversed loop is vertex n − 1 − k, where the
+            // same two elements meet traversed backwards: the turn flips sign.
+            let t = &mut turns[index.offsets[li]..index.offsets[li + 1]];
+            t.reverse();
+            t.iter_mut().for_each(|a| *a = -*a);
         }
         reversed.push(flip);
     }
     let joints = loops
         .iter()
-        .map(|l| (0..l.len()).map(|i| classify(turning_angle(l, i), opts.angle_tolerance)).collect())
+        .enumerate()
+        .map(|(li, _)| {
+            turns[index.offsets[li]..index.offsets[li + 1]].iter().map(|&t| classify(t, opts.angle_tolerance)).collect()
+        })
         .collect();
     Ok(Validated { loops, reversed, joints, flattened, tolerance: tol, bbox })
+}
+
+/// Loop and element index of a global element id.
+fn locate(offsets: &[usize], gid: usize) -> (usize, usize) {
+    let l = offsets.partition_point(|&o| o <= gid) - 1;
+    (l, gid - offsets[l])
 }
 
 fn check_numbers(loops: &[Loop]) -> Result<(), ShapeError> {
@@ -143,30 +155,63 @@ struct Flatten {
     half_sweep: f64,
 }
 
+/// What [`check_elements`] found for one element.
+#[derive(Clone, Copy, PartialEq)]
+enum ElementCheck {
+    Keep,
+    Flatten,
+    ZeroLength,
+    RadiusOverflow,
+}
+
 /// Rejects zero-length elements and turns arcs that are straight by
-/// `flatten` into segments; returns how many were flattened.
-fn check_elements(li: usize, l: &mut Loop, tol: f64, flatten: &Flatten) -> Result<usize, ShapeError> {
-    let n = l.len();
-    let mut flattened = 0;
-    for i in 0..n {
-        let (a, b) = (l.vertices[i].p, l.vertices[(i + 1) % n].p);
+/// `flatten` into segments; returns how many were flattened. The first
+/// offending element in loop order is reported.
+fn check_elements(loops: &mut [Loop], offsets: &[usize], tol: f64, flatten: &Flatten) -> Result<usize, ShapeError> {
+    let checks = per_element::map_elements(loops, offsets, |l, i| {
+        let lp = &loops[l];
+        let (a, b) = (lp.vertices[i].p, lp.vertices[(i + 1) % lp.len()].p);
         if a.dist(b) <= tol {
-            return Err(ShapeError::Degenerate { at: at(li, i), kind: Degeneracy::ZeroLength, position: a });
+            return ElementCheck::ZeroLength;
         }
-        let Element::Arc(arc) = l.element(i) else { continue };
+        let Element::Arc(arc) = lp.element(i) else { return ElementCheck::Keep };
         // Only arcs of at most a half turn are nearly straight when their
         // radius is huge; a huge nearly full circle is out of range instead.
         let straight = (arc.bulge.abs() <= 1.0 && arc.radius > flatten.radius)
             || (Element::Arc(arc).sagitta() <= flatten.sagitta && arc.sweep().abs() / 2.0 <= flatten.half_sweep);
         if straight {
-            l.vertices[i].bulge = 0.0;
-            flattened += 1;
+            ElementCheck::Flatten
         } else if !(arc.center.is_finite() && arc.radius.is_finite()) {
             // A nearly full circle on a tiny chord (huge bulge) can have a
             // radius that overflows; large but finite radii of flat arcs are
             // fine (their sagitta exceeds the tolerance, so the radius stays
             // below diagonal² / (8·tolerance)).
-            return Err(ShapeError::OutOfRange { at: at(li, i), value: arc.radius });
+            ElementCheck::RadiusOverflow
+        } else {
+            ElementCheck::Keep
+        }
+    });
+    let mut flattened = 0;
+    let lens: Vec<usize> = loops.iter().map(Loop::len).collect();
+    let all = lens.iter().enumerate().flat_map(|(l, &n)| (0..n).map(move |i| (l, i)));
+    for ((l, i), c) in all.zip(checks) {
+        match c {
+            ElementCheck::Keep => {}
+            ElementCheck::Flatten => {
+                loops[l].vertices[i].bulge = 0.0;
+                flattened += 1;
+            }
+            ElementCheck::ZeroLength => {
+                let position = loops[l].vertices[i].p;
+                return Err(ShapeError::Degenerate { at: at(l, i), kind: Degeneracy::ZeroLength, position });
+            }
+            ElementCheck::RadiusOverflow => {
+                let value = match loops[l].element(i) {
+                    Element::Arc(arc) => arc.radius,
+                    Element::Segment(_) => f64::INFINITY,
+                };
+                return Err(ShapeError::OutOfRange { at: at(l, i), value });
+            }
         }
     }
     Ok(flattened)
@@ -177,31 +222,44 @@ pub(crate) struct ElementIndex {
     pub tree: BoxTree,
     /// `offsets[l]` = global id of element 0 of loop `l`; one extra entry at the end.
     pub offsets: Vec<usize>,
+    /// Loop of each global id, when there are many loops: a lookup is then
+    /// cheaper than a binary search over `offsets` (4 bytes per element).
+    loop_of: Option<Vec<u32>>,
 }
 
+/// From this many loops on, [`ElementIndex`] keeps a loop id per element.
+const LOOP_TABLE_MIN_LOOPS: usize = 16;
+
 impl ElementIndex {
+    /// Indexes elements with the given boxes (in global id order).
+    pub fn with_boxes(boxes: Vec<BBox>, offsets: Vec<usize>) -> ElementIndex {
+        let loop_of = (offsets.len() > LOOP_TABLE_MIN_LOOPS).then(|| {
+            offsets.windows(2).enumerate().flat_map(|(l, w)| std::iter::repeat_n(l as u32, w[1] - w[0])).collect()
+        });
+        ElementIndex { tree: BoxTree::new(boxes), offsets, loop_of }
+    }
+
+    #[cfg(test)]
     pub fn new(loops: &[Loop]) -> ElementIndex {
-        let mut offsets = Vec::with_capacity(loops.len() + 1);
-        let mut total = 0;
-        for l in loops {
-            offsets.push(total);
-            total += l.len();
-        }
-        offsets.push(total);
-        let boxes: Vec<BBox> = loops.par_iter().flat_map_iter(|l| l.elements().map(|e| e.bbox())).collect();
-        ElementIndex { tree: BoxTree::new(boxes), offsets }
+        let offsets = per_element::offsets(loops);
+        let boxes = per_element::map_elements(loops, &offsets, |l, i| loops[l].element(i).bbox());
+        ElementIndex::with_boxes(boxes, offsets)
     }
 
     pub fn locate(&self, id: usize) -> ElementRef {
-        let l = self.offsets.partition_point(|&o| o <= id) - 1;
+        let l = match &self.loop_of {
+            Some(t) => t[id] as usize,
+            None => self.offsets.partition_point(|&o| o <= id) - 1,
+        };
         at(l, id - self.offsets[l])
     }
 }
 
-/// Box-tree candidates visited per element before the sweep takes over: the
-/// tree is fast and parallel on ordinary boundaries, the sweep is O(n log n)
-/// on every boundary (dense spokes, combs) where element boxes overlap a lot.
-const TREE_BUDGET_PER_ELEMENT: usize = 256;
+/// Mean candidate pairs per element the box tree may test before the sweep
+/// takes over: the tree is fast and parallel on ordinary boundaries, the
+/// sweep is O(n log n) on every boundary (dense spokes, combs) where element
+/// boxes overlap a lot.
+const TREE_BUDGET_PER_ELEMENT: usize = 64;
 
 /// Mean candidates per element, estimated from a sample, above which the
 /// sweep is used straight away.
@@ -257,40 +315,15 @@ fn tree_looks_cheap(index: &ElementIndex, tol: f64) -> bool {
     true
 }
 
-/// Tests every element against the elements whose boxes overlap its own,
-/// in parallel; the smallest offending pair wins. `None` when the work
-/// budget (candidates per element) ran out before an answer.
+/// Tests every pair of elements whose boxes come within `tol`, in
+/// parallel; the smallest offending pair wins. `None` when the budget (mean
+/// candidate pairs per element) ran out before an answer.
 fn tree_intersections(loops: &[Loop], index: &ElementIndex, tol: f64, budget: Option<usize>) -> Option<Option<Pair>> {
-    let total = *index.offsets.last().unwrap_or(&0);
-    // A per-element cap keeps the total below cap × n, and since each
-    // element's count depends only on the input, the outcome is the same
-    // on every run and thread count.
-    let cap = budget.unwrap_or(usize::MAX);
-    let first = (0..total).into_par_iter().find_map_first(|gid| {
-        let r = index.locate(gid);
-        let query = index.tree.item_box(gid).inflate(tol);
-        let mut worst: Option<(usize, Point)> = None;
-        let mut count = 0usize;
-        index.tree.visit_overlapping::<()>(&query, |other| {
-            count += 1;
-            if other <= gid || worst.is_some_and(|(w, _)| w < other) {
-                return ControlFlow::Continue(());
-            }
-            if let Some(p) = element_pair_approach(loops, r, index.locate(other), tol) {
-                worst = Some((other, p));
-            }
-            ControlFlow::Continue(())
-        });
-        if count > cap {
-            return Some(None);
-        }
-        worst.map(|(other, p)| Some((r, index.locate(other), p)))
-    });
-    match first {
-        Some(None) => None,
-        Some(Some(pair)) => Some(Some(pair)),
-        None => Some(None),
-    }
+    let budget = budget.map(|b| b.saturating_mul(index.tree.len()));
+    let found = index
+        .tree
+        .min_overlapping_pair(tol, budget, |i, j| element_pair_approach(loops, index.locate(i), index.locate(j), tol));
+    found.ok().map(|f| f.map(|(i, j, p)| (index.locate(i), index.locate(j), p)))
 }
 
 #[cfg(test)]
@@ -341,6 +374,28 @@ mod tests {
             }
         }
         assert!(seen[0] > 50 && seen[1] > 50, "{seen:?}");
+    }
+
+    #[test]
+    fn joint_classes_of_reversed_loops_match_a_fresh_classification() {
+        let mut checked = 0;
+        for seed in 0..40u64 {
+            let mut l: Vec<Vertex> = samples::star_polygon(8 + seed as usize, seed).remove(0);
+            for (k, v) in l.iter_mut().enumerate() {
+                v.bulge = [0.0, 0.2, -0.1][(k + seed as usize) % 3];
+            }
+            // Clockwise outer loop: validation must reverse it.
+            let loops = vec![Loop::new(l).reversed()];
+            let opts = ShapeOptions::default();
+            let Ok(v) = validate(loops, &opts) else { continue };
+            assert!(v.reversed[0]);
+            let l = &v.loops[0];
+            let fresh: Vec<JointKind> =
+                (0..l.len()).map(|i| classify(turning_angle(l, i), opts.angle_tolerance)).collect();
+            assert_eq!(v.joints[0], fresh, "seed {seed}");
+            checked += 1;
+        }
+        assert!(checked >= 20, "{checked}");
     }
 
     #[test]
