@@ -158,6 +158,9 @@ mod tests {
             r#"{"loops": [[[1, 0],]]}"#,
             r#"{"loops": [[[1, 0]]]} x"#,
             r#"{"lo\u006fps": [[[1, 0]]]}"#,
+            // fuzz/json: a trailing form feed is ASCII whitespace, not JSON's.
+            "{\"loops\": [[[1, 0]]]}\u{c}",
+            "{\"loops\": [[[1, 0], \u{c}[2, 0]]]}",
         ];
         for c in cases {
             let fast = read_loops_fast(c.as_bytes());

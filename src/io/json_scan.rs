@@ -11,6 +11,17 @@
 
 use super::{RawPolyline, RawVertex};
 
+/// JSON's whitespace: narrower than ASCII's (no form feed).
+trait JsonWs {
+    fn is_json_ws(&self) -> bool;
+}
+
+impl JsonWs for u8 {
+    fn is_json_ws(&self) -> bool {
+        matches!(self, b' ' | b'\n' | b'\r' | b'\t')
+    }
+}
+
 struct Scanner<'a> {
     s: &'a [u8],
     i: usize,
@@ -111,7 +122,7 @@ pub(super) fn scan_loops(bytes: &[u8], piece_bytes: usize) -> Option<Vec<RawPoly
     // The document must end with `] }`; what lies between is the list of loops.
     let mut end = bytes.len();
     for want in [b'}', b']'] {
-        while end > sc.i && bytes[end - 1].is_ascii_whitespace() {
+        while end > sc.i && bytes[end - 1].is_json_ws() {
             end -= 1;
         }
         if end <= sc.i || bytes[end - 1] != want {
@@ -157,7 +168,7 @@ fn split_points(s: &[u8], start: usize, end: usize, piece_bytes: usize) -> Vec<u
             if s[i] == b']' {
                 let mut j = i + 1;
                 let ws = |j: &mut usize| {
-                    while *j < end && s[*j].is_ascii_whitespace() {
+                    while *j < end && s[*j].is_json_ws() {
                         *j += 1;
                     }
                 };

@@ -108,6 +108,12 @@ impl BoxTree {
         &self.boxes[self.rank[i] as usize]
     }
 
+    /// The leaves in tree order: each leaf's box and the ids of its items
+    /// (at most 8, close together), for batching queries of nearby items.
+    pub fn leaves(&self) -> impl Iterator<Item = (&BBox, &[u32])> + '_ {
+        self.nodes.iter().filter(|n| n.leaf).map(|n| (&n.bbox, &self.ids[n.start as usize..n.end as usize]))
+    }
+
     /// The box around all items (empty for an empty tree).
     pub fn bounds(&self) -> BBox {
         self.nodes.first().map(|n| n.bbox).unwrap_or(BBox::EMPTY)

@@ -14,12 +14,14 @@
 //! vertex of one loop; the perturbed ray meets the one leaning further left
 //! (smaller dx/dy going up) first, which is the tie-break.
 
+use super::box_tree::BoxTree;
 use super::bulge_loop::Loop;
 use super::element::Element;
 use super::error::ShapeError;
 use super::validate::ElementIndex;
-use crate::kernel::Point;
+use crate::kernel::{BBox, Point};
 use rayon::prelude::*;
+use std::ops::ControlFlow;
 
 /// dx/dy of `u`, a direction pointing into an element from the crossing
 /// (upwards, or horizontal at a lowest point): the order in which an
@@ -113,6 +115,72 @@ fn rightmost(l: &Loop) -> Point {
     best
 }
 
+/// The first crossing of a hole's ray: position, tie-break, direction and loop.
+#[derive(Clone, Copy, Debug)]
+struct Hit {
+    x: f64,
+    lean: f64,
+    up: bool,
+    loop_index: usize,
+}
+
+impl Hit {
+    /// The ray left the shape's elements behind without meeting any.
+    const NOTHING: Hit = Hit { x: f64::INFINITY, lean: 0.0, up: false, loop_index: usize::MAX };
+
+    fn before(&self, o: &Hit) -> bool {
+        self.x < o.x || (self.x == o.x && self.lean < o.lean)
+    }
+}
+
+/// First hits of the rays of all holes (index 0 unused) within a short
+/// reach: the hole's own width plus height. Rays of holes that lie close
+/// together are batched (one tree descent per 8 holes), which is what makes
+/// plates with 10^5 holes fast. `None` where nothing lies within reach.
+fn short_rays(loops: &[Loop], index: &ElementIndex, probes: &[Point]) -> Vec<Option<Hit>> {
+    let segments: Vec<BBox> = (1..loops.len())
+        .into_par_iter()
+        .map(|h| {
+            let own =
+                (index.offsets[h]..index.offsets[h + 1]).fold(BBox::EMPTY, |b, gid| b.union(index.tree.item_box(gid)));
+            let p = probes[h];
+            BBox { min: p, max: Point::new(p.x + own.width() + own.height(), p.y) }
+        })
+        .collect();
+    let rays = BoxTree::new(segments.clone());
+    let leaves: Vec<(&BBox, &[u32])> = rays.leaves().collect();
+    let found: Vec<(usize, Hit)> = leaves
+        .par_iter()
+        .flat_map_iter(|&(group, members)| {
+            let mut best: [Option<Hit>; 8] = [None; 8];
+            index.tree.visit_overlapping::<()>(group, |gid| {
+                let r = index.locate(gid);
+                let eb = index.tree.item_box(gid);
+                let mut element = None;
+                for (k, &m) in members.iter().enumerate() {
+                    let h = m as usize + 1;
+                    if r.loop_index == h || !eb.overlaps(&segments[m as usize]) {
+                        continue;
+                    }
+                    let e = element.get_or_insert_with(|| loops[r.loop_index].element(r.element));
+                    let Some((x, lean, up)) = crossing(e, probes[h]) else { continue };
+                    let hit = Hit { x, lean, up, loop_index: r.loop_index };
+                    if x <= segments[m as usize].max.x && best[k].is_none_or(|b| hit.before(&b)) {
+                        best[k] = Some(hit);
+                    }
+                }
+                ControlFlow::Continue(())
+            });
+            members.iter().zip(best).filter_map(|(&m, b)| b.map(|b| (m as usize + 1, b)))
+        })
+        .collect();
+    let mut hits = vec![None; loops.len()];
+    for (h, hit) in found {
+        hits[h] = Some(hit);
+    }
+    hits
+}
+
 #[derive(Clone, Copy, PartialEq)]
 enum Container {
     Outside,
@@ -127,29 +195,39 @@ pub(crate) fn check_holes(loops: &[Loop], index: &ElementIndex, areas: &[f64]) -
         return Ok(());
     }
     let ccw: Vec<bool> = areas.iter().map(|&a| a > 0.0).collect();
-    // For each hole: its test point and (loop hit, leaving it?).
-    let probes: Vec<(Point, Option<(usize, bool)>)> = (0..loops.len())
+    let probes: Vec<Point> = (0..loops.len())
         .into_par_iter()
-        .map(|h| {
-            if h == 0 {
-                return (Point::default(), None);
-            }
-            let p = rightmost(&loops[h]);
-            let mut leaving = None;
-            let hit = index.tree.first_hit_right(p, |gid| {
+        .map(|h| if h == 0 { Point::default() } else { rightmost(&loops[h]) })
+        .collect();
+    let mut hits = short_rays(loops, index, &probes);
+    // The few rays that met nothing nearby go the whole way.
+    hits.par_iter_mut().enumerate().skip(1).filter(|(_, hit)| hit.is_none()).for_each(|(h, hit)| {
+        let p = probes[h];
+        *hit = index
+            .tree
+            .first_hit_right(p, |gid| {
                 let r = index.locate(gid);
                 if r.loop_index == h {
                     return None;
                 }
                 crossing(&loops[r.loop_index].element(r.element), p).map(|(x, lean, _)| (x, lean))
-            });
-            if let Some((gid, _)) = hit {
+            })
+            .and_then(|(gid, _)| {
                 let r = index.locate(gid);
-                let (_, _, up) = crossing(&loops[r.loop_index].element(r.element), p).expect("hit elements cross");
-                // Moving right across an upward element leaves its left side:
-                // the inside of a counter-clockwise loop.
-                leaving = Some((r.loop_index, up == ccw[r.loop_index]));
-            }
+                let (x, lean, up) = crossing(&loops[r.loop_index].element(r.element), p)?;
+                Some(Hit { x, lean, up, loop_index: r.loop_index })
+            })
+            .map(Some)
+            .unwrap_or(Some(Hit::NOTHING));
+    });
+    // For each hole: its test point and (loop hit, leaving it?).
+    // Moving right across an upward element leaves its left side: the
+    // inside of a counter-clockwise loop.
+    let probes: Vec<(Point, Option<(usize, bool)>)> = probes
+        .into_iter()
+        .zip(hits)
+        .map(|(p, hit)| {
+            let leaving = hit.filter(|h| h.loop_index != usize::MAX).map(|h| (h.loop_index, h.up == ccw[h.loop_index]));
             (p, leaving)
         })
         .collect();
