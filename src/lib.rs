@@ -8,6 +8,7 @@
 //! module implements which section). Layers, top to bottom:
 //!
 //! * [`ffi`]: the C ABI (thin: convert, validate, call).
+//! * [`plane`]: medial axes in the Euclidean plane (thesis chapter 2).
 //! * [`shape`]: shape models — loops of segments and arcs, validated.
 //! * [`kernel`]: number types, predicates, constructions.
 //! * [`io`]: file formats as plain data.
@@ -34,6 +35,7 @@
 pub mod ffi;
 pub mod io;
 pub mod kernel;
+pub mod plane;
 pub mod shape;
 
 /// The crate version, `MAJOR.MINOR.PATCH`.

@@ -19,6 +19,7 @@
 mod bbox;
 pub mod construct;
 mod exact;
+pub mod growing_disk;
 mod point;
 
 pub use bbox::BBox;

@@ -155,65 +155,138 @@ impl BoxTree {
     }
 }
 
+/// A node waiting in a best-first search, ordered by its bound with the
+/// smallest on top of a max-heap; incomparable bounds count as equal.
+struct Pending<K>(K, u32);
+
+impl<K: PartialOrd> PartialEq for Pending<K> {
+    fn eq(&self, o: &Self) -> bool {
+        self.cmp(o) == std::cmp::Ordering::Equal
+    }
+}
+
+impl<K: PartialOrd> Eq for Pending<K> {}
+
+impl<K: PartialOrd> PartialOrd for Pending<K> {
+    fn partial_cmp(&self, o: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(o))
+    }
+}
+
+impl<K: PartialOrd> Ord for Pending<K> {
+    fn cmp(&self, o: &Self) -> std::cmp::Ordering {
+        o.0.partial_cmp(&self.0).unwrap_or(std::cmp::Ordering::Equal)
+    }
+}
+
 impl BoxTree {
+    /// Branch and bound: the item with the smallest key, where `bound(box)`
+    /// is a lower bound on the keys of all items inside the node box `box`
+    /// (`None`: none of them can have a key) and `key(item, item_box)` is
+    /// the item's key (`None`: no key); item boxes are not bounded
+    /// separately, the key can look at the box itself when that is cheaper
+    /// than computing the key. Nodes are expanded best-first (smallest bound first, from a
+    /// heap) and the search stops once the smallest pending bound is not
+    /// below the best key found, so the answer is exact when the bounds are,
+    /// and only nodes whose bound is below the answer are expanded. Ties
+    /// keep the first item found.
+    pub fn min_by_bound<K: PartialOrd + Copy>(
+        &self,
+        bound: impl Fn(&BBox) -> Option<K>,
+        mut key: impl FnMut(usize, &BBox) -> Option<K>,
+    ) -> Option<(usize, K)> {
+        let root_bound = bound(&self.nodes.first()?.bbox)?;
+        let mut best: Option<(usize, K)> = None;
+        // Not below the best (incomparable keys count as not below).
+        let beaten = |b: &K, best: &Option<(usize, K)>| {
+            best.as_ref().is_some_and(|(_, k)| b.partial_cmp(k) != Some(std::cmp::Ordering::Less))
+        };
+        let mut heap = std::collections::BinaryHeap::with_capacity(64);
+        heap.push(Pending(root_bound, 0));
+        while let Some(Pending(b, id)) = heap.pop() {
+            if beaten(&b, &best) {
+                break;
+            }
+            let node = self.nodes[id as usize];
+            if node.leaf {
+                for k in node.start as usize..node.end as usize {
+                    let i = self.ids[k] as usize;
+                    if let Some(v) = key(i, &self.boxes[k]) {
+                        if best.as_ref().is_none_or(|(_, k)| v < *k) {
+                            best = Some((i, v));
+                        }
+                    }
+                }
+            } else {
+                for c in [node.start, node.end] {
+                    if let Some(b) = bound(&self.nodes[c as usize].bbox) {
+                        if !beaten(&b, &best) {
+                            heap.push(Pending(b, c));
+                        }
+                    }
+                }
+            }
+        }
+        best
+    }
+
+    /// Every item whose key is within `slack` of the smallest key, as
+    /// `(item, key)` in increasing key order (ties by item), found
+    /// best-first like [`min_by_bound`](Self::min_by_bound).
+    /// `bound(box, cutoff)` is a lower bound on the keys of the items in
+    /// the node box, or `None` when none has a key; when it can tell cheaply
+    /// that the bound is at least `cutoff` it may return any value at or
+    /// above `cutoff` instead of computing it. `key(item)` is the item's key.
+    pub fn smallest_keys(
+        &self,
+        slack: f64,
+        bound: impl Fn(&BBox, f64) -> Option<f64>,
+        mut key: impl FnMut(usize) -> Option<f64>,
+    ) -> Vec<(usize, f64)> {
+        let mut found: Vec<(usize, f64)> = Vec::new();
+        let mut cutoff = f64::INFINITY;
+        let Some(root) = self.nodes.first().and_then(|n| bound(&n.bbox, cutoff)) else { return found };
+        let mut heap = std::collections::BinaryHeap::with_capacity(64);
+        heap.push(Pending(root, 0));
+        while let Some(Pending(b, id)) = heap.pop() {
+            if b > cutoff {
+                break;
+            }
+            let node = self.nodes[id as usize];
+            if node.leaf {
+                for k in node.start as usize..node.end as usize {
+                    let i = self.ids[k] as usize;
+                    if let Some(v) = key(i).filter(|&v| v <= cutoff) {
+                        found.push((i, v));
+                        cutoff = cutoff.min(v + slack);
+                    }
+                }
+            } else {
+                for c in [node.start, node.end] {
+                    if let Some(b) = bound(&self.nodes[c as usize].bbox, cutoff).filter(|&b| b <= cutoff) {
+                        heap.push(Pending(b, c));
+                    }
+                }
+            }
+        }
+        found.retain(|&(_, v)| v <= cutoff);
+        found.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
+        found
+    }
+
     /// The item with the smallest `hit` key among those whose boxes meet the
-    /// rightward ray from `p` (the half-line y = p.y, x ≥ p.x), visiting
-    /// nodes in order of their distance along the ray and stopping once no
-    /// closer hit is possible. `hit` returns `(x, tie_break)` of the item's
-    /// first crossing with the ray, or `None`; `x` must be ≥ the item box's
-    /// `min.x`, which is what makes the early stop exact.
+    /// rightward ray from `p` (the half-line y = p.y, x ≥ p.x). `hit` returns
+    /// `(x, tie_break)` of the item's first crossing with the ray, or `None`;
+    /// `x` must be ≥ the item box's `min.x`, which is what makes the early
+    /// stop exact.
     pub fn first_hit_right(
         &self,
         p: crate::kernel::Point,
         mut hit: impl FnMut(usize) -> Option<(f64, f64)>,
     ) -> Option<(usize, f64)> {
         let meets = |b: &BBox| b.min.y <= p.y && p.y <= b.max.y && b.max.x >= p.x;
-        let mut best: Option<(usize, (f64, f64))> = None;
-        let beaten = |b: &BBox, best: &Option<(usize, (f64, f64))>| best.is_some_and(|(_, (bx, _))| b.min.x > bx);
-        if !self.nodes.first().is_some_and(|n| meets(&n.bbox)) {
-            return None;
-        }
-        // Depth-first, nearer child first, skipping subtrees that start
-        // beyond the best hit so far; a fixed stack as in `visit_overlapping`.
-        // Entries carry their node's min.x, so a subtree beaten while it
-        // waited on the stack is dropped without touching its node.
-        let mut stack = [(0u32, f64::NEG_INFINITY); 72];
-        let mut top = 1;
-        let beaten_at = |min_x: f64, best: &Option<(usize, (f64, f64))>| best.is_some_and(|(_, (bx, _))| min_x > bx);
-        while top > 0 {
-            top -= 1;
-            let (id, min_x) = stack[top];
-            if beaten_at(min_x, &best) {
-                continue;
-            }
-            let node = self.nodes[id as usize];
-            if node.leaf {
-                for k in node.start as usize..node.end as usize {
-                    let (b, i) = (&self.boxes[k], self.ids[k]);
-                    if !meets(b) || beaten(b, &best) {
-                        continue;
-                    }
-                    if let Some(h) = hit(i as usize) {
-                        if best.is_none_or(|(_, bh)| h.0 < bh.0 || (h.0 == bh.0 && h.1 < bh.1)) {
-                            best = Some((i as usize, h));
-                        }
-                    }
-                }
-            } else {
-                let (l, r) = (node.start, node.end);
-                let (lb, rb) = (&self.nodes[l as usize].bbox, &self.nodes[r as usize].bbox);
-                // Push the farther child first so the nearer one is popped first.
-                let ((near, nb), (far, fb)) =
-                    if lb.min.x.max(p.x) <= rb.min.x.max(p.x) { ((l, lb), (r, rb)) } else { ((r, rb), (l, lb)) };
-                for (c, b) in [(far, fb), (near, nb)] {
-                    if meets(b) && !beaten(b, &best) {
-                        stack[top] = (c, b.min.x);
-                        top += 1;
-                    }
-                }
-            }
-        }
-        best.map(|(i, (x, _))| (i, x))
+        let bound = |b: &BBox| meets(b).then_some((b.min.x.max(p.x), f64::NEG_INFINITY));
+        self.min_by_bound(bound, |i, b| if meets(b) { hit(i) } else { None }).map(|(i, (x, _))| (i, x))
     }
 }
 
@@ -223,15 +296,20 @@ mod tests {
     use crate::kernel::Point;
     use rand::{Rng, SeedableRng};
 
+    /// `n` boxes in [0, 100]² with sides up to `size`.
+    fn random_boxes(rng: &mut impl Rng, n: usize, size: f64) -> Vec<BBox> {
+        (0..n)
+            .map(|_| {
+                let p = Point::new(rng.gen_range(0.0..100.0), rng.gen_range(0.0..100.0));
+                BBox::of_points(p, p + Point::new(rng.gen_range(0.0..size), rng.gen_range(0.0..size)))
+            })
+            .collect()
+    }
+
     #[test]
     fn finds_exactly_the_overlapping_boxes() {
         let mut rng = rand::rngs::SmallRng::seed_from_u64(7);
-        let boxes: Vec<BBox> = (0..2000)
-            .map(|_| {
-                let p = Point::new(rng.gen_range(0.0..100.0), rng.gen_range(0.0..100.0));
-                BBox::of_points(p, p + Point::new(rng.gen_range(0.0..3.0), rng.gen_range(0.0..3.0)))
-            })
-            .collect();
+        let boxes = random_boxes(&mut rng, 2000, 3.0);
         let tree = BoxTree::new(boxes.clone());
         for _ in 0..200 {
             let p = Point::new(rng.gen_range(-5.0..100.0), rng.gen_range(-5.0..100.0));
@@ -244,6 +322,39 @@ mod tests {
             got.sort_unstable();
             let want: Vec<usize> = (0..boxes.len()).filter(|&i| boxes[i].overlaps(&q)).collect();
             assert_eq!(got, want);
+        }
+    }
+
+    #[test]
+    fn branch_and_bound_finds_the_nearest_box_centre() {
+        let mut rng = rand::rngs::SmallRng::seed_from_u64(5);
+        let boxes = random_boxes(&mut rng, 3000, 2.0);
+        let tree = BoxTree::new(boxes.clone());
+        for _ in 0..300 {
+            let q = Point::new(rng.gen_range(-10.0..110.0), rng.gen_range(-10.0..110.0));
+            // Distance from q to a box: a lower bound on the distance to its centre.
+            let to_box = |b: &BBox| {
+                let dx = (b.min.x - q.x).max(q.x - b.max.x).max(0.0);
+                let dy = (b.min.y - q.y).max(q.y - b.max.y).max(0.0);
+                Some(dx.hypot(dy))
+            };
+            let mut calls = 0;
+            let got = tree.min_by_bound(to_box, |i, _| {
+                calls += 1;
+                Some(boxes[i].center().dist(q))
+            });
+            let want = (0..boxes.len()).map(|i| boxes[i].center().dist(q)).fold(f64::INFINITY, f64::min);
+            assert_eq!(got.map(|g| g.1), Some(want));
+            assert!(calls < 200, "{calls} keys computed: the bounds should prune");
+            // All keys within a slack of the smallest, in order.
+            let slack = 3.0;
+            let near = tree.smallest_keys(slack, |b, _| to_box(b), |i| Some(boxes[i].center().dist(q)));
+            let mut want: Vec<(usize, f64)> = (0..boxes.len())
+                .map(|i| (i, boxes[i].center().dist(q)))
+                .filter(|&(_, d)| d <= near[0].1 + slack)
+                .collect();
+            want.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
+            assert_eq!(near, want);
         }
     }
 }

@@ -1,0 +1,252 @@
+//! Maximal disks: the largest disk inside the shape that touches the
+//! boundary at a given point (thesis 2.2.1, Algorithm 1 and Figure 2.2).
+//!
+//! The thesis grows the disk against every element in turn (O(n) per disk).
+//! Here the disks tangent at one point are nested, so the maximal one is the
+//! first contact of a growing disk, and a branch-and-bound search over the
+//! element box tree finds it after looking at the few elements near it:
+//! O(log n) for the boundaries medax is built for. Any maximal disk of a
+//! subshape is a maximal disk of the whole shape (Observation 4), so the
+//! divide step can ask this one index for every subshape.
+
+use crate::kernel::growing_disk::GrowingDisk;
+use crate::kernel::Point;
+use crate::shape::{BoxTree, Element, ElementRef, JointKind, Shape2d};
+
+/// Where a maximal disk touches the boundary.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Footpoint {
+    /// The element touched, indexed as in [`Shape2d::loops`] (normalised
+    /// orientation).
+    pub element: ElementRef,
+    /// The touching point, model units.
+    pub point: Point,
+}
+
+/// A maximal disk with its footpoints.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MaxDisk {
+    /// Centre, model units.
+    pub center: Point,
+    /// Radius, model units.
+    pub radius: f64,
+    /// Where the disk touches the boundary: every element whose own first
+    /// contact with the growing disk comes within the contact tolerance
+    /// ([`DiskFinder::contact_tolerance`]) of the disk's radius, at its
+    /// point closest to the centre, merged where elements meet (a touch at
+    /// a vertex is listed once). The first entry is the point the disk was
+    /// grown from, the rest follow in loop and element order. Two or more
+    /// for an ordinary disk, three or more at a branch point.
+    pub footpoints: Vec<Footpoint>,
+    /// The disk is the supporting circle of the arc it was grown from,
+    /// which then touches it along its whole length: a leaf of the medial
+    /// axis (thesis Observation 5).
+    pub leaf_arc: bool,
+}
+
+/// Computes maximal disks of one shape; the element index is built once
+/// (O(n log n)) and shared by every query. `Sync`: query from many threads.
+pub struct DiskFinder<'s> {
+    shape: &'s Shape2d,
+    tree: BoxTree,
+    /// Global id of element 0 of each loop, plus the total.
+    offsets: Vec<usize>,
+}
+
+impl<'s> DiskFinder<'s> {
+    /// Indexes the elements of `shape`.
+    pub fn new(shape: &'s Shape2d) -> DiskFinder<'s> {
+        let mut offsets = vec![0];
+        let mut boxes = Vec::with_capacity(shape.element_count());
+        for l in shape.loops() {
+            boxes.extend(l.elements().map(|e| e.bbox()));
+            offsets.push(boxes.len());
+        }
+        DiskFinder { shape, tree: BoxTree::new(boxes), offsets }
+    }
+
+    /// Contacts closer than this to the disk's circle count as footpoints:
+    /// the shape's tolerance (by default 1e-9 × the bounding-box diagonal).
+    pub fn contact_tolerance(&self) -> f64 {
+        self.shape.tolerance()
+    }
+
+    fn element(&self, gid: usize) -> (ElementRef, Element) {
+        let l = self.offsets.partition_point(|&o| o <= gid) - 1;
+        let r = ElementRef { loop_index: l, element: gid - self.offsets[l] };
+        (r, self.shape.loops()[l].element(r.element))
+    }
+
+    fn global(&self, r: ElementRef) -> usize {
+        self.offsets[r.loop_index] + r.element
+    }
+
+    /// The point at arc-length fraction `s` ∈ [0, 1] of element `at` and the
+    /// unit normal there pointing into the shape (the interior is left of
+    /// every loop). At `s` = 0 or 1 the normal is the element's own, not
+    /// the neighbour's: at a reflex vertex it picks one disk of the fan.
+    pub fn boundary_point(&self, at: ElementRef, s: f64) -> (Point, Point) {
+        let e = self.shape.loops()[at.loop_index].element(at.element);
+        let s = s.clamp(0.0, 1.0);
+        let p = if s == 0.0 {
+            e.start()
+        } else if s == 1.0 {
+            e.end()
+        } else {
+            e.point_at(s)
+        };
+        let tangent = match e {
+            Element::Segment(g) => (g.b - g.a).unit(),
+            Element::Arc(a) => {
+                let radial = if s == 0.0 {
+                    a.a - a.center
+                } else if s == 1.0 {
+                    a.b - a.center
+                } else {
+                    p - a.center
+                };
+                let t = radial.perp().unit();
+                if a.is_ccw() {
+                    t
+                } else {
+                    -t
+                }
+            }
+        };
+        (p, tangent.perp())
+    }
+
+    /// The maximal disk touching element `at` at arc-length fraction `s`
+    /// (thesis Algorithm 1). Element ids in the result are as in
+    /// [`Shape2d::loops`].
+    ///
+    /// At a convex corner (`s` = 0 or 1 there) the maximal disk is the
+    /// corner itself: radius 0, touching both elements.
+    pub fn max_disk(&self, at: ElementRef, s: f64) -> MaxDisk {
+        let (p, n) = self.boundary_point(at, s);
+        let g = GrowingDisk { p, n };
+        let own = self.global(at);
+        let lp = &self.shape.loops()[at.loop_index];
+        // The vertex the disk grows from, with its joint and its other element.
+        let vertex = match s {
+            0.0 => Some((at.element, (at.element + lp.len() - 1) % lp.len())),
+            1.0 => Some(((at.element + 1) % lp.len(), (at.element + 1) % lp.len())),
+            _ => None,
+        }
+        .map(|(v, other)| (self.shape.joint(at.loop_index, v), ElementRef { element: other, ..at }));
+        if let Some((JointKind::Convex, other)) = vertex {
+            let footpoints = vec![Footpoint { element: at, point: p }, Footpoint { element: other, point: p }];
+            return MaxDisk { center: p, radius: 0.0, footpoints, leaf_arc: false };
+        }
+        let shares_p = vertex.map(|(joint, other)| (self.global(other), joint == JointKind::Smooth));
+        let tol = self.shape.tolerance();
+        // Contacts at radii this small are the disk's own tangency point
+        // seen through a neighbour sharing it; a genuine contact is at least
+        // half the distance to another element, which validation keeps
+        // above the tolerance.
+        let t_min = 0.25 * self.shape.tolerance();
+        // The first contact of each element, as a key for the tree search.
+        let contact = |gid: usize| {
+            let (_, e) = self.element(gid);
+            if gid == own {
+                own_contact(&g, &e)
+            } else {
+                match shares_p {
+                    Some((other, smooth)) if other == gid => neighbour_touch(&g, &e, t_min, tol, smooth),
+                    _ => first_touch(&g, &e, t_min),
+                }
+            }
+        };
+        // Footpoints: every element whose own first contact comes within the
+        // tolerance of the disk's. (Elements merely near the circle, like
+        // the boundary running on from a smooth footpoint, are not contacts.)
+        let near = self.tree.smallest_keys(tol, |b, cutoff| g.box_bound_below(b.min, b.max, cutoff), contact);
+        let Some(&(_, radius)) = near.first() else {
+            // Cannot happen inside a bounded shape; an infinite radius keeps
+            // the answer honest rather than inventing one.
+            let footpoints = vec![Footpoint { element: at, point: p }];
+            return MaxDisk { center: p, radius: f64::INFINITY, footpoints, leaf_arc: false };
+        };
+        let center = g.center(radius);
+        // The arc grown from is among the first contacts: the disk is its circle.
+        let leaf_arc = near.iter().any(|&(gid, _)| gid == own);
+        let mut found = vec![(own, Footpoint { element: at, point: p })];
+        for &(gid, _) in &near {
+            if gid == own {
+                continue;
+            }
+            let (er, e) = self.element(gid);
+            let q = e.closest_point(center).1;
+            if found.iter().all(|(_, f)| f.point.dist(q) > tol) {
+                found.push((gid, Footpoint { element: er, point: q }));
+            }
+        }
+        found[1..].sort_by_key(|(gid, _)| *gid);
+        let footpoints = found.into_iter().map(|f| f.1).collect();
+        MaxDisk { center, radius, footpoints, leaf_arc }
+    }
+}
+
+/// The element the disk grows from touches it again only if it is an arc
+/// curving towards the inside: at its own radius, where the disk becomes
+/// its supporting circle.
+fn own_contact(g: &GrowingDisk, e: &Element) -> Option<f64> {
+    match e {
+        Element::Arc(a) if g.n.dot(a.center - g.p) > 0.0 => Some(a.radius),
+        _ => None,
+    }
+}
+
+/// [`first_touch`] for the other element at the vertex the disk grows
+/// from. Contacts within `tol` of that vertex are the vertex itself, seen
+/// through rounding (near a smooth joint the tangency equations are 0/0),
+/// and are ignored. At a smooth joint, an arc curving inwards more tightly
+/// than the disk enters it right at the vertex once the disk outgrows the
+/// arc's radius; at a reflex joint the element leaves the disk there and
+/// can only come back through its far end or a tangency elsewhere.
+fn neighbour_touch(g: &GrowingDisk, e: &Element, t_min: f64, tol: f64, smooth: bool) -> Option<f64> {
+    let mut best = touches(g, e, t_min).filter(|&(_, q)| q.dist(g.p) > tol).map(|(t, _)| t).fold(None, min_some);
+    if let (true, Element::Arc(a)) = (smooth, e) {
+        if g.n.dot(a.center - g.p) > 0.0 {
+            best = min_some(best, a.radius);
+        }
+    }
+    best
+}
+
+fn min_some(best: Option<f64>, t: f64) -> Option<f64> {
+    Some(best.map_or(t, |b| b.min(t)))
+}
+
+/// The first radius above `t_min` at which the growing disk touches `e`:
+/// at an end point, or where its circle is tangent to the element's
+/// supporting line or circle at a point of the element.
+fn first_touch(g: &GrowingDisk, e: &Element, t_min: f64) -> Option<f64> {
+    touches(g, e, t_min).map(|(t, _)| t).fold(None, min_some)
+}
+
+/// Every radius above `t_min` at which the growing disk's circle meets `e`
+/// at an end point or is tangent to it at an inner point, with that point.
+fn touches(g: &GrowingDisk, e: &Element, t_min: f64) -> impl Iterator<Item = (f64, Point)> {
+    let mut out = [None; 4];
+    out[0] = g.through_point(e.start()).map(|t| (t, e.start()));
+    out[1] = g.through_point(e.end()).map(|t| (t, e.end()));
+    match *e {
+        Element::Segment(s) => {
+            let d = s.b - s.a;
+            for (slot, (t, q)) in out[2..].iter_mut().zip(g.tangent_to_line(s.a, d.perp().unit())) {
+                if (0.0..=1.0).contains(&(d.dot(q - s.a) / d.norm2())) {
+                    *slot = Some((t, q));
+                }
+            }
+        }
+        Element::Arc(a) => {
+            for (slot, (t, q)) in out[2..].iter_mut().zip(g.tangent_to_circle(a.center, a.radius)) {
+                if a.spans_direction(q) {
+                    *slot = Some((t, q));
+                }
+            }
+        }
+    }
+    out.into_iter().flatten().filter(move |&(t, _)| t > t_min)
+}
