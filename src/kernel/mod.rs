@@ -16,6 +16,7 @@
 //! constructions, filtered = interval first, exact on doubt) without the
 //! template parameters.
 
+pub mod apollonius;
 mod bbox;
 pub mod construct;
 mod exact;
