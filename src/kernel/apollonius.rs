@@ -200,7 +200,7 @@ mod tests {
         for trial in 0..5000 {
             let c = Point::new(rng.gen_range(-10.0..10.0), rng.gen_range(-10.0..10.0));
             let r = rng.gen_range(0.2..5.0);
-            let ts = [rng.gen_range(0.0..2.1), rng.gen_range(2.1..4.2), rng.gen_range(4.2..6.28)];
+            let ts = [rng.gen_range(0.0..2.1), rng.gen_range(2.1..4.2), rng.gen_range(4.2..6.2)];
             let kinds = [rng.gen_range(0..4), rng.gen_range(0..4), rng.gen_range(0..4)];
             let sites = [0, 1, 2].map(|i| site_at(c, r, ts[i], kinds[i], &mut rng));
             let disks = tangent_disks(sites);
