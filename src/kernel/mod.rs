@@ -18,6 +18,7 @@
 
 pub mod apollonius;
 mod bbox;
+pub mod bisector;
 pub mod construct;
 mod exact;
 pub mod growing_disk;
