@@ -49,7 +49,7 @@ fn focal_sign(s: &Site, inside_circle: bool) -> Option<f64> {
 /// disks that lie inside each nested circle when `inside` says so (ignored
 /// for other sites). A hyperbola whose focal difference is zero is a line.
 pub fn conic_kind(a: &Site, b: &Site, inside: [bool; 2]) -> ConicKind {
-    let focal_k = |s: &Site, inside: bool| match *s {
+    let focal_k = |s: &Site| match *s {
         Site::Circle { r, outside: true, .. } => -r,
         // Nested: ρ = R − |c − o| (disk inside) or |c − o| + R (circle inside).
         Site::Circle { r, outside: false, .. } => r,
@@ -59,7 +59,7 @@ pub fn conic_kind(a: &Site, b: &Site, inside: [bool; 2]) -> ConicKind {
         (None, None) => ConicKind::Line,
         (Some(_), None) | (None, Some(_)) => ConicKind::Parabola,
         (Some(ea), Some(eb)) if ea == eb => {
-            if focal_k(a, inside[0]) == focal_k(b, inside[1]) {
+            if focal_k(a) == focal_k(b) {
                 ConicKind::Line
             } else {
                 ConicKind::Hyperbola
