@@ -250,6 +250,39 @@ impl Element {
         }
     }
 
+    /// The arc-length fraction in [0, 1] of the element's point nearest to
+    /// `p` along its own parametrisation (the projection for a segment, the
+    /// angle for an arc), clamped to the element.
+    pub fn param_of(&self, p: Point) -> f64 {
+        match self {
+            Element::Segment(s) => crate::kernel::construct::project_param(s.a, s.b, p).clamp(0.0, 1.0),
+            Element::Arc(a) => {
+                let (u, v) = (a.a - a.center, p - a.center);
+                let mut ang = u.cross(v).atan2(u.dot(v));
+                let sweep = a.sweep();
+                // Measure in the direction of travel, in [0, 2π).
+                if sweep < 0.0 {
+                    ang = -ang;
+                }
+                if ang < 0.0 {
+                    ang += std::f64::consts::TAU;
+                }
+                let t = ang / sweep.abs();
+                if t > 1.0 {
+                    // Past the end: the nearer end by angle.
+                    let past = ang - sweep.abs();
+                    if past < std::f64::consts::TAU - ang {
+                        1.0
+                    } else {
+                        0.0
+                    }
+                } else {
+                    t
+                }
+            }
+        }
+    }
+
     /// Point at arc-length fraction `t` in [0, 1] along the element.
     pub fn point_at(&self, t: f64) -> Point {
         match self {
@@ -352,6 +385,17 @@ mod tests {
             // Each y-monotone piece lies in one half: left or right of the centre.
             let m = Point::new(mid.cos(), mid.sin());
             assert!(s.x * m.x >= -1e-12 && e.x * m.x >= -1e-12, "{s:?} {e:?} {m:?}");
+        }
+    }
+
+    #[test]
+    fn param_of_inverts_point_at() {
+        for bulge in [0.0, 0.3, -0.7, 2.5, -4.0] {
+            let e = Element::from_bulge(Point::new(1.0, 2.0), Point::new(-3.0, 0.5), bulge);
+            for k in 0..=20 {
+                let t = k as f64 / 20.0;
+                assert!((e.param_of(e.point_at(t)) - t).abs() < 1e-12, "bulge {bulge}, t {t}");
+            }
         }
     }
 

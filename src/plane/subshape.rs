@@ -1,0 +1,315 @@
+//! Subshapes of the divide step (thesis 2.2.1, Definitions 2.2.1–2.2.2,
+//! Figure 2.1).
+//!
+//! A maximal disk D with footpoints f₁ … f_k (in boundary order) cuts a
+//! (sub)shape into k subshapes. Subshape i runs along the boundary from f_i
+//! to f_{i+1} and returns along D's circle, counter-clockwise around D's
+//! centre, the far way round: it contains all of D, so its medial axis ends
+//! at D's centre, where the k partial axes are glued (conquer step).
+//!
+//! A subshape is a cyclic list of pieces: chains of original boundary
+//! (ranges of positions on one loop, never copies of elements) and
+//! auxiliary arcs (a disk id; the arc's ends are the ends of the
+//! neighbouring chains). A chain from a position to itself is a single
+//! point: a footpoint shared by two disks, like a reflex vertex between two
+//! auxiliary arcs (the thesis's zero-length arcs).
+
+use crate::kernel::Point;
+use crate::shape::{Element, Shape2d, Vertex};
+
+/// A position on the original boundary: element `element` of loop
+/// `loop_index` (as in [`Shape2d::loops`]) at arc-length fraction `t` ∈ [0, 1].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BoundaryPos {
+    /// Loop index.
+    pub loop_index: usize,
+    /// Element index within the loop.
+    pub element: usize,
+    /// Fraction along the element.
+    pub t: f64,
+}
+
+impl BoundaryPos {
+    /// The point at this position.
+    pub fn point(&self, shape: &Shape2d) -> Point {
+        let e = shape.loops()[self.loop_index].element(self.element);
+        match self.t {
+            0.0 => e.start(),
+            1.0 => e.end(),
+            t => e.point_at(t),
+        }
+    }
+}
+
+/// One piece of a subshape's boundary, in travel order (interior on the left).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Piece {
+    /// Original boundary from `from` forwards along its loop to `to`
+    /// (possibly passing the loop's element 0).
+    Chain {
+        /// Start.
+        from: BoundaryPos,
+        /// End (equal to `from`: a single point).
+        to: BoundaryPos,
+    },
+    /// An arc of the circle of disk `disk` (an index into the caller's list
+    /// of dividing disks), counter-clockwise from the end of the previous
+    /// piece to the start of the next.
+    Aux {
+        /// Which dividing disk.
+        disk: usize,
+    },
+}
+
+/// A dividing disk as subshapes see it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cut {
+    /// Centre, model units.
+    pub center: Point,
+    /// Radius, model units.
+    pub radius: f64,
+}
+
+/// A subshape: a closed cyclic list of pieces.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Subshape {
+    /// The pieces in travel order.
+    pub pieces: Vec<Piece>,
+}
+
+/// Where a position lies along a chain starting at `from`: (elements
+/// after `from.element`, fraction), comparable lexicographically. `None`
+/// on another loop.
+fn along(shape: &Shape2d, from: BoundaryPos, p: BoundaryPos) -> Option<(usize, f64)> {
+    if p.loop_index != from.loop_index {
+        return None;
+    }
+    let n = shape.loops()[p.loop_index].len();
+    let mut d = (p.element + n - from.element) % n;
+    if d == 0 && p.t < from.t {
+        d = n;
+    }
+    Some((d, p.t))
+}
+
+impl Subshape {
+    /// The whole of loop `loop_index` as one chain (a simply connected shape
+    /// before any cut).
+    pub fn whole_loop(shape: &Shape2d, loop_index: usize) -> Subshape {
+        let n = shape.loops()[loop_index].len();
+        let from = BoundaryPos { loop_index, element: 0, t: 0.0 };
+        let to = BoundaryPos { loop_index, element: n - 1, t: 1.0 };
+        Subshape { pieces: vec![Piece::Chain { from, to }] }
+    }
+
+    /// The chain piece holding `p` and where along it, if any.
+    fn locate(&self, shape: &Shape2d, p: BoundaryPos) -> Option<(usize, (usize, f64))> {
+        self.pieces.iter().enumerate().find_map(|(j, piece)| match *piece {
+            Piece::Chain { from, to } => {
+                let (k, end) = (along(shape, from, p)?, along(shape, from, to)?);
+                (k >= (0, from.t) && k <= end).then_some((j, k))
+            }
+            Piece::Aux { .. } => None,
+        })
+    }
+
+    /// Cuts this subshape by disk `disk` touching it at `feet` (positions on
+    /// its chains, any order): one subshape per footpoint, each starting at
+    /// a footpoint, in boundary order. `None` when a footpoint lies on none
+    /// of the chains.
+    pub fn split(&self, shape: &Shape2d, disk: usize, feet: &[BoundaryPos]) -> Option<Vec<Subshape>> {
+        let mut at: Vec<(usize, (usize, f64), BoundaryPos)> =
+            feet.iter().map(|&f| self.locate(shape, f).map(|(j, k)| (j, k, f))).collect::<Option<_>>()?;
+        at.sort_by(|a, b| (a.0, a.1 .0).cmp(&(b.0, b.1 .0)).then(a.1 .1.total_cmp(&b.1 .1)));
+        let m = self.pieces.len();
+        let chain = |j: usize| match self.pieces[j] {
+            Piece::Chain { from, to } => (from, to),
+            Piece::Aux { .. } => unreachable!("footpoints are located on chains"),
+        };
+        let k = at.len();
+        let mut out = Vec::with_capacity(k);
+        for i in 0..k {
+            let (j0, key0, f0) = at[i];
+            let (j1, key1, f1) = at[(i + 1) % k];
+            let mut pieces = Vec::new();
+            if j0 == j1 && (key0.0, key0.1) <= (key1.0, key1.1) && (k > 1 || i + 1 < k) {
+                pieces.push(Piece::Chain { from: f0, to: f1 });
+            } else {
+                pieces.push(Piece::Chain { from: f0, to: chain(j0).1 });
+                let mut j = (j0 + 1) % m;
+                while j != j1 {
+                    pieces.push(self.pieces[j]);
+                    j = (j + 1) % m;
+                }
+                pieces.push(Piece::Chain { from: chain(j1).0, to: f1 });
+            }
+            pieces.push(Piece::Aux { disk });
+            out.push(Subshape { pieces });
+        }
+        Some(out)
+    }
+
+    /// The boundary as a closed bulge loop (vertices in travel order), for
+    /// drawing and for checks: chains contribute their (partial) elements,
+    /// auxiliary arcs the counter-clockwise arc of their disk.
+    pub fn to_vertices(&self, shape: &Shape2d, cuts: &[Cut]) -> Vec<Vertex> {
+        let m = self.pieces.len();
+        let start = |j: usize| match self.pieces[j % m] {
+            Piece::Chain { from, .. } => Some(from.point(shape)),
+            Piece::Aux { .. } => None,
+        };
+        let end = |j: usize| match self.pieces[j % m] {
+            Piece::Chain { to, .. } => Some(to.point(shape)),
+            Piece::Aux { .. } => None,
+        };
+        let mut out = Vec::new();
+        for (j, piece) in self.pieces.iter().enumerate() {
+            match *piece {
+                Piece::Chain { from, to } => {
+                    let lp = &shape.loops()[from.loop_index];
+                    let n = lp.len();
+                    let Some((steps, _)) = along(shape, from, to) else { continue };
+                    for s in 0..=steps {
+                        let e = (from.element + s) % n;
+                        let ta = if s == 0 { from.t } else { 0.0 };
+                        let tb = if s == steps { to.t } else { 1.0 };
+                        if tb <= ta {
+                            continue;
+                        }
+                        let pos = BoundaryPos { loop_index: from.loop_index, element: e, t: ta };
+                        let bulge = match lp.element(e) {
+                            Element::Segment(_) => 0.0,
+                            Element::Arc(a) => (a.sweep() * (tb - ta) / 4.0).tan(),
+                        };
+                        out.push(Vertex { p: pos.point(shape), bulge });
+                    }
+                }
+                Piece::Aux { disk } => {
+                    let c = cuts[disk];
+                    let (Some(a), Some(b)) = (end(j + m - 1), start(j + 1)) else { continue };
+                    let (u, v) = (a - c.center, b - c.center);
+                    let mut sweep = u.cross(v).atan2(u.dot(v));
+                    if sweep <= 0.0 {
+                        sweep += std::f64::consts::TAU;
+                    }
+                    out.push(Vertex { p: a, bulge: (sweep / 4.0).tan() });
+                }
+            }
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::plane::DiskFinder;
+    use crate::shape::{samples, ElementRef, Loop, ShapeOptions};
+    use rand::{Rng, SeedableRng};
+
+    fn area(v: Vec<Vertex>) -> f64 {
+        Loop::new(v).signed_area()
+    }
+
+    /// Cuts shapes again and again with maximal disks grown from random
+    /// points of random subshapes' chains, and checks what a cut must keep:
+    /// every subshape closes up on the disk's circle, the areas add up (each
+    /// of the k subshapes holds the whole disk), and the chains still cover
+    /// the original boundary exactly once.
+    #[test]
+    fn cutting_keeps_area_and_boundary() {
+        let mut rng = rand::rngs::SmallRng::seed_from_u64(4);
+        let mut cuts_done = 0;
+        for (si, loops) in
+            [samples::flower_arcs(60), samples::star_polygon(40, 3), samples::flower_arcs(300)].into_iter().enumerate()
+        {
+            let shape = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).unwrap();
+            let finder = DiskFinder::new(&shape);
+            let mut parts = vec![Subshape::whole_loop(&shape, 0)];
+            let mut cuts: Vec<Cut> = Vec::new();
+            let total = shape.area();
+            let mut expected_extra = 0.0;
+            for _ in 0..40 {
+                let which = rng.gen_range(0..parts.len());
+                let chains: Vec<(BoundaryPos, BoundaryPos)> = parts[which]
+                    .pieces
+                    .iter()
+                    .filter_map(|p| match *p {
+                        Piece::Chain { from, to } if from != to => Some((from, to)),
+                        _ => None,
+                    })
+                    .collect();
+                if chains.is_empty() {
+                    continue;
+                }
+                let (from, to) = chains[rng.gen_range(0..chains.len())];
+                // A random inner point of the chain's first element.
+                let hi = if to.element == from.element && to.t > from.t { to.t } else { 1.0 };
+                if hi - from.t < 1e-6 {
+                    continue;
+                }
+                let t = rng.gen_range(from.t..hi);
+                let d = finder.max_disk(ElementRef { loop_index: 0, element: from.element }, t);
+                if d.radius == 0.0 || d.leaf_arc || d.footpoints.len() < 2 {
+                    continue;
+                }
+                let feet: Vec<BoundaryPos> = d
+                    .footpoints
+                    .iter()
+                    .map(|f| {
+                        let e = shape.loops()[0].element(f.element.element);
+                        let t = if f.element.element == from.element && f.point == d.footpoints[0].point {
+                            t
+                        } else {
+                            e.param_of(f.point)
+                        };
+                        BoundaryPos { loop_index: 0, element: f.element.element, t }
+                    })
+                    .collect();
+                let disk = cuts.len();
+                cuts.push(Cut { center: d.center, radius: d.radius });
+                let Some(children) = parts[which].split(&shape, disk, &feet) else {
+                    cuts.pop();
+                    continue;
+                };
+                assert_eq!(children.len(), feet.len());
+                let parent_area = area(parts[which].to_vertices(&shape, &cuts));
+                let child_areas: f64 = children.iter().map(|c| area(c.to_vertices(&shape, &cuts))).sum();
+                let disk_area = std::f64::consts::PI * d.radius * d.radius;
+                let want = parent_area + (feet.len() - 1) as f64 * disk_area;
+                assert!(
+                    (child_areas - want).abs() < 1e-9 * total.abs().max(1.0),
+                    "shape {si}: {child_areas} vs {want}"
+                );
+                expected_extra += (feet.len() - 1) as f64 * disk_area;
+                for c in &children {
+                    // Each subshape's aux arc ends lie on the disk's circle.
+                    let v = c.to_vertices(&shape, &cuts);
+                    let last = v.last().unwrap();
+                    assert!((last.p.dist(d.center) - d.radius).abs() < 1e-9, "shape {si}");
+                }
+                parts.splice(which..=which, children);
+                cuts_done += 1;
+            }
+            let sum: f64 = parts.iter().map(|p| area(p.to_vertices(&shape, &cuts))).sum();
+            assert!((sum - (total + expected_extra)).abs() < 1e-8 * (total + expected_extra), "shape {si}");
+            // The chains cover the original boundary once: their lengths add up.
+            let mut len = 0.0;
+            for p in &parts {
+                for piece in &p.pieces {
+                    if let Piece::Chain { from, to } = *piece {
+                        let chain = Subshape { pieces: vec![Piece::Chain { from, to }] };
+                        let v = chain.to_vertices(&shape, &cuts);
+                        for (k, x) in v.iter().enumerate() {
+                            let next = if k + 1 < v.len() { v[k + 1].p } else { to.point(&shape) };
+                            len += Element::from_bulge(x.p, next, x.bulge).length();
+                        }
+                    }
+                }
+            }
+            let perimeter = shape.loops()[0].perimeter();
+            assert!((len - perimeter).abs() < 1e-9 * perimeter, "shape {si}: {len} vs {perimeter}");
+        }
+        assert!(cuts_done > 60, "{cuts_done}");
+    }
+}
