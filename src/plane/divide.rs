@@ -17,6 +17,7 @@
 
 use super::maxdisk::DiskFinder;
 use super::subshape::{BoundaryPos, Cut, Piece, Subshape};
+use crate::shape::samples::Mix;
 use crate::shape::{ElementRef, JointKind, Shape2d};
 
 /// Attempts with different random points before a subshape counts as stuck.
@@ -57,27 +58,6 @@ pub fn original_parts(shape: &Shape2d, s: &Subshape) -> usize {
         .sum()
 }
 
-/// A small deterministic generator (SplitMix64) for the random choices.
-struct Rand(u64);
-
-impl Rand {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-
-    fn below(&mut self, n: usize) -> usize {
-        (self.next() % n as u64) as usize
-    }
-
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
 /// A seed for a subshape: its first piece and the caller's seed, so that
 /// the choice does not depend on the order in which subshapes are cut.
 fn seed_of(seed: u64, s: &Subshape) -> u64 {
@@ -94,15 +74,8 @@ fn seed_of(seed: u64, s: &Subshape) -> u64 {
 
 /// A random point on a random original part of `s`: (element, fraction,
 /// position), at a reflex end of the part when it has one.
-fn pick_point(shape: &Shape2d, s: &Subshape, rng: &mut Rand) -> Option<(ElementRef, f64, BoundaryPos)> {
-    let chains: Vec<(BoundaryPos, BoundaryPos)> = s
-        .pieces
-        .iter()
-        .filter_map(|p| match *p {
-            Piece::Chain { from, to } if from != to => Some((from, to)),
-            _ => None,
-        })
-        .collect();
+fn pick_point(shape: &Shape2d, s: &Subshape, rng: &mut Mix) -> Option<(ElementRef, f64, BoundaryPos)> {
+    let chains: Vec<(BoundaryPos, BoundaryPos)> = s.chains().collect();
     if chains.is_empty() {
         return None;
     }
@@ -135,7 +108,7 @@ fn pick_point(shape: &Shape2d, s: &Subshape, rng: &mut Rand) -> Option<(ElementR
     } else if reflex_end {
         1.0
     } else {
-        lo + (hi - lo) * (0.1 + 0.8 * rng.unit())
+        lo + (hi - lo) * (0.1 + 0.8 * rng.next())
     };
     Some((at, t, BoundaryPos { loop_index: from.loop_index, element, t }))
 }
@@ -154,7 +127,7 @@ pub fn decompose(shape: &Shape2d, seed: u64) -> Decomposition {
             out.leaves.push(s);
             continue;
         }
-        let mut rng = Rand(seed_of(seed, &s));
+        let mut rng = Mix(seed_of(seed, &s));
         let mut done = false;
         for _ in 0..ATTEMPTS {
             let Some((at, t, pos)) = pick_point(shape, &s, &mut rng) else { continue };

@@ -102,6 +102,14 @@ impl Subshape {
         Subshape { pieces: vec![Piece::Chain { from, to }] }
     }
 
+    /// The chains that are more than a point, as (from, to).
+    pub fn chains(&self) -> impl Iterator<Item = (BoundaryPos, BoundaryPos)> + '_ {
+        self.pieces.iter().filter_map(|p| match *p {
+            Piece::Chain { from, to } if from != to => Some((from, to)),
+            _ => None,
+        })
+    }
+
     /// The chain piece holding `p` and where along it, if any.
     fn locate(&self, shape: &Shape2d, p: BoundaryPos) -> Option<(usize, (usize, f64))> {
         self.pieces.iter().enumerate().find_map(|(j, piece)| match *piece {
@@ -231,14 +239,7 @@ mod tests {
             let mut expected_extra = 0.0;
             for _ in 0..40 {
                 let which = rng.gen_range(0..parts.len());
-                let chains: Vec<(BoundaryPos, BoundaryPos)> = parts[which]
-                    .pieces
-                    .iter()
-                    .filter_map(|p| match *p {
-                        Piece::Chain { from, to } if from != to => Some((from, to)),
-                        _ => None,
-                    })
-                    .collect();
+                let chains: Vec<(BoundaryPos, BoundaryPos)> = parts[which].chains().collect();
                 if chains.is_empty() {
                     continue;
                 }
