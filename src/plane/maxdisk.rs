@@ -71,6 +71,44 @@ impl<'s> DiskFinder<'s> {
         self.shape.tolerance()
     }
 
+    /// The shape the finder indexes.
+    pub fn shape(&self) -> &'s Shape2d {
+        self.shape
+    }
+
+    /// The element nearest to `p` and its distance.
+    pub fn nearest(&self, p: Point) -> Option<(ElementRef, f64)> {
+        let found =
+            self.tree.min_by_bound(|b| Some(b.distance_to(p)), |gid, _| Some(self.element(gid).1.closest_point(p).0));
+        found.map(|(gid, d)| (self.element(gid).0, d))
+    }
+
+    /// Where the circle (`c`, `r`) of an empty disk touches the boundary:
+    /// every element within the contact tolerance of it, at its point
+    /// nearest to `c`, merged where elements meet; in loop and element order.
+    pub fn touching(&self, c: Point, r: f64) -> Vec<Footpoint> {
+        let tol = self.contact_tolerance();
+        let mut near: Vec<(usize, Point)> = Vec::new();
+        let reach = Point::new(r + tol, r + tol);
+        self.tree.visit_overlapping::<()>(&crate::kernel::BBox { min: c - reach, max: c + reach }, |gid| {
+            if self.tree.item_box(gid).distance_to(c) <= r + tol {
+                let (d, q) = self.element(gid).1.closest_point(c);
+                if d <= r + tol {
+                    near.push((gid, q));
+                }
+            }
+            std::ops::ControlFlow::Continue(())
+        });
+        near.sort_by_key(|&(gid, _)| gid);
+        let mut out: Vec<Footpoint> = Vec::new();
+        for (gid, q) in near {
+            if out.iter().all(|f| f.point.dist(q) > tol) {
+                out.push(Footpoint { element: self.element(gid).0, point: q });
+            }
+        }
+        out
+    }
+
     fn element(&self, gid: usize) -> (ElementRef, Element) {
         let l = self.offsets.partition_point(|&o| o <= gid) - 1;
         let r = ElementRef { loop_index: l, element: gid - self.offsets[l] };

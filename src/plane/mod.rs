@@ -9,6 +9,7 @@
 
 pub mod divide;
 pub mod maxdisk;
+pub mod maxdisk_star;
 pub mod subshape;
 
 pub use maxdisk::{DiskFinder, Footpoint, MaxDisk};
