@@ -11,11 +11,12 @@
 //! subshape itself, so the result does not depend on the thread count.
 //!
 //! A redundant cut (two footpoints, one subshape as large as before) is
-//! replaced by `maxdisk*` ([`super::maxdisk_star`]). Not yet here: leaf
-//! arcs (Observation 5), multi-branching and reflex clusters (2.2.2.2), the
+//! replaced by `maxdisk*` ([`super::maxdisk_star`]); a leaf arc's own circle
+//! (Observation 5) cuts the arc off as a leaf. Not yet here: multi-branching and reflex clusters (2.2.2.2), the
 //! reflex and convex termination rules and the base-case axes (2.2.2–2.2.3).
 //! Subshapes that could not be divided are returned as such, never dropped
-//! (about 1 in 10 on smooth shapes, 1 in 40 on polygons, today).
+//! (today about 1 in 140 leaves on smooth biarc shapes and 1 in 80 on
+//! random star polygons).
 
 use super::maxdisk::{DiskFinder, Footpoint};
 use super::maxdisk_star::slide_to_third;
@@ -77,8 +78,9 @@ fn seed_of(seed: u64, s: &Subshape) -> u64 {
 }
 
 /// A random point on a random original part of `s`: (element, fraction,
-/// position), at a reflex end of the part when it has one.
-fn pick_point(shape: &Shape2d, s: &Subshape, rng: &mut Mix) -> Option<(ElementRef, f64, BoundaryPos)> {
+/// position, the part's fraction range), at a reflex end of the part when
+/// it has one.
+fn pick_point(shape: &Shape2d, s: &Subshape, rng: &mut Mix) -> Option<(ElementRef, f64, BoundaryPos, (f64, f64))> {
     let chains: Vec<(BoundaryPos, BoundaryPos)> = s.chains().collect();
     if chains.is_empty() {
         return None;
@@ -114,7 +116,7 @@ fn pick_point(shape: &Shape2d, s: &Subshape, rng: &mut Mix) -> Option<(ElementRe
     } else {
         lo + (hi - lo) * (0.1 + 0.8 * rng.next())
     };
-    Some((at, t, BoundaryPos { loop_index: from.loop_index, element, t }))
+    Some((at, t, BoundaryPos { loop_index: from.loop_index, element, t }, (lo, hi)))
 }
 
 /// Cuts the shape's outer loop (holes arrive with the Voronoi issue) down to
@@ -134,9 +136,40 @@ pub fn decompose(shape: &Shape2d, seed: u64) -> Decomposition {
         let mut rng = Mix(seed_of(seed, &s));
         let mut done = false;
         for _ in 0..ATTEMPTS {
-            let Some((at, t, pos)) = pick_point(shape, &s, &mut rng) else { continue };
+            let Some((at, t, pos, (lo, hi))) = pick_point(shape, &s, &mut rng) else { continue };
             let d = finder.max_disk(at, t);
-            if d.radius == 0.0 || d.leaf_arc || d.footpoints.len() < 2 {
+            if d.leaf_arc {
+                // The disk is the arc's own circle (Observation 5): cut the
+                // whole arc off as a leaf, together with every other part
+                // the circle touches.
+                if lo > 0.0 || hi < 1.0 {
+                    continue;
+                }
+                let ends = [BoundaryPos { t: 0.0, ..pos }, BoundaryPos { t: 1.0, ..pos }];
+                let (pa, pb) = (ends[0].point(shape), ends[1].point(shape));
+                let tol = finder.contact_tolerance();
+                let mut feet = ends.to_vec();
+                for f in finder.touching(d.center, d.radius) {
+                    if f.element != at && f.point.dist(pa) > tol && f.point.dist(pb) > tol {
+                        let e = shape.loops()[f.element.loop_index].element(f.element.element);
+                        feet.push(BoundaryPos {
+                            loop_index: f.element.loop_index,
+                            element: f.element.element,
+                            t: e.param_of(f.point),
+                        });
+                    }
+                }
+                let disk = out.cuts.len();
+                let Some(children) = s.split(shape, disk, &feet) else { continue };
+                if children.iter().any(|c| original_parts(shape, c) >= parts) {
+                    continue;
+                }
+                out.cuts.push(Cut { center: d.center, radius: d.radius });
+                todo.extend(children);
+                done = true;
+                break;
+            }
+            if d.radius == 0.0 || d.footpoints.len() < 2 {
                 continue;
             }
             let to_pos = |f: &Footpoint| {
@@ -163,10 +196,10 @@ pub fn decompose(shape: &Shape2d, seed: u64) -> Decomposition {
                 else {
                     continue;
                 };
-                // Only an empty disk touching three or more parts divides.
+                // Only an empty disk that touches the boundary can cut.
                 let touch = finder.touching(c, r);
                 let empty = finder.nearest(c).is_some_and(|(_, dist)| (dist - r).abs() <= finder.contact_tolerance());
-                if touch.len() < 3 || r <= finder.contact_tolerance() || !empty {
+                if touch.len() < 2 || r <= finder.contact_tolerance() || !empty {
                     continue;
                 }
                 let feet: Vec<BoundaryPos> = touch.iter().map(to_pos).collect();
@@ -201,7 +234,7 @@ mod tests {
 
     #[test]
     fn smooth_shapes_divide_down_to_leaves_with_maximal_disks() {
-        for n in [20, 100, 400] {
+        for n in [20, 100, 400, 2000] {
             let shape = Shape2d::from_bulge_loops(samples::flower_arcs(n), &ShapeOptions::default()).unwrap();
             let d = decompose(&shape, 7);
             let tol = 1e-9 * shape.bbox().diagonal();
@@ -212,8 +245,9 @@ mod tests {
             assert!(d.leaves.iter().all(|l| original_parts(&shape, l) <= LEAF_PARTS));
             // Leaves cover the shape: each cut adds (k − 1) disks of area.
             assert!(d.cuts.len() >= n / 4, "{n}: only {} cuts", d.cuts.len());
-            // Leaf arcs and some redundant cuts still get stuck; they must be few.
-            assert!(d.stuck.len() * 4 <= d.leaves.len() + 4, "{n}: {} stuck of {}", d.stuck.len(), d.leaves.len());
+            // A few subshapes still need the rules not built yet (multi-branching,
+            // reflex clusters); they must stay rare.
+            assert!(d.stuck.len() * 50 <= d.leaves.len() + 10, "{n}: {} stuck of {}", d.stuck.len(), d.leaves.len());
             // Same seed, same result.
             let again = decompose(&shape, 7);
             assert_eq!(again.cuts, d.cuts);
@@ -225,7 +259,7 @@ mod tests {
         for seed in 0..10 {
             let shape = Shape2d::from_bulge_loops(samples::star_polygon(60, seed), &ShapeOptions::default()).unwrap();
             let d = decompose(&shape, seed);
-            assert!(d.stuck.len() * 10 <= d.leaves.len(), "{seed}: {} stuck of {}", d.stuck.len(), d.leaves.len());
+            assert!(d.stuck.len() <= 2, "{seed}: {} stuck of {}", d.stuck.len(), d.leaves.len());
             let tol = 1e-9 * shape.bbox().diagonal();
             for c in &d.cuts {
                 assert!((boundary_distance(&shape, c.center) - c.radius).abs() <= tol, "{c:?}");

@@ -68,8 +68,10 @@ fn param_on(a: &Site, c: Point, touch: Point) -> f64 {
 /// Slides the disk (`c`, `r`) touching `fa` and `fb` along their bisector,
 /// away from `junction` (a point between the two footpoints on the side
 /// the redundant cut came from), to the first disk that touches a third
-/// element. Returns its centre and radius, or `None` if the bisector ends
-/// (no tangent disk) or leaves the shape first.
+/// element or whose contact with `fa`'s or `fb`'s element reaches that
+/// element's end (where the pair defining the axis changes). Returns its
+/// centre and radius, or `None` if the bisector ends (no tangent disk)
+/// first.
 pub fn slide_to_third(
     finder: &DiskFinder,
     fa: &Footpoint,
@@ -81,10 +83,17 @@ pub fn slide_to_third(
     let (sa, sb) = (site_of(finder, fa), site_of(finder, fb));
     let u0 = param_on(&sa, c, fa.point);
     let empty_tol = 1e-12 * finder.shape().bbox().diagonal();
+    let shape = finder.shape();
+    let element = |f: &Footpoint| shape.loops()[f.element.loop_index].element(f.element.element);
+    let (ea, eb) = (element(fa), element(fb));
+    let on = |e: &Element, q: Point| e.closest_point(q).0 <= finder.contact_tolerance();
+    // A disk counts while it is empty and still touches both elements
+    // (not only their supporting lines or circles).
     let empty = |u: f64| -> Option<(Point, f64, bool)> {
         let (c, r) = bisector_point(&sa, &sb, u)?;
         let (_, d) = finder.nearest(c)?;
-        Some((c, r, d >= r - empty_tol))
+        let touches = on(&ea, sa.contact(c, r)) && on(&eb, sb.contact(c, r));
+        Some((c, r, d >= r - empty_tol && touches))
     };
     // The direction that moves the centre away from the junction.
     let h0 = match sa {
