@@ -1,7 +1,9 @@
 //! Maximal-disk queries: time per disk at random boundary points of sample
-//! shapes of 10^3..10^6 elements, single-threaded, and the index build.
+//! shapes of 10^3..10^6 elements, single-threaded, and the index build;
+//! then the divide step (all cuts down to leaves) per element.
 //! `cargo bench --bench maxdisk`. Figures go to docs/PERFORMANCE.md.
 
+use medax::plane::divide::decompose;
 use medax::plane::DiskFinder;
 use medax::shape::{samples, ElementRef, Shape2d, ShapeOptions, Vertex};
 use std::time::Instant;
@@ -41,6 +43,29 @@ fn main() {
             let per = t.elapsed().as_secs_f64() * 1e6 / queries as f64;
             std::hint::black_box(sum);
             println!("| {name} | {} | {build:.3} s | {per:.2} |", s.element_count());
+        }
+    }
+    println!();
+    println!("| divide step | n | cuts | leaves | stuck | time | µs per element |");
+    println!("|---|---:|---:|---:|---:|---:|---:|");
+    // The divide step is not tuned yet (see PERFORMANCE.md): the star
+    // stops at 10^4 to keep the run short.
+    for (name, gen, sizes) in
+        [(kinds[0].0, kinds[0].1, &[1_000, 10_000, 100_000][..]), (kinds[1].0, kinds[1].1, &[1_000, 10_000][..])]
+    {
+        for &n in sizes {
+            let s = Shape2d::from_bulge_loops(gen(n), &ShapeOptions::default()).expect("samples are valid");
+            let t = Instant::now();
+            let d = decompose(&s, 1);
+            let dt = t.elapsed().as_secs_f64();
+            let m = s.element_count();
+            println!(
+                "| {name} | {m} | {} | {} | {} | {dt:.3} s | {:.2} |",
+                d.cuts.len(),
+                d.leaves.len(),
+                d.stuck.len(),
+                dt * 1e6 / m as f64
+            );
         }
     }
 }
