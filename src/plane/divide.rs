@@ -6,21 +6,23 @@
 //! maximal disk there and cuts at its footpoints. A cut is kept when every
 //! resulting subshape has fewer original parts than the one cut (a dividing
 //! disk, Definition 2.2.1); otherwise another point is tried. Subshapes
-//! with at most three original parts are leaves. Independent subshapes are
-//! cut in parallel; every random choice is derived from the seed and the
-//! subshape itself, so the result does not depend on the thread count.
+//! with at most three original parts are leaves. Every random choice is
+//! derived from the seed and the subshape itself, so the result depends on
+//! nothing else (subshapes are cut one after another for now; they are
+//! independent, which is what parallel cutting will use).
 //!
 //! A redundant cut (two footpoints, one subshape as large as before) is
-//! replaced by `maxdisk*` ([`super::maxdisk_star`]); a leaf arc's own circle
-//! (Observation 5) cuts the arc off as a leaf. Not yet here: multi-branching and reflex clusters (2.2.2.2), the
-//! reflex and convex termination rules and the base-case axes (2.2.2–2.2.3).
-//! Subshapes that could not be divided are returned as such, never dropped
-//! (today about 1 in 140 leaves on smooth biarc shapes and 1 in 80 on
-//! random star polygons).
+//! replaced by `maxdisk*` ([`super::maxdisk_star`]); a leaf arc's own
+//! circle (Observation 5) cuts the arc off as a leaf. Not yet here:
+//! multi-branching and reflex clusters (2.2.2.2), the reflex and convex
+//! termination rules and the base-case axes (2.2.2–2.2.3). Subshapes that
+//! could not be divided are returned as such, never dropped (today about 1
+//! in 140 leaves on smooth biarc shapes and 1 in 80 on random star
+//! polygons).
 
-use super::maxdisk::{DiskFinder, Footpoint};
+use super::maxdisk::{DiskFinder, Footpoint, MaxDisk};
 use super::maxdisk_star::slide_to_third;
-use super::subshape::{BoundaryPos, Cut, Piece, Subshape};
+use super::subshape::{BoundaryPos, ChainParts, Cut, Piece, Subshape};
 use crate::kernel::Point;
 use crate::shape::samples::Mix;
 use crate::shape::{ElementRef, JointKind, Shape2d};
@@ -38,29 +40,15 @@ pub struct Decomposition {
     pub cuts: Vec<Cut>,
     /// Subshapes with at most three original parts.
     pub leaves: Vec<Subshape>,
-    /// Subshapes no attempted disk divided (they need `maxdisk*`).
+    /// Subshapes no attempted disk divided (they need the rules not built
+    /// yet: multi-branching, reflex clusters).
     pub stuck: Vec<Subshape>,
 }
 
 /// Number of original element parts in a subshape (a single-point chain
 /// counts as none).
 pub fn original_parts(shape: &Shape2d, s: &Subshape) -> usize {
-    s.pieces
-        .iter()
-        .map(|p| match *p {
-            Piece::Chain { from, to } if from != to => {
-                let n = shape.loops()[from.loop_index].len();
-                let mut steps = (to.element + n - from.element) % n;
-                if steps == 0 && to.t < from.t {
-                    steps = n;
-                }
-                // A chain ending at the very start of an element, or starting
-                // at the very end of one, does not use it.
-                steps + 1 - usize::from(to.t == 0.0 && steps > 0) - usize::from(from.t == 1.0 && steps > 0)
-            }
-            _ => 0,
-        })
-        .sum()
+    s.chains().map(|(from, to)| ChainParts::new(shape, from, to).len()).sum()
 }
 
 /// A seed for a subshape: its first piece and the caller's seed, so that
@@ -77,38 +65,26 @@ fn seed_of(seed: u64, s: &Subshape) -> u64 {
     h
 }
 
-/// A random point on a random original part of `s`: (element, fraction,
-/// position, the part's fraction range), at a reflex end of the part when
-/// it has one.
-fn pick_point(shape: &Shape2d, s: &Subshape, rng: &mut Mix) -> Option<(ElementRef, f64, BoundaryPos, (f64, f64))> {
+/// A random point on a random original part of `s`: the position and the
+/// part's fraction range, at a reflex end of the part when it has one.
+fn pick_point(shape: &Shape2d, s: &Subshape, rng: &mut Mix) -> Option<(BoundaryPos, (f64, f64))> {
     let chains: Vec<(BoundaryPos, BoundaryPos)> = s.chains().collect();
     if chains.is_empty() {
         return None;
     }
     let (from, to) = chains[rng.below(chains.len())];
-    let lp = &shape.loops()[from.loop_index];
-    let n = lp.len();
-    let mut steps = (to.element + n - from.element) % n;
-    if steps == 0 && to.t < from.t {
-        steps = n;
-    }
-    // Elements the chain only touches at an end point are not parts of it.
-    let first = usize::from(from.t == 1.0);
-    let last = steps - usize::from(to.t == 0.0 && steps > 0);
-    if first > last {
+    let parts = ChainParts::new(shape, from, to);
+    if parts.is_empty() {
         return None;
     }
-    let k = first + rng.below(last - first + 1);
-    let element = (from.element + k) % n;
-    let lo = if k == 0 { from.t } else { 0.0 };
-    let hi = if k == steps { to.t } else { 1.0 };
+    let (element, lo, hi) = parts.get(rng.below(parts.len()));
     if hi <= lo {
         return None;
     }
-    let at = ElementRef { loop_index: from.loop_index, element };
-    // A reflex vertex inside the part is where the thesis grows the disk.
-    let reflex_start = lo == 0.0 && shape.joint(from.loop_index, element) == JointKind::Reflex;
-    let reflex_end = hi == 1.0 && shape.joint(from.loop_index, (element + 1) % n) == JointKind::Reflex;
+    let l = from.loop_index;
+    let n = shape.loops()[l].len();
+    let reflex_start = lo == 0.0 && shape.joint(l, element) == JointKind::Reflex;
+    let reflex_end = hi == 1.0 && shape.joint(l, (element + 1) % n) == JointKind::Reflex;
     let t = if reflex_start && (!reflex_end || rng.below(2) == 0) {
         0.0
     } else if reflex_end {
@@ -116,7 +92,83 @@ fn pick_point(shape: &Shape2d, s: &Subshape, rng: &mut Mix) -> Option<(ElementRe
     } else {
         lo + (hi - lo) * (0.1 + 0.8 * rng.next())
     };
-    Some((at, t, BoundaryPos { loop_index: from.loop_index, element, t }, (lo, hi)))
+    Some((BoundaryPos { loop_index: l, element, t }, (lo, hi)))
+}
+
+/// The boundary position of a footpoint.
+fn position(shape: &Shape2d, f: &Footpoint) -> BoundaryPos {
+    let e = shape.loops()[f.element.loop_index].element(f.element.element);
+    BoundaryPos { loop_index: f.element.loop_index, element: f.element.element, t: e.param_of(f.point) }
+}
+
+/// The subshapes of `s` cut at `feet` by a disk that will get id `disk`,
+/// if every one of them has fewer original parts than `s` (`parts`).
+fn dividing(shape: &Shape2d, s: &Subshape, parts: usize, disk: usize, feet: &[BoundaryPos]) -> Option<Vec<Subshape>> {
+    let children = s.split(shape, disk, feet)?;
+    children.iter().all(|c| original_parts(shape, c) < parts).then_some(children)
+}
+
+/// Cuts `s` with the maximal disk `d` grown at `pos` (fraction range
+/// `lo..hi` of its part), or with what replaces it: the leaf arc's circle,
+/// or `maxdisk*` after a redundant cut. `None` when the disk does not divide.
+fn cut_with(
+    finder: &DiskFinder,
+    s: &Subshape,
+    parts: usize,
+    disk: usize,
+    d: &MaxDisk,
+    pos: BoundaryPos,
+    (lo, hi): (f64, f64),
+) -> Option<(Cut, Vec<Subshape>)> {
+    let shape = finder.shape();
+    let tol = finder.contact_tolerance();
+    if d.leaf_arc {
+        // The disk is the arc's own circle (Observation 5): cut the whole
+        // arc off as a leaf, with every other part the circle touches. A
+        // partial arc means its circle has cut here already.
+        if lo > 0.0 || hi < 1.0 {
+            return None;
+        }
+        let ends = [BoundaryPos { t: 0.0, ..pos }, BoundaryPos { t: 1.0, ..pos }];
+        let (pa, pb) = (ends[0].point(shape), ends[1].point(shape));
+        let own = d.footpoints[0].element;
+        let others = finder
+            .touching(d.center, d.radius)
+            .into_iter()
+            .filter(|f| f.element != own && f.point.dist(pa) > tol && f.point.dist(pb) > tol);
+        let feet: Vec<BoundaryPos> = ends.into_iter().chain(others.map(|f| position(shape, &f))).collect();
+        let children = dividing(shape, s, parts, disk, &feet)?;
+        return Some((Cut { center: d.center, radius: d.radius }, children));
+    }
+    if d.radius == 0.0 || d.footpoints.len() < 2 {
+        return None;
+    }
+    let feet: Vec<BoundaryPos> =
+        d.footpoints.iter().enumerate().map(|(i, f)| if i == 0 { pos } else { position(shape, f) }).collect();
+    let children = s.split(shape, disk, &feet)?;
+    let counts: Vec<usize> = children.iter().map(|c| original_parts(shape, c)).collect();
+    if counts.iter().all(|&c| c < parts) {
+        return Some((Cut { center: d.center, radius: d.radius }, children));
+    }
+    if d.footpoints.len() != 2 {
+        return None;
+    }
+    // A redundant cut: slide the disk away from where the two parts meet
+    // (on the side of the smaller subshape) to a disk touching a third part
+    // or where a contact reaches its element's end (maxdisk*).
+    let small = (0..children.len()).min_by_key(|&i| counts[i]).unwrap_or(0);
+    let ends: Vec<Point> = children[small].chains().flat_map(|(a, b)| [a.point(shape), b.point(shape)]).collect();
+    let junction = ends.iter().fold(Point::default(), |acc, &p| acc + p) * (1.0 / ends.len().max(1) as f64);
+    let (c, r) = slide_to_third(finder, &d.footpoints[0], &d.footpoints[1], d.center, d.radius, junction)?;
+    // Only an empty disk that touches the boundary can cut.
+    let touch = finder.touching(c, r);
+    let empty = finder.nearest(c).is_some_and(|(_, dist)| (dist - r).abs() <= tol);
+    if touch.len() < 2 || r <= tol || !empty {
+        return None;
+    }
+    let feet: Vec<BoundaryPos> = touch.iter().map(|f| position(shape, f)).collect();
+    let children = dividing(shape, s, parts, disk, &feet)?;
+    Some((Cut { center: c, radius: r }, children))
 }
 
 /// Cuts the shape's outer loop (holes arrive with the Voronoi issue) down to
@@ -134,90 +186,18 @@ pub fn decompose(shape: &Shape2d, seed: u64) -> Decomposition {
             continue;
         }
         let mut rng = Mix(seed_of(seed, &s));
-        let mut done = false;
-        for _ in 0..ATTEMPTS {
-            let Some((at, t, pos, (lo, hi))) = pick_point(shape, &s, &mut rng) else { continue };
-            let d = finder.max_disk(at, t);
-            if d.leaf_arc {
-                // The disk is the arc's own circle (Observation 5): cut the
-                // whole arc off as a leaf, together with every other part
-                // the circle touches.
-                if lo > 0.0 || hi < 1.0 {
-                    continue;
-                }
-                let ends = [BoundaryPos { t: 0.0, ..pos }, BoundaryPos { t: 1.0, ..pos }];
-                let (pa, pb) = (ends[0].point(shape), ends[1].point(shape));
-                let tol = finder.contact_tolerance();
-                let mut feet = ends.to_vec();
-                for f in finder.touching(d.center, d.radius) {
-                    if f.element != at && f.point.dist(pa) > tol && f.point.dist(pb) > tol {
-                        let e = shape.loops()[f.element.loop_index].element(f.element.element);
-                        feet.push(BoundaryPos {
-                            loop_index: f.element.loop_index,
-                            element: f.element.element,
-                            t: e.param_of(f.point),
-                        });
-                    }
-                }
-                let disk = out.cuts.len();
-                let Some(children) = s.split(shape, disk, &feet) else { continue };
-                if children.iter().any(|c| original_parts(shape, c) >= parts) {
-                    continue;
-                }
-                out.cuts.push(Cut { center: d.center, radius: d.radius });
+        let found = (0..ATTEMPTS).find_map(|_| {
+            let (pos, range) = pick_point(shape, &s, &mut rng)?;
+            let at = ElementRef { loop_index: pos.loop_index, element: pos.element };
+            let d = finder.max_disk(at, pos.t);
+            cut_with(&finder, &s, parts, out.cuts.len(), &d, pos, range)
+        });
+        match found {
+            Some((cut, children)) => {
+                out.cuts.push(cut);
                 todo.extend(children);
-                done = true;
-                break;
             }
-            if d.radius == 0.0 || d.footpoints.len() < 2 {
-                continue;
-            }
-            let to_pos = |f: &Footpoint| {
-                let e = shape.loops()[f.element.loop_index].element(f.element.element);
-                BoundaryPos { loop_index: f.element.loop_index, element: f.element.element, t: e.param_of(f.point) }
-            };
-            let feet: Vec<BoundaryPos> =
-                d.footpoints.iter().enumerate().map(|(i, f)| if i == 0 { pos } else { to_pos(f) }).collect();
-            let disk = out.cuts.len();
-            let Some(children) = s.split(shape, disk, &feet) else { continue };
-            let counts: Vec<usize> = children.iter().map(|c| original_parts(shape, c)).collect();
-            let (children, cut) = if counts.iter().all(|&c| c < parts) {
-                (children, Cut { center: d.center, radius: d.radius })
-            } else if d.footpoints.len() == 2 {
-                // A redundant cut: slide the disk away from where the two
-                // parts meet (on the side of the smaller subshape) to a disk
-                // touching a third part (maxdisk*).
-                let small = (0..children.len()).min_by_key(|&i| counts[i]).unwrap_or(0);
-                let ends: Vec<Point> =
-                    children[small].chains().flat_map(|(a, b)| [a.point(shape), b.point(shape)]).collect();
-                let junction = ends.iter().fold(Point::default(), |acc, &p| acc + p) * (1.0 / ends.len().max(1) as f64);
-                let Some((c, r)) =
-                    slide_to_third(&finder, &d.footpoints[0], &d.footpoints[1], d.center, d.radius, junction)
-                else {
-                    continue;
-                };
-                // Only an empty disk that touches the boundary can cut.
-                let touch = finder.touching(c, r);
-                let empty = finder.nearest(c).is_some_and(|(_, dist)| (dist - r).abs() <= finder.contact_tolerance());
-                if touch.len() < 2 || r <= finder.contact_tolerance() || !empty {
-                    continue;
-                }
-                let feet: Vec<BoundaryPos> = touch.iter().map(to_pos).collect();
-                let Some(children) = s.split(shape, disk, &feet) else { continue };
-                if children.iter().any(|ch| original_parts(shape, ch) >= parts) {
-                    continue;
-                }
-                (children, Cut { center: c, radius: r })
-            } else {
-                continue;
-            };
-            out.cuts.push(cut);
-            todo.extend(children);
-            done = true;
-            break;
-        }
-        if !done {
-            out.stuck.push(s);
+            None => out.stuck.push(s),
         }
     }
     out

@@ -4,14 +4,16 @@
 //! The thesis grows the disk against every element in turn (O(n) per disk).
 //! Here the disks tangent at one point are nested, so the maximal one is the
 //! first contact of a growing disk, and a branch-and-bound search over the
-//! element box tree finds it after looking at the few elements near it:
-//! O(log n) for the boundaries medax is built for. Any maximal disk of a
-//! subshape is a maximal disk of the whole shape (Observation 4), so the
-//! divide step can ask this one index for every subshape.
+//! element box tree finds it. What it cannot prune are the elements next
+//! to the tangency points (measured: about √n of them on a smooth shape,
+//! docs/PERFORMANCE.md), which is why the divide step will scan small
+//! subshapes directly. Any maximal disk of a subshape is a maximal disk of
+//! the whole shape (Observation 4), so the divide step can ask this one
+//! index for every subshape.
 
 use crate::kernel::growing_disk::GrowingDisk;
 use crate::kernel::Point;
-use crate::shape::{BoxTree, Element, ElementRef, JointKind, Shape2d};
+use crate::shape::{Element, ElementIndex, ElementRef, JointKind, Shape2d};
 
 /// Where a maximal disk touches the boundary.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -48,21 +50,13 @@ pub struct MaxDisk {
 /// (O(n log n)) and shared by every query. `Sync`: query from many threads.
 pub struct DiskFinder<'s> {
     shape: &'s Shape2d,
-    tree: BoxTree,
-    /// Global id of element 0 of each loop, plus the total.
-    offsets: Vec<usize>,
+    index: ElementIndex,
 }
 
 impl<'s> DiskFinder<'s> {
     /// Indexes the elements of `shape`.
     pub fn new(shape: &'s Shape2d) -> DiskFinder<'s> {
-        let mut offsets = vec![0];
-        let mut boxes = Vec::with_capacity(shape.element_count());
-        for l in shape.loops() {
-            boxes.extend(l.elements().map(|e| e.bbox()));
-            offsets.push(boxes.len());
-        }
-        DiskFinder { shape, tree: BoxTree::new(boxes), offsets }
+        DiskFinder { shape, index: ElementIndex::new(shape.loops()) }
     }
 
     /// Contacts closer than this to the disk's circle count as footpoints:
@@ -78,8 +72,10 @@ impl<'s> DiskFinder<'s> {
 
     /// The element nearest to `p` and its distance.
     pub fn nearest(&self, p: Point) -> Option<(ElementRef, f64)> {
-        let found =
-            self.tree.min_by_bound(|b| Some(b.distance_to(p)), |gid, _| Some(self.element(gid).1.closest_point(p).0));
+        let found = self
+            .index
+            .tree
+            .min_by_bound(|b| Some(b.distance_to(p)), |gid, _| Some(self.element(gid).1.closest_point(p).0));
         found.map(|(gid, d)| (self.element(gid).0, d))
     }
 
@@ -90,8 +86,8 @@ impl<'s> DiskFinder<'s> {
         let tol = self.contact_tolerance();
         let mut near: Vec<(usize, Point)> = Vec::new();
         let reach = Point::new(r + tol, r + tol);
-        self.tree.visit_overlapping::<()>(&crate::kernel::BBox { min: c - reach, max: c + reach }, |gid| {
-            if self.tree.item_box(gid).distance_to(c) <= r + tol {
+        self.index.tree.visit_overlapping::<()>(&crate::kernel::BBox { min: c - reach, max: c + reach }, |gid| {
+            if self.index.tree.item_box(gid).distance_to(c) <= r + tol {
                 let (d, q) = self.element(gid).1.closest_point(c);
                 if d <= r + tol {
                     near.push((gid, q));
@@ -110,13 +106,8 @@ impl<'s> DiskFinder<'s> {
     }
 
     fn element(&self, gid: usize) -> (ElementRef, Element) {
-        let l = self.offsets.partition_point(|&o| o <= gid) - 1;
-        let r = ElementRef { loop_index: l, element: gid - self.offsets[l] };
-        (r, self.shape.loops()[l].element(r.element))
-    }
-
-    fn global(&self, r: ElementRef) -> usize {
-        self.offsets[r.loop_index] + r.element
+        let r = self.index.locate(gid);
+        (r, self.shape.loops()[r.loop_index].element(r.element))
     }
 
     /// The point at arc-length fraction `s` ∈ [0, 1] of element `at` and the
@@ -125,25 +116,11 @@ impl<'s> DiskFinder<'s> {
     /// the neighbour's: at a reflex vertex it picks one disk of the fan.
     pub fn boundary_point(&self, at: ElementRef, s: f64) -> (Point, Point) {
         let e = self.shape.loops()[at.loop_index].element(at.element);
-        let s = s.clamp(0.0, 1.0);
-        let p = if s == 0.0 {
-            e.start()
-        } else if s == 1.0 {
-            e.end()
-        } else {
-            e.point_at(s)
-        };
+        let p = e.point_at(s.clamp(0.0, 1.0));
         let tangent = match e {
             Element::Segment(g) => (g.b - g.a).unit(),
             Element::Arc(a) => {
-                let radial = if s == 0.0 {
-                    a.a - a.center
-                } else if s == 1.0 {
-                    a.b - a.center
-                } else {
-                    p - a.center
-                };
-                let t = radial.perp().unit();
+                let t = (p - a.center).perp().unit();
                 if a.is_ccw() {
                     t
                 } else {
@@ -163,7 +140,7 @@ impl<'s> DiskFinder<'s> {
     pub fn max_disk(&self, at: ElementRef, s: f64) -> MaxDisk {
         let (p, n) = self.boundary_point(at, s);
         let g = GrowingDisk { p, n };
-        let own = self.global(at);
+        let own = self.index.global(at);
         let lp = &self.shape.loops()[at.loop_index];
         // The vertex the disk grows from, with its joint and its other element.
         let vertex = match s {
@@ -176,13 +153,13 @@ impl<'s> DiskFinder<'s> {
             let footpoints = vec![Footpoint { element: at, point: p }, Footpoint { element: other, point: p }];
             return MaxDisk { center: p, radius: 0.0, footpoints, leaf_arc: false };
         }
-        let shares_p = vertex.map(|(joint, other)| (self.global(other), joint == JointKind::Smooth));
+        let shares_p = vertex.map(|(joint, other)| (self.index.global(other), joint == JointKind::Smooth));
         let tol = self.shape.tolerance();
         // Contacts at radii this small are the disk's own tangency point
         // seen through a neighbour sharing it; a genuine contact is at least
         // half the distance to another element, which validation keeps
         // above the tolerance.
-        let t_min = 0.25 * self.shape.tolerance();
+        let t_min = 0.25 * tol;
         // The first contact of each element, as a key for the tree search.
         let contact = |gid: usize| {
             let (_, e) = self.element(gid);
@@ -198,7 +175,7 @@ impl<'s> DiskFinder<'s> {
         // Footpoints: every element whose own first contact comes within the
         // tolerance of the disk's. (Elements merely near the circle, like
         // the boundary running on from a smooth footpoint, are not contacts.)
-        let near = self.tree.smallest_keys(tol, |b, cutoff| g.box_bound_below(b.min, b.max, cutoff), contact);
+        let near = self.index.tree.smallest_keys(tol, |b, cutoff| g.box_bound_below(b.min, b.max, cutoff), contact);
         let Some(&(_, radius)) = near.first() else {
             // Cannot happen inside a bounded shape; an infinite radius keeps
             // the answer honest rather than inventing one.

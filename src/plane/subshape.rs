@@ -32,12 +32,7 @@ pub struct BoundaryPos {
 impl BoundaryPos {
     /// The point at this position.
     pub fn point(&self, shape: &Shape2d) -> Point {
-        let e = shape.loops()[self.loop_index].element(self.element);
-        match self.t {
-            0.0 => e.start(),
-            1.0 => e.end(),
-            t => e.point_at(t),
-        }
+        shape.loops()[self.loop_index].element(self.element).point_at(self.t)
     }
 }
 
@@ -92,6 +87,61 @@ fn along(shape: &Shape2d, from: BoundaryPos, p: BoundaryPos) -> Option<(usize, f
     Some((d, p.t))
 }
 
+/// The element parts a chain runs over, in travel order: each element it
+/// uses with the fraction range it uses. An element the chain touches only
+/// at its very start or end is not one of its parts; a single-point chain
+/// has none. Constant time to build and to index, so that a chain of a
+/// whole loop costs nothing until its parts are visited.
+#[derive(Debug, Clone, Copy)]
+pub struct ChainParts {
+    from: BoundaryPos,
+    to: BoundaryPos,
+    /// Elements in the loop.
+    n: usize,
+    /// Elements after `from.element` where the chain ends.
+    steps: usize,
+    /// Offsets (from `from.element`) of the first and one past the last part.
+    first: usize,
+    end: usize,
+}
+
+impl ChainParts {
+    /// The parts of the chain from `from` to `to`.
+    pub fn new(shape: &Shape2d, from: BoundaryPos, to: BoundaryPos) -> ChainParts {
+        let n = shape.loops()[from.loop_index].len();
+        let steps = along(shape, from, to).map_or(0, |a| a.0);
+        let (first, end) = if from == to {
+            (0, 0)
+        } else {
+            (usize::from(from.t == 1.0), steps + 1 - usize::from(to.t == 0.0 && steps > 0))
+        };
+        ChainParts { from, to, n, steps, first, end: end.max(first) }
+    }
+
+    /// Number of parts.
+    pub fn len(&self) -> usize {
+        self.end - self.first
+    }
+
+    /// True when the chain has no part.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Part `i` (< `len()`): element index and the fraction range used.
+    pub fn get(&self, i: usize) -> (usize, f64, f64) {
+        let k = self.first + i;
+        let lo = if k == 0 { self.from.t } else { 0.0 };
+        let hi = if k == self.steps { self.to.t } else { 1.0 };
+        ((self.from.element + k) % self.n, lo, hi)
+    }
+
+    /// All parts in travel order.
+    pub fn iter(&self) -> impl Iterator<Item = (usize, f64, f64)> + '_ {
+        (0..self.len()).map(|i| self.get(i))
+    }
+}
+
 impl Subshape {
     /// The whole of loop `loop_index` as one chain (a simply connected shape
     /// before any cut).
@@ -140,7 +190,9 @@ impl Subshape {
             let (j0, key0, f0) = at[i];
             let (j1, key1, f1) = at[(i + 1) % k];
             let mut pieces = Vec::new();
-            if j0 == j1 && (key0.0, key0.1) <= (key1.0, key1.1) && (k > 1 || i + 1 < k) {
+            // Consecutive footpoints on one chain, in order: the subshape
+            // runs along that chain only (with one footpoint it goes round).
+            if j0 == j1 && key0 <= key1 && k > 1 {
                 pieces.push(Piece::Chain { from: f0, to: f1 });
             } else {
                 pieces.push(Piece::Chain { from: f0, to: chain(j0).1 });
@@ -175,21 +227,12 @@ impl Subshape {
             match *piece {
                 Piece::Chain { from, to } => {
                     let lp = &shape.loops()[from.loop_index];
-                    let n = lp.len();
-                    let Some((steps, _)) = along(shape, from, to) else { continue };
-                    for s in 0..=steps {
-                        let e = (from.element + s) % n;
-                        let ta = if s == 0 { from.t } else { 0.0 };
-                        let tb = if s == steps { to.t } else { 1.0 };
-                        if tb <= ta {
-                            continue;
-                        }
-                        let pos = BoundaryPos { loop_index: from.loop_index, element: e, t: ta };
+                    for (e, ta, tb) in ChainParts::new(shape, from, to).iter().filter(|p| p.2 > p.1) {
                         let bulge = match lp.element(e) {
                             Element::Segment(_) => 0.0,
                             Element::Arc(a) => (a.sweep() * (tb - ta) / 4.0).tan(),
                         };
-                        out.push(Vertex { p: pos.point(shape), bulge });
+                        out.push(Vertex { p: lp.element(e).point_at(ta), bulge });
                     }
                 }
                 Piece::Aux { disk } => {

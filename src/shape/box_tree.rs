@@ -333,11 +333,7 @@ mod tests {
         for _ in 0..300 {
             let q = Point::new(rng.gen_range(-10.0..110.0), rng.gen_range(-10.0..110.0));
             // Distance from q to a box: a lower bound on the distance to its centre.
-            let to_box = |b: &BBox| {
-                let dx = (b.min.x - q.x).max(q.x - b.max.x).max(0.0);
-                let dy = (b.min.y - q.y).max(q.y - b.max.y).max(0.0);
-                Some(dx.hypot(dy))
-            };
+            let to_box = |b: &BBox| Some(b.distance_to(q));
             let mut calls = 0;
             let got = tree.min_by_bound(to_box, |i, _| {
                 calls += 1;

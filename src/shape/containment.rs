@@ -125,12 +125,20 @@ struct Hit {
 }
 
 impl Hit {
-    /// The ray left the shape's elements behind without meeting any.
-    const NOTHING: Hit = Hit { x: f64::INFINITY, lean: 0.0, up: false, loop_index: usize::MAX };
-
     fn before(&self, o: &Hit) -> bool {
         self.x < o.x || (self.x == o.x && self.lean < o.lean)
     }
+}
+
+/// The first crossing of hole `h`'s ray from `p`, however far.
+fn full_ray(loops: &[Loop], index: &ElementIndex, h: usize, p: Point) -> Option<Hit> {
+    let crossing_of = |gid: usize| {
+        let r = index.locate(gid);
+        (r.loop_index != h).then(|| crossing(&loops[r.loop_index].element(r.element), p)).flatten().map(|c| (r, c))
+    };
+    let (gid, _) = index.tree.first_hit_right(p, |gid| crossing_of(gid).map(|(_, (x, lean, _))| (x, lean)))?;
+    let (r, (x, lean, up)) = crossing_of(gid)?;
+    Some(Hit { x, lean, up, loop_index: r.loop_index })
 }
 
 /// First hits of the rays of all holes (index 0 unused) within a short
@@ -147,7 +155,7 @@ fn short_rays(loops: &[Loop], index: &ElementIndex, probes: &[Point]) -> Vec<Opt
             BBox { min: p, max: Point::new(p.x + own.width() + own.height(), p.y) }
         })
         .collect();
-    let rays = BoxTree::new(segments.clone());
+    let rays = BoxTree::new(segments);
     let leaves: Vec<(&BBox, &[u32])> = rays.leaves().collect();
     let found: Vec<(usize, Hit)> = leaves
         .par_iter()
@@ -159,13 +167,14 @@ fn short_rays(loops: &[Loop], index: &ElementIndex, probes: &[Point]) -> Vec<Opt
                 let mut element = None;
                 for (k, &m) in members.iter().enumerate() {
                     let h = m as usize + 1;
-                    if r.loop_index == h || !eb.overlaps(&segments[m as usize]) {
+                    let segment = rays.item_box(m as usize);
+                    if r.loop_index == h || !eb.overlaps(segment) {
                         continue;
                     }
                     let e = element.get_or_insert_with(|| loops[r.loop_index].element(r.element));
                     let Some((x, lean, up)) = crossing(e, probes[h]) else { continue };
                     let hit = Hit { x, lean, up, loop_index: r.loop_index };
-                    if x <= segments[m as usize].max.x && best[k].is_none_or(|b| hit.before(&b)) {
+                    if x <= segment.max.x && best[k].is_none_or(|b| hit.before(&b)) {
                         best[k] = Some(hit);
                     }
                 }
@@ -199,36 +208,16 @@ pub(crate) fn check_holes(loops: &[Loop], index: &ElementIndex, areas: &[f64]) -
         .into_par_iter()
         .map(|h| if h == 0 { Point::default() } else { rightmost(&loops[h]) })
         .collect();
-    let mut hits = short_rays(loops, index, &probes);
-    // The few rays that met nothing nearby go the whole way.
-    hits.par_iter_mut().enumerate().skip(1).filter(|(_, hit)| hit.is_none()).for_each(|(h, hit)| {
-        let p = probes[h];
-        *hit = index
-            .tree
-            .first_hit_right(p, |gid| {
-                let r = index.locate(gid);
-                if r.loop_index == h {
-                    return None;
-                }
-                crossing(&loops[r.loop_index].element(r.element), p).map(|(x, lean, _)| (x, lean))
-            })
-            .and_then(|(gid, _)| {
-                let r = index.locate(gid);
-                let (x, lean, up) = crossing(&loops[r.loop_index].element(r.element), p)?;
-                Some(Hit { x, lean, up, loop_index: r.loop_index })
-            })
-            .map(Some)
-            .unwrap_or(Some(Hit::NOTHING));
-    });
-    // For each hole: its test point and (loop hit, leaving it?).
-    // Moving right across an upward element leaves its left side: the
-    // inside of a counter-clockwise loop.
-    let probes: Vec<(Point, Option<(usize, bool)>)> = probes
-        .into_iter()
-        .zip(hits)
-        .map(|(p, hit)| {
-            let leaving = hit.filter(|h| h.loop_index != usize::MAX).map(|h| (h.loop_index, h.up == ccw[h.loop_index]));
-            (p, leaving)
+    let short = short_rays(loops, index, &probes);
+    // For each hole: its test point and (loop hit, leaving it?). Moving
+    // right across an upward element leaves its left side: the inside of a
+    // counter-clockwise loop. The few rays that met nothing nearby go the
+    // whole way.
+    let probes: Vec<(Point, Option<(usize, bool)>)> = (0..loops.len())
+        .into_par_iter()
+        .map(|h| {
+            let hit = if h == 0 { None } else { short[h].or_else(|| full_ray(loops, index, h, probes[h])) };
+            (probes[h], hit.map(|hit| (hit.loop_index, hit.up == ccw[hit.loop_index])))
         })
         .collect();
     let mut order: Vec<usize> = (1..loops.len()).collect();
@@ -325,13 +314,8 @@ mod tests {
 
     #[test]
     fn agrees_with_winding_numbers_on_aligned_grids() {
-        let mut x = 99u64;
-        let mut rnd = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            (x >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut mix = crate::shape::samples::Mix(99);
+        let mut rnd = || mix.next();
         let mut seen = [0usize; 3];
         for _ in 0..400 {
             let outer = match (rnd() * 3.0) as u32 {

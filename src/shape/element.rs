@@ -283,8 +283,16 @@ impl Element {
         }
     }
 
-    /// Point at arc-length fraction `t` in [0, 1] along the element.
+    /// Point at arc-length fraction `t` in [0, 1] along the element; exactly
+    /// the start and end points at 0 and 1, so that positions at vertices
+    /// are the vertices.
     pub fn point_at(&self, t: f64) -> Point {
+        if t == 0.0 {
+            return self.start();
+        }
+        if t == 1.0 {
+            return self.end();
+        }
         match self {
             Element::Segment(s) => s.a + (s.b - s.a) * t,
             Element::Arc(a) => {

@@ -33,6 +33,7 @@ pub use import::sniff;
 pub use joints::{classify, turning_angle, JointKind};
 pub use options::ShapeOptions;
 pub use shape2d::{ElementSpec, Shape2d};
+pub(crate) use validate::ElementIndex;
 
 /// Largest absolute coordinate medax accepts, in model units (vertices and
 /// arc extents). Within it, products of coordinates stay far from `f64`

@@ -239,13 +239,19 @@ impl ElementIndex {
         ElementIndex { tree: BoxTree::new(boxes), offsets, loop_of }
     }
 
-    #[cfg(test)]
+    /// Indexes every element of `loops`.
     pub fn new(loops: &[Loop]) -> ElementIndex {
         let offsets = per_element::offsets(loops);
         let boxes = per_element::map_elements(loops, &offsets, |l, i| loops[l].element(i).bbox());
         ElementIndex::with_boxes(boxes, offsets)
     }
 
+    /// The global id of an element.
+    pub fn global(&self, r: ElementRef) -> usize {
+        self.offsets[r.loop_index] + r.element
+    }
+
+    /// Loop and element of a global id.
     pub fn locate(&self, id: usize) -> ElementRef {
         let l = match &self.loop_of {
             Some(t) => t[id] as usize,
@@ -342,13 +348,8 @@ mod tests {
         for seed in 0..300u64 {
             let n = 6 + (seed % 50) as usize;
             let mut l: Vec<Vertex> = samples::star_polygon(n, seed).remove(0);
-            let mut s = seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1;
-            let mut rnd = || {
-                s ^= s << 13;
-                s ^= s >> 7;
-                s ^= s << 17;
-                (s >> 11) as f64 / (1u64 << 53) as f64
-            };
+            let mut mix = samples::Mix(seed);
+            let mut rnd = || mix.next();
             for v in l.iter_mut() {
                 if rnd() < 0.4 {
                     v.bulge = (rnd() - 0.5) * 1.5;
@@ -449,13 +450,8 @@ mod tests {
 
     #[test]
     fn random_holes_with_touches_agree_on_every_path() {
-        let mut x = 0x2545_f491_4f6c_dd1du64;
-        let mut rnd = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            (x >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut mix = samples::Mix(0x2545_f491_4f6c_dd1d);
+        let mut rnd = || mix.next();
         let mut seen = [0usize; 2];
         for _ in 0..300 {
             let mut loops = vec![lp(&[(0.0, 0.0), (10.0, 0.0), (10.0, 10.0), (0.0, 10.0)])];
