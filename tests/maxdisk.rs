@@ -5,25 +5,11 @@
 
 mod common;
 
-use common::{circle, poly, rect, star, v};
-use medax::kernel::{FilteredKernel, Point};
+use common::{boundary_distance, circle, inside, poly, rect, shape, star, v};
+use medax::kernel::Point;
 use medax::plane::DiskFinder;
-use medax::shape::{samples, ElementRef, JointKind, Shape2d, ShapeOptions, Vertex};
+use medax::shape::{samples, ElementRef, JointKind, Shape2d, ShapeOptions};
 use rand::{Rng, SeedableRng};
-
-fn shape(loops: Vec<Vec<Vertex>>) -> Shape2d {
-    Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).expect("valid test shape")
-}
-
-/// Distance from `p` to the whole boundary, by scanning every element.
-fn boundary_distance(s: &Shape2d, p: Point) -> f64 {
-    s.loops().iter().flat_map(|l| l.elements()).map(|e| e.closest_point(p).0).fold(f64::INFINITY, f64::min)
-}
-
-fn inside(s: &Shape2d, p: Point) -> bool {
-    let k = FilteredKernel;
-    s.loops().iter().map(|l| l.winding_number(&k, p)).sum::<i32>() == 1
-}
 
 /// The largest t for which the disk of radius t at `p + t·n` stays inside
 /// the boundary (distance from its centre at least t, up to rounding of

@@ -1,6 +1,7 @@
 //! Command-line interface: argument parsing and dispatch. Each subcommand
 //! lives in its own file and only calls the library's public API.
 
+mod axis;
 mod demo;
 mod info;
 
@@ -63,6 +64,8 @@ enum Command {
         #[arg(long, default_value_t = 900.0)]
         width: f64,
     },
+    /// Compute the medial axis: nodes, conic edges with their boundary sites, samples.
+    Axis(axis::AxisArgs),
     /// Run the demo: validate and draw the embedded demo shape (the default).
     Demo {
         /// Output SVG file.
@@ -93,6 +96,7 @@ pub fn run() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command.unwrap_or(Command::Demo { output: "medax-demo.svg".into() }) {
         Command::Info { shape } => info::run(&shape),
+        Command::Axis(args) => axis::run(&args),
         Command::Draw { shape, output, width } => match shape.load() {
             Ok(s) => write_file(&output, &s.to_svg(width)).map(|_| println!("wrote {}", output.display())),
             Err(e) => Err(fail(&shape.shape, &e)),

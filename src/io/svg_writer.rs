@@ -55,10 +55,16 @@ impl Style {
         Style { stroke: stroke.into(), fill: fill.into(), width_px, fill_opacity }
     }
 
-    fn attrs(&self) -> String {
+    /// Attributes with the stroke width converted to model units (`scale`
+    /// model units per pixel): not every renderer honours
+    /// `vector-effect="non-scaling-stroke"`.
+    fn attrs(&self, scale: f64) -> String {
         format!(
-            "stroke=\"{}\" fill=\"{}\" fill-opacity=\"{}\" stroke-width=\"{}\" vector-effect=\"non-scaling-stroke\" fill-rule=\"evenodd\"",
-            self.stroke, self.fill, self.fill_opacity, self.width_px
+            "stroke=\"{}\" fill=\"{}\" fill-opacity=\"{}\" stroke-width=\"{}\" fill-rule=\"evenodd\"",
+            self.stroke,
+            self.fill,
+            self.fill_opacity,
+            num(self.width_px * scale)
         )
     }
 }
@@ -118,7 +124,7 @@ impl SvgDocument {
                 PathCmd::Close => d.push_str("Z "),
             }
         }
-        let _ = writeln!(self.body, "<path d=\"{}\" {}/>", d.trim_end(), style.attrs());
+        let _ = writeln!(self.body, "<path d=\"{}\" {}/>", d.trim_end(), style.attrs(self.model_per_px()));
     }
 
     /// Adds a circle.
@@ -129,7 +135,7 @@ impl SvgDocument {
             num(center[0]),
             num(center[1]),
             num(radius),
-            style.attrs()
+            style.attrs(self.model_per_px())
         );
     }
 

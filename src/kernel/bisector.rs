@@ -125,18 +125,30 @@ pub fn bisector_point(a: &Site, b: &Site, u: f64) -> Option<(Point, f64)> {
 /// tangent disk.
 pub fn sample_bisector(a: &Site, b: &Site, u0: f64, u1: f64, tol: f64) -> Option<Vec<(Point, f64, f64)>> {
     let at = |u: f64| bisector_point(a, b, u).map(|(c, r)| (c, r, u));
-    let mut out = vec![at(u0)?];
+    sample_between(a, b, at(u0)?, at(u1)?, tol)
+}
+
+/// [`sample_bisector`] between two given end samples `(centre, radius, u)`,
+/// which are kept as they are: ends computed by better-conditioned
+/// constructions (a branch point), or where the footpoint construction
+/// degenerates (radius 0 at a convex corner). `None` if an inner parameter
+/// has no tangent disk.
+pub fn sample_between(a: &Site, b: &Site, start: Sample, end: Sample, tol: f64) -> Option<Vec<(Point, f64, f64)>> {
+    let at = |u: f64| bisector_point(a, b, u).map(|(c, r)| (c, r, u));
+    let (u0, u1) = (start.2, end.2);
+    let mut out = vec![start];
     let spans = 8;
     let min_span = (u1 - u0).abs() * (2f64).powi(-40);
     for k in 0..spans {
         let lo = out.last().copied()?;
-        let hi = at(u0 + (u1 - u0) * (k + 1) as f64 / spans as f64)?;
+        let hi = if k + 1 == spans { end } else { at(u0 + (u1 - u0) * (k + 1) as f64 / spans as f64)? };
         refine(&at, lo, hi, tol, min_span, &mut out)?;
     }
     Some(out)
 }
 
-type Sample = (Point, f64, f64);
+/// A sample: centre, radius, footpoint parameter.
+pub type Sample = (Point, f64, f64);
 
 /// Appends samples strictly after `lo` up to and including `hi`.
 fn refine(

@@ -174,6 +174,11 @@ fn cut_with(
 /// Cuts the shape's outer loop (holes arrive with the Voronoi issue) down to
 /// leaves; `seed` fixes every random choice.
 pub fn decompose(shape: &Shape2d, seed: u64) -> Decomposition {
+    decompose_with(shape, seed, LEAF_PARTS)
+}
+
+/// [`decompose`] with leaves of up to `leaf_parts` original parts.
+pub fn decompose_with(shape: &Shape2d, seed: u64, leaf_parts: usize) -> Decomposition {
     let finder = DiskFinder::new(shape);
     let mut out = Decomposition::default();
     let mut todo = vec![Subshape::whole_loop(shape, 0)];
@@ -181,7 +186,7 @@ pub fn decompose(shape: &Shape2d, seed: u64) -> Decomposition {
     // of cuts, which is fixed by the seed.
     while let Some(s) = todo.pop() {
         let parts = original_parts(shape, &s);
-        if parts <= LEAF_PARTS {
+        if parts <= leaf_parts {
             out.leaves.push(s);
             continue;
         }

@@ -7,10 +7,18 @@
 //! cuts a shape into ([`subshape`]). The divide loop, the base cases and the
 //! conquer step (2.2.1–2.2.4) build on them.
 
+pub mod axis;
+pub mod axis_json;
+pub mod base_case;
+pub mod conquer;
 pub mod divide;
+pub mod draw;
 pub mod maxdisk;
 pub mod maxdisk_star;
 pub mod subshape;
 
+pub use axis::{AxisEdge, AxisNode, MedialAxis2d, NodeKind, Primitive};
+pub use conquer::{medial_axis, AxisError, AxisOptions};
+pub use draw::AxisPicture;
 pub use maxdisk::{DiskFinder, Footpoint, MaxDisk};
 pub use subshape::{BoundaryPos, Cut, Piece, Subshape};

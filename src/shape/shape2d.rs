@@ -243,6 +243,17 @@ impl Shape2d {
         }
     }
 
+    /// The input vertex index of stored vertex `v` of loop `l` (the start of
+    /// stored element `v`).
+    pub fn input_vertex_index(&self, l: usize, v: usize) -> usize {
+        let n = self.loops[l].len();
+        if self.reversed[l] {
+            (2 * n - 1 - v) % n
+        } else {
+            v
+        }
+    }
+
     /// Joint kind at vertex `i` of loop `l` (between elements `i − 1` and `i`
     /// of the stored, normalised loop).
     pub fn joint(&self, l: usize, i: usize) -> JointKind {

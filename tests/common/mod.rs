@@ -71,3 +71,20 @@ pub fn polygon_self_intersects(p: &[Vertex]) -> bool {
     }
     false
 }
+
+/// A validated shape (panics on invalid test input).
+pub fn shape(loops: Vec<Vec<Vertex>>) -> medax::shape::Shape2d {
+    medax::shape::Shape2d::from_bulge_loops(loops, &medax::shape::ShapeOptions::default()).expect("valid test shape")
+}
+
+/// Distance from `p` to the whole boundary, by scanning every element: an
+/// oracle that shares nothing with the library's searches.
+pub fn boundary_distance(s: &medax::shape::Shape2d, p: Point) -> f64 {
+    s.loops().iter().flat_map(|l| l.elements()).map(|e| e.closest_point(p).0).fold(f64::INFINITY, f64::min)
+}
+
+/// Inside the shape by winding numbers with the exact kernel.
+pub fn inside(s: &medax::shape::Shape2d, p: Point) -> bool {
+    let k = medax::kernel::FilteredKernel;
+    s.loops().iter().map(|l| l.winding_number(&k, p)).sum::<i32>() == 1
+}

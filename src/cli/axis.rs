@@ -1,0 +1,71 @@
+//! `medax axis`: the medial axis of a shape as JSON and/or SVG.
+
+use super::{fail, write_file, ShapeArgs};
+use medax::plane::{medial_axis, AxisOptions, AxisPicture, NodeKind};
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Instant;
+
+/// Arguments of `medax axis`.
+#[derive(clap::Args)]
+pub struct AxisArgs {
+    #[command(flatten)]
+    pub shape: ShapeArgs,
+    /// Write the axis as JSON (nodes, edges with sites and samples).
+    #[arg(long)]
+    pub json: Option<PathBuf>,
+    /// Write a picture of the shape and its axis.
+    #[arg(long)]
+    pub svg: Option<PathBuf>,
+    /// Chordal tolerance of the samples, model units (default: 1e-4 × bounding-box diagonal).
+    #[arg(long)]
+    pub sample_tolerance: Option<f64>,
+    /// Seed of the divide step's random choices.
+    #[arg(long, default_value_t = AxisOptions::default().seed)]
+    pub seed: u64,
+    /// Worker threads (default: all cores).
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// Draw the maximal disks at branch points in the picture.
+    #[arg(long)]
+    pub disks: bool,
+}
+
+pub fn run(args: &AxisArgs) -> Result<(), ExitCode> {
+    let t = Instant::now();
+    let shape = args.shape.load().map_err(|e| fail(&args.shape.shape, &e))?;
+    let read = t.elapsed().as_secs_f64();
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(args.threads.unwrap_or(0)).build().map_err(|e| {
+        eprintln!("medax: cannot start threads: {e}");
+        ExitCode::from(3)
+    })?;
+    let opts = AxisOptions { seed: args.seed, ..AxisOptions::default() };
+    let t = Instant::now();
+    let axis = pool.install(|| medial_axis(&shape, &opts)).map_err(|e| {
+        eprintln!("medax: {}: {e}", args.shape.shape.display());
+        ExitCode::from(1)
+    })?;
+    let took = t.elapsed().as_secs_f64();
+    let count = |k: NodeKind| axis.nodes.iter().filter(|n| n.kind == k).count();
+    println!(
+        "medial axis: {} nodes ({} branch, {} corner, {} leaf, {} joint), {} edges",
+        axis.nodes.len(),
+        count(NodeKind::Branch),
+        count(NodeKind::Corner),
+        count(NodeKind::Leaf),
+        count(NodeKind::Joint),
+        axis.edges.len()
+    );
+    println!("read in {read:.3} s, axis in {took:.3} s ({} elements)", shape.element_count());
+    let tol = args.sample_tolerance.unwrap_or(1e-4 * shape.bbox().diagonal());
+    if let Some(path) = &args.json {
+        write_file(path, &axis.to_json(&shape, tol))?;
+        println!("wrote {}", path.display());
+    }
+    if let Some(path) = &args.svg {
+        let pic = AxisPicture { width_px: 900.0, tolerance: tol, disks: args.disks };
+        write_file(path, &axis.to_svg(&shape, &pic))?;
+        println!("wrote {}", path.display());
+    }
+    Ok(())
+}

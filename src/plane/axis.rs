@@ -1,0 +1,181 @@
+//! The medial axis as a graph (thesis 2.2.3): nodes are maximal disks where
+//! something happens, edges are conic arcs between two boundary primitives.
+//!
+//! An edge keeps its combinatorics, the two primitives and where its disks
+//! touch each of them at both ends, so its curve is evaluated lazily by the
+//! footpoint parametrisation ([`crate::kernel::bisector`], thesis 2.2.4):
+//! nothing is sampled until a caller asks, at the tolerance it asks for.
+
+use crate::kernel::apollonius::Site;
+use crate::kernel::bisector::{bisector_point, conic_kind, sample_between, ConicKind};
+use crate::kernel::Point;
+use crate::shape::{Element, ElementRef, Shape2d};
+
+/// A boundary primitive the medial axis is equidistant from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Primitive {
+    /// The inside of an element (segment or arc), indexed as in
+    /// [`Shape2d::loops`] (normalised orientation).
+    Element(ElementRef),
+    /// A reflex vertex: vertex `vertex` (the start of element `vertex`) of
+    /// loop `loop_index`.
+    Vertex {
+        /// Loop index.
+        loop_index: usize,
+        /// Vertex index within the loop.
+        vertex: usize,
+    },
+}
+
+impl Primitive {
+    /// What a disk touching this primitive sees: a sided line, a circle with
+    /// its kind of tangency, or a point.
+    pub fn site(&self, shape: &Shape2d) -> Site {
+        match *self {
+            Primitive::Vertex { loop_index, vertex } => Site::Point(shape.loops()[loop_index].vertices()[vertex].p),
+            Primitive::Element(r) => match shape.loops()[r.loop_index].element(r.element) {
+                // The interior is left of travel.
+                Element::Segment(s) => Site::Line { a: s.a, n: (s.b - s.a).unit().perp() },
+                // A counter-clockwise arc curves around the interior: the
+                // disks inside touch it from within its circle.
+                Element::Arc(a) => Site::Circle { o: a.center, r: a.radius, outside: !a.is_ccw() },
+            },
+        }
+    }
+}
+
+/// What happens at a node.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum NodeKind {
+    /// Three or more edges meet: the disk touches three or more primitives.
+    Branch,
+    /// A convex vertex of the boundary: radius 0, an end of the axis.
+    Corner,
+    /// The centre of an arc whose whole circle lies inside the shape
+    /// (thesis Observation 5): an end of the axis at a curvature maximum.
+    Leaf,
+    /// Two edges meet and the pair of primitives changes (a contact passes
+    /// a smooth vertex or the end of a reflex vertex's fan of normals).
+    Joint,
+}
+
+/// A node of the medial axis.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AxisNode {
+    /// Centre of the maximal disk, model units.
+    pub point: Point,
+    /// Radius of the maximal disk, model units (0 at a convex corner).
+    pub radius: f64,
+    /// What happens here.
+    pub kind: NodeKind,
+}
+
+/// An edge: a piece of the conic of points equidistant from two primitives.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AxisEdge {
+    /// Node index at the start.
+    pub from: usize,
+    /// Node index at the end.
+    pub to: usize,
+    /// The two primitives, the first on the left when walking from `from`
+    /// to `to`.
+    pub sites: [Primitive; 2],
+    /// Footpoint parameters on each primitive at `from` and at `to`, in the
+    /// parametrisation of [`crate::kernel::bisector::footpoint`]: distance
+    /// along a segment from its start, or an angle in radians around an
+    /// arc's centre or a reflex vertex.
+    pub params: [(f64, f64); 2],
+    /// The kind of conic the edge lies on.
+    pub kind: ConicKind,
+}
+
+/// The medial axis of a shape.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct MedialAxis2d {
+    /// Nodes: every branch point, corner, leaf and joint.
+    pub nodes: Vec<AxisNode>,
+    /// Edges between nodes.
+    pub edges: Vec<AxisEdge>,
+}
+
+/// Below this many radians (or this fraction of a length) a footpoint
+/// parameter range is a single point for choosing a parametrisation.
+const TINY: f64 = 1e-12;
+
+impl AxisEdge {
+    /// The footpoint range on primitive `k` scaled to a length: a segment's
+    /// parameter is a length already, an arc's angle times its radius, a
+    /// vertex's angle times the larger radius at the ends.
+    fn reach(&self, shape: &Shape2d, k: usize, r_max: f64) -> f64 {
+        let (u0, u1) = self.params[k];
+        match self.sites[k].site(shape) {
+            Site::Line { .. } => (u1 - u0).abs(),
+            Site::Circle { r, .. } => (u1 - u0).abs() * r,
+            Site::Point(_) => (u1 - u0).abs() * r_max,
+        }
+    }
+
+    /// The primitive whose footpoint moves furthest along the edge: the
+    /// better-conditioned parametrisation.
+    fn driver(&self, shape: &Shape2d, r_max: f64) -> usize {
+        usize::from(self.reach(shape, 1, r_max) > self.reach(shape, 0, r_max) * (1.0 + TINY))
+    }
+
+    /// The maximal disk at fraction `s` ∈ [0, 1] of the footpoint range of
+    /// the better-conditioned primitive: centre and radius, model units.
+    /// `None` if no disk is tangent there (never for an edge of a valid axis).
+    pub fn eval(&self, shape: &Shape2d, nodes: &[AxisNode], s: f64) -> Option<(Point, f64)> {
+        let r_max = nodes[self.from].radius.max(nodes[self.to].radius);
+        let k = self.driver(shape, r_max);
+        let (u0, u1) = self.params[k];
+        bisector_point(&self.sites[k].site(shape), &self.sites[1 - k].site(shape), u0 + (u1 - u0) * s)
+    }
+
+    /// Samples along the edge, from its `from` node to its `to` node, as
+    /// (centre, radius): the polyline through the centres deviates from the
+    /// true conic by at most `tol` model units. The first and last samples
+    /// are the nodes themselves.
+    pub fn sample(&self, shape: &Shape2d, nodes: &[AxisNode], tol: f64) -> Vec<(Point, f64)> {
+        let (a, b) = (nodes[self.from], nodes[self.to]);
+        let r_max = a.radius.max(b.radius);
+        let k = self.driver(shape, r_max);
+        let (u0, u1) = self.params[k];
+        let (sk, so) = (self.sites[k].site(shape), self.sites[1 - k].site(shape));
+        // The ends are the nodes (computed by their own, better
+        // conditioned constructions); a line needs nothing in between.
+        let ends = [(a.point, a.radius), (b.point, b.radius)];
+        if (u1 - u0).abs() <= TINY * (1.0 + u0.abs()) || self.kind == ConicKind::Line {
+            return ends.to_vec();
+        }
+        let (start, end) = ((a.point, a.radius, u0), (b.point, b.radius, u1));
+        match sample_between(&sk, &so, start, end, tol) {
+            Some(s) => s.into_iter().map(|(c, r, _)| (c, r)).collect(),
+            None => ends.to_vec(),
+        }
+    }
+}
+
+/// The conic kind of the edge between primitives `a` and `b` (interior
+/// disks are nested inside counter-clockwise arcs' circles).
+pub fn edge_kind(shape: &Shape2d, a: Primitive, b: Primitive) -> ConicKind {
+    conic_kind(&a.site(shape), &b.site(shape), [true, true])
+}
+
+impl MedialAxis2d {
+    /// Number of edges at each node.
+    pub fn degrees(&self) -> Vec<usize> {
+        let mut d = vec![0; self.nodes.len()];
+        for e in &self.edges {
+            d[e.from] += 1;
+            d[e.to] += 1;
+        }
+        d
+    }
+
+    /// Every edge sampled to chordal tolerance `tol` (model units), in edge
+    /// order; see [`AxisEdge::sample`].
+    pub fn sampled(&self, shape: &Shape2d, tol: f64) -> Vec<Vec<(Point, f64)>> {
+        use rayon::prelude::*;
+        self.edges.par_iter().map(|e| e.sample(shape, &self.nodes, tol)).collect()
+    }
+}

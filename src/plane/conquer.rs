@@ -1,0 +1,255 @@
+//! The conquer step (thesis 2.2.3–2.2.4): the axes of all subshapes glued
+//! at the centres of the dividing disks into one graph.
+//!
+//! Each subshape's axis ends at the centres of the disks whose circles
+//! carry its auxiliary arcs; those become one node per disk. A dividing
+//! disk that touches only two primitives, both in the inside of their
+//! elements, is no node of the true axis: its two edges lie on one conic
+//! and are merged back into one.
+
+use super::axis::{edge_kind, AxisEdge, AxisNode, MedialAxis2d, NodeKind, Primitive};
+use super::base_case::{self, BaseCaseError, EventKind, LocalAxis};
+use super::divide::{decompose_with, Decomposition};
+use super::subshape::Subshape;
+use crate::kernel::Point;
+use crate::shape::Shape2d;
+use rayon::prelude::*;
+
+/// Options for [`medial_axis`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AxisOptions {
+    /// Seed of the divide step's random choices; the axis is the same for
+    /// every seed up to rounding, and bit-identical for one seed whatever
+    /// the thread count.
+    pub seed: u64,
+    /// Subshapes with at most this many original element parts are solved
+    /// directly (the thesis stops at 3; larger leaves mean fewer maximal
+    /// disks to grow). At least 3.
+    pub leaf_parts: usize,
+}
+
+impl Default for AxisOptions {
+    fn default() -> Self {
+        AxisOptions { seed: 0x006d_6564_6178, leaf_parts: 3 }
+    }
+}
+
+/// Why an axis could not be computed.
+#[derive(Debug, Clone, PartialEq)]
+pub enum AxisError {
+    /// Shapes with holes arrive with the augmented-domain step (thesis 2.3).
+    HolesUnsupported,
+    /// A subshape's axis broke down numerically near this point (what
+    /// failed, for the error message).
+    Numerical(Point, &'static str),
+}
+
+impl std::fmt::Display for AxisError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            AxisError::HolesUnsupported => write!(f, "shapes with holes are not supported by the medial axis yet"),
+            AxisError::Numerical(p, what) => {
+                write!(f, "medial axis computation broke down near ({}, {}): {what}", p.x, p.y)
+            }
+        }
+    }
+}
+
+impl std::error::Error for AxisError {}
+
+impl From<BaseCaseError> for AxisError {
+    fn from(e: BaseCaseError) -> Self {
+        match e {
+            BaseCaseError::NoDisk(p) => AxisError::Numerical(p, "no maximal disk at a joint"),
+            BaseCaseError::EmptyPocket(p) => AxisError::Numerical(p, "a pocket without events"),
+            BaseCaseError::Inconsistent(p) => AxisError::Numerical(p, "footpoint order inconsistent"),
+            BaseCaseError::NoBranch(p) => AxisError::Numerical(p, "no branch point in a pocket"),
+            BaseCaseError::Budget => AxisError::Numerical(Point::default(), "step budget exhausted"),
+        }
+    }
+}
+
+/// The medial axis of a shape without holes (thesis Algorithm 2).
+pub fn medial_axis(shape: &Shape2d, opts: &AxisOptions) -> Result<MedialAxis2d, AxisError> {
+    if shape.loops().len() > 1 {
+        return Err(AxisError::HolesUnsupported);
+    }
+    let d = decompose_with(shape, opts.seed, opts.leaf_parts.max(3));
+    glue(shape, &d)
+}
+
+/// Solves every leaf and stuck subshape (in parallel) and glues them.
+pub fn glue(shape: &Shape2d, d: &Decomposition) -> Result<MedialAxis2d, AxisError> {
+    let tol = shape.tolerance();
+    let all: Vec<&Subshape> = d.leaves.iter().chain(d.stuck.iter()).collect();
+    let locals: Vec<LocalAxis> =
+        all.par_iter().map(|s| base_case::solve(shape, s, &d.cuts, tol)).collect::<Result<_, _>>()?;
+    let mut nodes: Vec<AxisNode> = Vec::new();
+    let mut port_node: Vec<Option<usize>> = vec![None; d.cuts.len()];
+    let mut edges: Vec<AxisEdge> = Vec::new();
+    let mut is_port: Vec<bool> = Vec::new();
+    for local in &locals {
+        let ids: Vec<usize> = local
+            .nodes
+            .iter()
+            .map(|n| {
+                let make = |nodes: &mut Vec<AxisNode>, is_port: &mut Vec<bool>, port: bool| {
+                    // Kinds are settled from the degrees once all is glued.
+                    nodes.push(AxisNode { point: n.center, radius: n.radius, kind: NodeKind::Joint });
+                    is_port.push(port);
+                    nodes.len() - 1
+                };
+                match n.kind {
+                    EventKind::Port(c) => *port_node[c].get_or_insert_with(|| make(&mut nodes, &mut is_port, true)),
+                    _ => make(&mut nodes, &mut is_port, false),
+                }
+            })
+            .collect();
+        for e in &local.edges {
+            edges.push(AxisEdge {
+                from: ids[e.from],
+                to: ids[e.to],
+                sites: e.sites,
+                params: e.params,
+                kind: edge_kind(shape, e.sites[0], e.sites[1]),
+            });
+        }
+    }
+    let mut axis = MedialAxis2d { nodes, edges };
+    merge_pass_through(&mut axis, &is_port);
+    classify(&mut axis);
+    check_tree(&axis)?;
+    Ok(axis)
+}
+
+/// The axis of a shape without holes is a tree; anything else means the
+/// subshapes were glued from inconsistent pieces, which is reported rather
+/// than returned.
+fn check_tree(axis: &MedialAxis2d) -> Result<(), AxisError> {
+    let n = axis.nodes.len();
+    let mut parent: Vec<usize> = (0..n).collect();
+    fn root(parent: &mut [usize], mut x: usize) -> usize {
+        while parent[x] != x {
+            parent[x] = parent[parent[x]];
+            x = parent[x];
+        }
+        x
+    }
+    for e in &axis.edges {
+        let (a, b) = (root(&mut parent, e.from), root(&mut parent, e.to));
+        if a == b {
+            return Err(AxisError::Numerical(axis.nodes[e.from].point, "the axis closed a cycle"));
+        }
+        parent[a] = b;
+    }
+    if n > 0 && axis.edges.len() + 1 != n {
+        let lonely = (0..n).find(|&v| root(&mut parent, v) != root(&mut parent, 0)).unwrap_or(0);
+        return Err(AxisError::Numerical(axis.nodes[lonely].point, "the axis fell apart into pieces"));
+    }
+    Ok(())
+}
+
+/// Same unordered pair of primitives.
+fn same_pair(a: [Primitive; 2], b: [Primitive; 2]) -> bool {
+    a == b || a == [b[1], b[0]]
+}
+
+/// Removes dividing-disk nodes that only pass an edge through, merging the
+/// two edges, and compacts the node list.
+fn merge_pass_through(axis: &mut MedialAxis2d, is_port: &[bool]) {
+    let n = axis.nodes.len();
+    let mut at: Vec<Vec<usize>> = vec![Vec::new(); n];
+    for (i, e) in axis.edges.iter().enumerate() {
+        at[e.from].push(i);
+        at[e.to].push(i);
+    }
+    let mut alive = vec![true; axis.edges.len()];
+    let mut keep = vec![true; n];
+    for v in 0..n {
+        if !is_port[v] {
+            continue;
+        }
+        let live: Vec<usize> = at[v].iter().copied().filter(|&i| alive[i]).collect();
+        if live.len() != 2 || live[0] == live[1] {
+            continue;
+        }
+        let (mut e1, mut e2) = (axis.edges[live[0]], axis.edges[live[1]]);
+        if !same_pair(e1.sites, e2.sites) {
+            continue;
+        }
+        // Orient e1 into v and e2 out of v, with e2's sites in e1's order.
+        if e1.to != v {
+            e1 = reversed(e1);
+        }
+        if e2.from != v {
+            e2 = reversed(e2);
+        }
+        if e1.sites != e2.sites {
+            // Left and right swapped: the walk turned back (never on a
+            // valid axis); leave the node in place.
+            continue;
+        }
+        let merged = AxisEdge {
+            from: e1.from,
+            to: e2.to,
+            sites: e1.sites,
+            params: [(e1.params[0].0, e2.params[0].1), (e1.params[1].0, e2.params[1].1)],
+            kind: e1.kind,
+        };
+        alive[live[1]] = false;
+        axis.edges[live[0]] = merged;
+        keep[v] = false;
+        // The far end of e2 now sees the merged edge.
+        for end in [merged.from, merged.to] {
+            for slot in at[end].iter_mut() {
+                if *slot == live[1] {
+                    *slot = live[0];
+                }
+            }
+        }
+    }
+    let mut new_id = vec![usize::MAX; n];
+    let mut nodes = Vec::new();
+    for v in 0..n {
+        if keep[v] {
+            new_id[v] = nodes.len();
+            nodes.push(axis.nodes[v]);
+        }
+    }
+    let edges = axis
+        .edges
+        .iter()
+        .zip(&alive)
+        .filter(|(_, &a)| a)
+        .map(|(e, _)| AxisEdge { from: new_id[e.from], to: new_id[e.to], ..*e })
+        .collect();
+    axis.nodes = nodes;
+    axis.edges = edges;
+}
+
+/// The edge walked the other way.
+fn reversed(e: AxisEdge) -> AxisEdge {
+    AxisEdge {
+        from: e.to,
+        to: e.from,
+        sites: [e.sites[1], e.sites[0]],
+        params: [(e.params[1].1, e.params[1].0), (e.params[0].1, e.params[0].0)],
+        kind: e.kind,
+    }
+}
+
+/// Node kinds from the final degrees.
+fn classify(axis: &mut MedialAxis2d) {
+    let deg = axis.degrees();
+    for (v, node) in axis.nodes.iter_mut().enumerate() {
+        node.kind = if node.radius == 0.0 {
+            NodeKind::Corner
+        } else if deg[v] >= 3 {
+            NodeKind::Branch
+        } else if deg[v] <= 1 {
+            NodeKind::Leaf
+        } else {
+            NodeKind::Joint
+        };
+    }
+}

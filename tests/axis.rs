@@ -1,0 +1,238 @@
+//! The medial axis checked by oracles that share nothing with its
+//! constructions: brute-force distance from every sampled axis point to
+//! every element (soundness), bisection along inward normals on that
+//! distance (completeness), graph topology, and invariance under
+//! rotations of the start vertex, reversal, translation and scaling.
+
+mod common;
+
+use common::{boundary_distance, circle, inside, poly, rect, shape, star, v};
+use medax::kernel::Point;
+use medax::plane::{medial_axis, AxisOptions, MedialAxis2d, NodeKind};
+use medax::shape::{samples, Element, JointKind, Shape2d};
+use rand::{Rng, SeedableRng};
+
+/// Distance from `p` to the sampled axis polyline.
+fn axis_distance(polylines: &[Vec<(Point, f64)>], p: Point) -> f64 {
+    let mut best = f64::INFINITY;
+    for pl in polylines {
+        for w in pl.windows(2) {
+            let (a, b) = (w[0].0, w[1].0);
+            let d = b - a;
+            let t = if d.norm2() > 0.0 { ((p - a).dot(d) / d.norm2()).clamp(0.0, 1.0) } else { 0.0 };
+            best = best.min(p.dist(a + d * t));
+        }
+        if pl.len() == 1 {
+            best = best.min(p.dist(pl[0].0));
+        }
+    }
+    best
+}
+
+/// The centre of the largest disk tangent at `p` with inward normal `n`
+/// that stays inside, by bisection on the brute-force distance.
+fn bisected_center(s: &Shape2d, p: Point, n: Point, diag: f64) -> Point {
+    let fits = |t: f64| boundary_distance(s, p + n * t) >= t - 1e-12 * diag;
+    let (mut lo, mut hi) = (0.0, 2.0 * diag);
+    for _ in 0..70 {
+        let mid = 0.5 * (lo + hi);
+        if fits(mid) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    p + n * lo
+}
+
+struct Report {
+    samples: usize,
+    probes: usize,
+}
+
+/// Every check on one shape's axis.
+fn check(s: &Shape2d, axis: &MedialAxis2d, probes: usize, seed: u64) -> Report {
+    let diag = s.bbox().diagonal();
+    let tol = 1e-9 * diag;
+    let sample_tol = 1e-4 * diag;
+    let lines = axis.sampled(s, sample_tol);
+    let mut samples = 0;
+    // Soundness: every sample is the centre of a disk of its radius that
+    // touches the boundary and holds no boundary point.
+    for (e, pl) in axis.edges.iter().zip(&lines) {
+        assert!(pl.len() >= 2, "edge {e:?}");
+        for &(c, r) in pl {
+            let d = boundary_distance(s, c);
+            assert!((d - r).abs() <= tol, "edge {e:?}: sample {c:?} r {r} but distance {d}");
+            if r > tol {
+                assert!(inside(s, c), "edge {e:?}: sample {c:?} outside");
+            }
+            samples += 1;
+        }
+    }
+    // Topology: one loop, so a tree; its ends are convex corners and leaf arcs.
+    let deg = axis.degrees();
+    assert_eq!(
+        axis.nodes.len(),
+        axis.edges.len() + 1,
+        "not a tree: {} nodes, {} edges",
+        axis.nodes.len(),
+        axis.edges.len()
+    );
+    let mut seen = vec![false; axis.nodes.len()];
+    let mut stack = vec![0];
+    let mut adj: Vec<Vec<usize>> = vec![Vec::new(); axis.nodes.len()];
+    for e in &axis.edges {
+        adj[e.from].push(e.to);
+        adj[e.to].push(e.from);
+    }
+    while let Some(v) = stack.pop() {
+        if !std::mem::replace(&mut seen[v], true) {
+            stack.extend(adj[v].iter().copied());
+        }
+    }
+    assert!(seen.iter().all(|&x| x), "axis not connected");
+    let convex = s.joint_counts()[JointKind::Convex as usize];
+    let corners = axis.nodes.iter().filter(|n| n.kind == NodeKind::Corner).count();
+    assert_eq!(corners, convex, "one corner node per convex vertex");
+    for (v, n) in axis.nodes.iter().enumerate() {
+        match n.kind {
+            NodeKind::Corner | NodeKind::Leaf => assert_eq!(deg[v], 1, "{n:?}"),
+            NodeKind::Branch => assert!(deg[v] >= 3, "{n:?}"),
+            NodeKind::Joint => assert_eq!(deg[v], 2, "{n:?}"),
+        }
+        assert!((boundary_distance(s, n.point) - n.radius).abs() <= tol, "node {n:?}");
+    }
+    // Completeness: the maximal disk at random boundary points is centred
+    // on the axis.
+    let mut rng = rand::rngs::SmallRng::seed_from_u64(seed);
+    let lp = &s.loops()[0];
+    for _ in 0..probes {
+        let k = rng.gen_range(0..lp.len());
+        let e = lp.element(k);
+        let t = rng.gen_range(0.05..0.95);
+        let p = e.point_at(t);
+        let n = match e {
+            Element::Segment(g) => (g.b - g.a).unit().perp(),
+            Element::Arc(a) if a.is_ccw() => (a.center - p).unit(),
+            Element::Arc(a) => (p - a.center).unit(),
+        };
+        let c = bisected_center(s, p, n, diag);
+        let d = axis_distance(&lines, c);
+        assert!(d <= sample_tol + 1e-9 * diag, "probe at {p:?}: centre {c:?} is {d} from the axis");
+    }
+    Report { samples, probes }
+}
+
+fn axis_of(s: &Shape2d) -> MedialAxis2d {
+    medial_axis(s, &AxisOptions::default()).expect("axis")
+}
+
+#[test]
+fn rectangle_has_two_branch_points_and_a_spine() {
+    let s = shape(vec![rect(0.0, 0.0, 4.0, 2.0)]);
+    let a = axis_of(&s);
+    check(&s, &a, 200, 1);
+    let branches: Vec<_> = a.nodes.iter().filter(|n| n.kind == NodeKind::Branch).collect();
+    assert_eq!(branches.len(), 2, "{a:#?}");
+    for b in branches {
+        assert!((b.radius - 1.0).abs() < 1e-9);
+        assert!(b.point.dist(Point::new(1.0, 1.0)) < 1e-9 || b.point.dist(Point::new(3.0, 1.0)) < 1e-9);
+    }
+    assert_eq!(a.edges.len(), 5);
+}
+
+#[test]
+fn regular_polygons_have_one_node_of_valency_n() {
+    for n in [3usize, 4, 5, 6, 8, 12] {
+        let pts: Vec<(f64, f64)> = (0..n)
+            .map(|k| {
+                let t = std::f64::consts::TAU * k as f64 / n as f64;
+                (t.cos(), t.sin())
+            })
+            .collect();
+        let s = shape(vec![poly(&pts)]);
+        let a = axis_of(&s);
+        check(&s, &a, 100, n as u64);
+        let deg = a.degrees();
+        let hub = a.nodes.iter().position(|n| n.kind == NodeKind::Branch).expect("centre");
+        assert_eq!(deg[hub], n, "{n}-gon: {a:#?}");
+        assert!(a.nodes[hub].point.norm() < 1e-9);
+    }
+}
+
+#[test]
+fn circle_and_stadium_and_rounded_rectangle() {
+    // A circle: all of it touches one disk; the axis is its centre.
+    let s = shape(vec![circle(0.0, 0.0, 2.0)]);
+    let a = axis_of(&s);
+    assert!(a.nodes.iter().any(|n| n.point.norm() < 1e-9 && (n.radius - 2.0).abs() < 1e-9), "{a:#?}");
+    // A stadium: a spine between the two half-circle centres.
+    let st = vec![v(0.0, 0.0, 0.0), v(4.0, 0.0, 1.0), v(4.0, 2.0, 0.0), v(0.0, 2.0, 1.0)];
+    let s = shape(vec![st]);
+    let a = axis_of(&s);
+    check(&s, &a, 200, 3);
+    // A rounded rectangle: quarter arcs at the corners.
+    let b = (std::f64::consts::PI / 8.0).tan();
+    let rr = vec![
+        v(1.0, 0.0, 0.0),
+        v(5.0, 0.0, b),
+        v(6.0, 1.0, 0.0),
+        v(6.0, 3.0, b),
+        v(5.0, 4.0, 0.0),
+        v(1.0, 4.0, b),
+        v(0.0, 3.0, 0.0),
+        v(0.0, 1.0, b),
+    ];
+    let s = shape(vec![rr]);
+    let a = axis_of(&s);
+    check(&s, &a, 200, 4);
+}
+
+#[test]
+fn random_star_polygons() {
+    let mut total = Report { samples: 0, probes: 0 };
+    for seed in 0..30 {
+        let s = shape(vec![star(8 + (seed as usize * 7) % 60, seed)]);
+        let a = axis_of(&s);
+        let r = check(&s, &a, 60, seed);
+        total.samples += r.samples;
+        total.probes += r.probes;
+    }
+    assert!(total.samples > 1000 && total.probes == 1800);
+}
+
+#[test]
+fn smooth_biarc_flowers() {
+    for n in [20, 100] {
+        let s = shape(samples::flower_arcs(n));
+        let a = axis_of(&s);
+        check(&s, &a, 100, n as u64);
+    }
+}
+
+#[test]
+fn arcs_with_convex_and_reflex_corners() {
+    // An L with a rounded outer corner and a reflex inner corner, and a
+    // plate with a bulging side and a notch.
+    let l = vec![
+        v(0.0, 0.0, 0.0),
+        v(4.0, 0.0, 0.0),
+        v(4.0, 1.0, 0.0),
+        v(1.0, 1.0, 0.0),
+        v(1.0, 4.0, 0.3),
+        v(0.0, 4.0, 0.0),
+    ];
+    let s = shape(vec![l]);
+    check(&s, &axis_of(&s), 200, 5);
+    let plate = vec![
+        v(0.0, 0.0, 0.0),
+        v(6.0, 0.0, 0.4),
+        v(6.0, 3.0, 0.0),
+        v(4.0, 3.0, -0.5),
+        v(2.0, 3.0, 0.0),
+        v(0.0, 3.0, 0.0),
+    ];
+    let s = shape(vec![plate]);
+    check(&s, &axis_of(&s), 200, 6);
+}
