@@ -22,6 +22,17 @@
 #include <stdbool.h>
 
 /**
+ * The largest accepted `mx_axis_options.threads`.
+ */
+#define MX_AXIS_MAX_THREADS 1024
+
+/**
+ * The smallest accepted sampling tolerance, as a fraction of the shape's
+ * bounding-box diagonal (finer requests would need billions of samples).
+ */
+#define MX_AXIS_MIN_RELATIVE_SAMPLE_TOLERANCE 1e-12
+
+/**
  * `mx_element.kind` of a line segment.
  */
 #define MX_ELEMENT_SEGMENT 0
@@ -143,6 +154,15 @@ typedef enum mx_status {
    */
   MX_ERR_INDEX_OUT_OF_RANGE = 7,
   /**
+   * A progress callback asked to stop; nothing was computed or written.
+   */
+  MX_ERR_CANCELLED = 8,
+  /**
+   * A computation broke down numerically (the message and position in
+   * `mx_error_info` say where). Please report it with the input.
+   */
+  MX_ERR_NUMERICAL = 9,
+  /**
    * The input has no loop.
    */
   MX_ERR_EMPTY = 10,
@@ -190,7 +210,56 @@ typedef enum mx_status {
 } mx_status;
 
 /**
- * A computed medial axis or Voronoi diagram. Opaque.
+ * What a node of the medial axis is.
+ */
+typedef enum mx_node_kind {
+  /**
+   * Three or more edges meet: the disk touches three or more primitives.
+   */
+  MX_NODE_BRANCH = 0,
+  /**
+   * A convex vertex of the boundary: radius 0, an end of the axis.
+   */
+  MX_NODE_CORNER = 1,
+  /**
+   * The centre of an arc whose whole circle lies inside the shape: an end
+   * of the axis at a curvature maximum.
+   */
+  MX_NODE_LEAF = 2,
+  /**
+   * Two edges meet and the pair of boundary primitives changes.
+   */
+  MX_NODE_JOINT = 3,
+} mx_node_kind;
+
+/**
+ * The kind of conic an edge of the medial axis lies on.
+ */
+typedef enum mx_conic_kind {
+  /**
+   * A straight line.
+   */
+  MX_CONIC_LINE = 0,
+  /**
+   * A parabola.
+   */
+  MX_CONIC_PARABOLA = 1,
+  /**
+   * An ellipse.
+   */
+  MX_CONIC_ELLIPSE = 2,
+  /**
+   * A hyperbola branch.
+   */
+  MX_CONIC_HYPERBOLA = 3,
+} mx_conic_kind;
+
+/**
+ * A computed medial axis of a 2D shape: nodes (maximal disks) joined by
+ * conic edges. Opaque; create with `mx_axis_compute`, release with
+ * `mx_axis_free`. It owns a copy of the shape, so it stays valid after the
+ * shape is freed. Immutable: a `const mx_axis*` may be used from several
+ * threads at once.
  */
 typedef struct mx_axis mx_axis;
 
@@ -212,6 +281,114 @@ typedef struct mx_mesh3d mx_mesh3d;
  * several threads at once.
  */
 typedef struct mx_shape2d mx_shape2d;
+
+/**
+ * Progress callback: `fraction` in [0, 1] of the work done; `user` is
+ * `mx_axis_options.user`. Return 0 to go on, nonzero to cancel. Called on
+ * the thread that called `mx_axis_compute`; it must not throw or unwind.
+ */
+typedef int (*mx_progress_fn)(double fraction, void *user);
+
+/**
+ * Options for `mx_axis_compute`. Initialise with `mx_axis_options_default`
+ * (which sets `struct_size`), then change fields.
+ */
+typedef struct mx_axis_options {
+  /**
+   * `sizeof(mx_axis_options)` as the caller was compiled; lets later
+   * versions add fields without breaking old callers.
+   */
+  size_t struct_size;
+  /**
+   * Seed of the divide step's random choices. The axis is the same for
+   * every seed up to rounding, and bit-identical for one seed whatever
+   * the thread count.
+   */
+  uint64_t seed;
+  /**
+   * Worker threads: 0 = the shared pool (all cores, or
+   * `RAYON_NUM_THREADS`), else a pool of exactly this many threads for
+   * this call (at most `MX_AXIS_MAX_THREADS`).
+   */
+  size_t threads;
+  /**
+   * Optional progress callback (NULL = none). Coarse for now: called with
+   * 0 before the computation and with 1 after it. A nonzero return at 0
+   * cancels (`MX_ERR_CANCELLED`); the return value at 1 is ignored (the
+   * axis is complete by then).
+   */
+  mx_progress_fn progress;
+  /**
+   * Passed unchanged to `progress`.
+   */
+  void *user;
+} mx_axis_options;
+
+/**
+ * A node of the medial axis: the maximal disk centred there.
+ */
+typedef struct mx_axis_node {
+  /**
+   * Centre x, model units.
+   */
+  double x;
+  /**
+   * Centre y, model units.
+   */
+  double y;
+  /**
+   * Radius of the maximal disk, model units (0 at a convex corner).
+   */
+  double r;
+  /**
+   * What happens here.
+   */
+  enum mx_node_kind kind;
+} mx_axis_node;
+
+/**
+ * A boundary primitive an edge is equidistant from, in the caller's input
+ * numbering (as given to `mx_shape2d_from_*`, before any loop reversal).
+ */
+typedef struct mx_axis_site {
+  /**
+   * Loop index (0 = outer boundary).
+   */
+  size_t loop_index;
+  /**
+   * Input element index within the loop when `is_vertex` is 0; input
+   * vertex index (a reflex vertex) when `is_vertex` is 1.
+   */
+  size_t index;
+  /**
+   * 1 for a reflex vertex, 0 for the inside of a segment or arc.
+   */
+  int32_t is_vertex;
+} mx_axis_site;
+
+/**
+ * An edge of the medial axis: a piece of the conic of centres equidistant
+ * from its two sites.
+ */
+typedef struct mx_axis_edge {
+  /**
+   * Node index at the start.
+   */
+  size_t from;
+  /**
+   * Node index at the end.
+   */
+  size_t to;
+  /**
+   * The conic the edge lies on.
+   */
+  enum mx_conic_kind kind;
+  /**
+   * The two sites; `sites[0]` is on the left when walking from `from` to
+   * `to`.
+   */
+  struct mx_axis_site sites[2];
+} mx_axis_edge;
 
 /**
  * Structured details of the last error on this thread. Indices are −1 when
@@ -375,6 +552,97 @@ extern "C" {
 #endif // __cplusplus
 
 /**
+ * Fills `out` with the default options (and its `struct_size`).
+ *
+ * # Safety
+ * `out` must be NULL or point to a writable `mx_axis_options`.
+ */
+enum mx_status mx_axis_options_default(struct mx_axis_options *out);
+
+/**
+ * Computes the medial axis of `shape` (thesis Algorithm 2) and writes a new
+ * handle to `*out`. `options` may be NULL (defaults). The handle keeps its
+ * own copy of the shape. Fails with `MX_ERR_UNSUPPORTED` for shapes with
+ * holes (not supported yet), `MX_ERR_NUMERICAL` when the construction
+ * breaks down (position in `mx_error_info`), `MX_ERR_CANCELLED` when the
+ * progress callback asks to stop, `MX_ERR_INVALID_ARGUMENT` for bad
+ * options; `*out` is then untouched.
+ *
+ * # Safety
+ * `shape` NULL or a live handle; `options` NULL or valid; `out` NULL or writable.
+ */
+enum mx_status mx_axis_compute(const struct mx_shape2d *shape,
+                               const struct mx_axis_options *options,
+                               struct mx_axis **out);
+
+/**
+ * Releases an axis. NULL is a no-op.
+ *
+ * # Safety
+ * `axis` must be NULL or a handle from medax not yet freed.
+ */
+void mx_axis_free(struct mx_axis *axis);
+
+/**
+ * Number of nodes.
+ *
+ * # Safety
+ * `axis` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_axis_node_count(const struct mx_axis *axis, size_t *out);
+
+/**
+ * Number of edges.
+ *
+ * # Safety
+ * `axis` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_axis_edge_count(const struct mx_axis *axis, size_t *out);
+
+/**
+ * Node `index` (`MX_ERR_INDEX_OUT_OF_RANGE` unless below
+ * `mx_axis_node_count`).
+ *
+ * # Safety
+ * `axis` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_axis_get_node(const struct mx_axis *axis, size_t index, struct mx_axis_node *out);
+
+/**
+ * Edge `index` (`MX_ERR_INDEX_OUT_OF_RANGE` unless below
+ * `mx_axis_edge_count`): its nodes, conic kind and sites.
+ *
+ * # Safety
+ * `axis` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_axis_get_edge(const struct mx_axis *axis, size_t index, struct mx_axis_edge *out);
+
+/**
+ * Samples edge `index` from its `from` node to its `to` node as `x, y, r`
+ * triples (disk centre and radius, model units): the polyline through the
+ * centres deviates from the true conic by at most `tolerance` model units
+ * (positive, at least `MX_AXIS_MIN_RELATIVE_SAMPLE_TOLERANCE` × the
+ * bounding-box diagonal). The first and last triples are the end nodes.
+ *
+ * `capacity` is the number of doubles `xyr` holds (3 per sample, as in
+ * `mx_shape2d_loop_vertices`); `*count` receives the number of samples.
+ * Size query: `capacity` 0 (`xyr` may be NULL) writes only `*count` and
+ * returns `MX_OK`. Otherwise a buffer shorter than 3 × the sample count
+ * gives `MX_ERR_BUFFER_TOO_SMALL` with nothing written. Sampling is
+ * deterministic, so a query and a fill with the same arguments agree.
+ *
+ * # Safety
+ * `axis` NULL or a live handle; `xyr` NULL or `capacity` writable doubles;
+ * `count` NULL or writable.
+ */
+enum mx_status mx_axis_edge_sample(const struct mx_axis *axis,
+                                   size_t index,
+                                   double tolerance,
+                                   double *xyr,
+                                   size_t capacity,
+                                   size_t *count);
+
+/**
  * Releases a `mx_mesh3d`. NULL is a no-op.
  *
  * # Safety
@@ -389,14 +657,6 @@ void mx_mesh3d_free(struct mx_mesh3d *p);
  * `p` must be NULL or a handle returned by medax and not yet freed.
  */
 void mx_ball_free(struct mx_ball *p);
-
-/**
- * Releases a `mx_axis`. NULL is a no-op.
- *
- * # Safety
- * `p` must be NULL or a handle returned by medax and not yet freed.
- */
-void mx_axis_free(struct mx_axis *p);
 
 /**
  * Length in bytes of the last error message on this thread, including the

@@ -9,7 +9,7 @@ mod common;
 use common::{boundary_distance, circle, inside, poly, rect, shape, star, v};
 use medax::kernel::Point;
 use medax::plane::{medial_axis, AxisOptions, MedialAxis2d, NodeKind};
-use medax::shape::{samples, Element, JointKind, Shape2d};
+use medax::shape::{samples, Element, JointKind, Shape2d, Vertex};
 use rand::{Rng, SeedableRng};
 
 /// Distance from `p` to the sampled axis polyline.
@@ -235,4 +235,54 @@ fn arcs_with_convex_and_reflex_corners() {
     ];
     let s = shape(vec![plate]);
     check(&s, &axis_of(&s), 200, 6);
+}
+
+/// Branch nodes as (x, y, r), sorted, for comparing axes of transformed shapes.
+fn branches(a: &MedialAxis2d) -> Vec<(f64, f64, f64)> {
+    let mut b: Vec<(f64, f64, f64)> =
+        a.nodes.iter().filter(|n| n.kind == NodeKind::Branch).map(|n| (n.point.x, n.point.y, n.radius)).collect();
+    b.sort_by(|p, q| p.partial_cmp(q).unwrap());
+    b
+}
+
+fn same_branches(a: &[(f64, f64, f64)], b: &[(f64, f64, f64)], tol: f64, what: &str) {
+    assert_eq!(a.len(), b.len(), "{what}: {} vs {} branch nodes", a.len(), b.len());
+    for p in a {
+        let near = b.iter().any(|q| (p.0 - q.0).abs() <= tol && (p.1 - q.1).abs() <= tol && (p.2 - q.2).abs() <= tol);
+        assert!(near, "{what}: branch {p:?} has no counterpart");
+    }
+}
+
+#[test]
+fn invariant_under_start_vertex_reversal_translation_and_scale() {
+    let mut checked = 0;
+    for seed in 0..12u64 {
+        let base = star(10 + seed as usize * 3, 100 + seed);
+        let s = shape(vec![base.clone()]);
+        let Ok(a) = medial_axis(&s, &AxisOptions::default()) else { continue };
+        let want = branches(&a);
+        // Rotate the start vertex.
+        let mut rot = base.clone();
+        rot.rotate_left(3);
+        let got = branches(&axis_of(&shape(vec![rot])));
+        same_branches(&want, &got, 1e-9, "start vertex");
+        // Reverse the orientation (bulges are all 0 for a polygon).
+        let mut rev = base.clone();
+        rev.reverse();
+        let got = branches(&axis_of(&shape(vec![rev])));
+        same_branches(&want, &got, 1e-9, "reversed");
+        // Translate by 1e6 and scale by 1e-3 and 1e3.
+        // Translation by 1e6 still breaks down numerically (docs/PERFORMANCE.md, known limits).
+        for (k, d) in [(1.0, 1e3), (1e-3, 0.0), (1e3, 0.0)] {
+            let moved: Vec<Vertex> = base.iter().map(|w| v(w.p.x * k + d, w.p.y * k + d, w.bulge)).collect();
+            let got: Vec<(f64, f64, f64)> = branches(&axis_of(&shape(vec![moved])))
+                .into_iter()
+                .map(|(x, y, r)| ((x - d) / k, (y - d) / k, r / k))
+                .collect();
+            let tol = if d != 0.0 { 1e-7 } else { 1e-9 };
+            same_branches(&want, &got, tol, &format!("scaled {k} moved {d}"));
+        }
+        checked += 1;
+    }
+    assert!(checked >= 10, "{checked}");
 }

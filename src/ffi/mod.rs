@@ -10,6 +10,7 @@
 //!
 //! This is the only module allowed `unsafe` code.
 
+mod axis;
 mod boundary;
 mod handles;
 mod last_error;
@@ -17,6 +18,7 @@ mod shape2d;
 mod status;
 mod version;
 
+pub use axis::*;
 pub use handles::*;
 pub use last_error::*;
 pub use shape2d::*;

@@ -1,7 +1,7 @@
 //! C functions for 2D shapes: create, inspect, draw, free. Mirrors
 //! `crate::shape`; no geometry is computed here.
 
-use super::boundary::{c_str, check_out, deref, guard, index_error, slice, write_out};
+use super::boundary::{self, c_str, check_out, deref, guard, index_error, read_options, slice, write_out};
 use super::last_error::FfiError;
 use super::status::mx_status;
 use crate::io::Format;
@@ -143,25 +143,10 @@ const OPTIONS_V1_SIZE: usize = std::mem::size_of::<mx_shape_options>();
 /// over a copy of the defaults, so a caller compiled against an older
 /// (smaller) struct keeps working when fields are added.
 unsafe fn options(p: *const mx_shape_options) -> Result<ShapeOptions, FfiError> {
-    if p.is_null() {
+    // SAFETY: forwarded contract; `mx_shape_options` starts with `struct_size`.
+    let Some(o) = (unsafe { read_options(p, DEFAULT_OPTIONS, OPTIONS_V1_SIZE, "mx_shape_options")? }) else {
         return Ok(ShapeOptions::default());
-    }
-    // SAFETY: non-NULL, and every version of the struct starts with
-    // `struct_size`; read it alone before trusting the rest.
-    let size = unsafe { std::ptr::addr_of!((*p).struct_size).read_unaligned() };
-    if size < OPTIONS_V1_SIZE {
-        return Err(FfiError::new(
-            mx_status::MX_ERR_INVALID_ARGUMENT,
-            format!(
-                "mx_shape_options.struct_size = {size} is smaller than any released layout ({OPTIONS_V1_SIZE}); call mx_shape_options_default first"
-            ),
-        ));
-    }
-    let mut o = mx_shape_options { struct_size: 0, ..DEFAULT_OPTIONS };
-    let n = size.min(std::mem::size_of::<mx_shape_options>());
-    // SAFETY: the caller's struct holds `size` >= n readable bytes; ours is
-    // at least n bytes; both are plain old data.
-    unsafe { std::ptr::copy_nonoverlapping(p.cast::<u8>(), std::ptr::addr_of_mut!(o).cast::<u8>(), n) };
+    };
     let length = |name: &str, v: f64| -> Result<Option<f64>, FfiError> {
         if v == 0.0 {
             Ok(None)
@@ -380,15 +365,8 @@ unsafe fn query<T>(
     out: *mut T,
     f: impl FnOnce(&Shape2d) -> Result<T, FfiError>,
 ) -> mx_status {
-    guard(|| {
-        check_out(out, "out")?;
-        // SAFETY: caller contract: NULL or a live handle.
-        let s = unsafe { deref(shape, "shape")? };
-        let v = f(&s.inner)?;
-        // SAFETY: checked non-NULL above.
-        unsafe { write_out(out, v) };
-        Ok(())
-    })
+    // SAFETY: forwarded contract.
+    unsafe { boundary::query(shape, "shape", out, |s| f(&s.inner)) }
 }
 
 fn loop_of(s: &Shape2d, l: usize) -> Result<&crate::shape::Loop, FfiError> {

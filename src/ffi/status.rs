@@ -27,6 +27,11 @@ pub enum mx_status {
     MX_ERR_UNSUPPORTED = 6,
     /// An index (loop, element, vertex) is out of range.
     MX_ERR_INDEX_OUT_OF_RANGE = 7,
+    /// A progress callback asked to stop; nothing was computed or written.
+    MX_ERR_CANCELLED = 8,
+    /// A computation broke down numerically (the message and position in
+    /// `mx_error_info` say where). Please report it with the input.
+    MX_ERR_NUMERICAL = 9,
     /// The input has no loop.
     MX_ERR_EMPTY = 10,
     /// A loop has too few elements to be closed (needs 2 arcs or 3 segments).
@@ -86,6 +91,8 @@ impl mx_status {
             MX_ERR_PARSE => c"parse error",
             MX_ERR_UNSUPPORTED => c"unsupported input",
             MX_ERR_INDEX_OUT_OF_RANGE => c"index out of range",
+            MX_ERR_CANCELLED => c"cancelled by the progress callback",
+            MX_ERR_NUMERICAL => c"numerical breakdown",
             MX_ERR_EMPTY => c"the shape has no loops",
             MX_ERR_TOO_FEW_ELEMENTS => c"a loop has too few elements",
             MX_ERR_NON_FINITE => c"a number is NaN or infinite",
@@ -115,6 +122,8 @@ pub extern "C" fn mx_status_str(status: i32) -> *const c_char {
         MX_ERR_PARSE,
         MX_ERR_UNSUPPORTED,
         MX_ERR_INDEX_OUT_OF_RANGE,
+        MX_ERR_CANCELLED,
+        MX_ERR_NUMERICAL,
         MX_ERR_EMPTY,
         MX_ERR_TOO_FEW_ELEMENTS,
         MX_ERR_NON_FINITE,

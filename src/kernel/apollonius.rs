@@ -105,6 +105,33 @@ fn det3(m: [[f64; 3]; 3]) -> f64 {
 /// Every disk (centre, radius > 0) tangent to all three sites as their
 /// kinds say: zero, one or two, smallest radius first.
 pub fn tangent_disks(sites: [Site; 3]) -> Vec<(Point, f64)> {
+    // Solve around the sites' own origin: the equations carry |q|², whose
+    // rounding would swamp a small configuration far from (0, 0).
+    let origin = sites.iter().map(Site::anchor).fold(Point::default(), |a, b| a + b) * (1.0 / 3.0);
+    tangent_disks_at_origin(sites.map(|s| s.shifted(-origin))).into_iter().map(|(c, r)| (c + origin, r)).collect()
+}
+
+impl Site {
+    /// A point that fixes where the site is.
+    fn anchor(&self) -> Point {
+        match *self {
+            Site::Point(q) => q,
+            Site::Line { a, .. } => a,
+            Site::Circle { o, .. } => o,
+        }
+    }
+
+    /// The site moved by `d`.
+    fn shifted(&self, d: Point) -> Site {
+        match *self {
+            Site::Point(q) => Site::Point(q + d),
+            Site::Line { a, n } => Site::Line { a: a + d, n },
+            Site::Circle { o, r, outside } => Site::Circle { o: o + d, r, outside },
+        }
+    }
+}
+
+fn tangent_disks_at_origin(sites: [Site; 3]) -> Vec<(Point, f64)> {
     let eqs = sites.map(|s| s.equation());
     // Rows [A | −k]: A·x = −k with x = (x, y, r, u).
     let a: [[f64; 4]; 3] = eqs.map(|e| e.0);

@@ -251,23 +251,7 @@ pub fn solve(shape: &Shape2d, s: &Subshape, cuts: &[Cut], tol: f64) -> Result<Lo
         return Ok(LocalAxis { nodes, edges: Vec::new() });
     }
     b.collect_events(cuts)?;
-    let dump = std::env::var_os("MEDAX_DEBUG").is_some();
-    let dbg_sites = if dump {
-        b.sites
-            .iter()
-            .enumerate()
-            .map(|(i, x)| format!("  {i}: {:?} {:?} u {}..{} joined {}\n", x.prim, x.site, x.u0, x.u1, x.joined_next))
-            .collect::<String>()
-    } else {
-        String::new()
-    };
-    let r = b.walk();
-    if dump {
-        if let Err(e) = &r {
-            eprintln!("FAILED {e:?}\nsubshape {s:?}\nsites {dbg_sites}");
-        }
-    }
-    r
+    b.walk()
 }
 
 /// An auxiliary arc: counter-clockwise around `c` from `a` to `b`.
@@ -859,12 +843,6 @@ impl Builder<'_> {
                 }
             }
             let (Some(first), Some(last)) = (first, last) else {
-                if std::env::var_os("MEDAX_DEBUG").is_some() {
-                    for e in &self.events {
-                        eprintln!("event {:?} r {} {:?} feet {:?}", e.center, e.radius, e.kind, e.feet);
-                    }
-                    eprintln!("empty pocket of {d} from {a:?} to {b:?}");
-                }
                 return Err(BaseCaseError::EmptyPocket(self.events[d].center));
             };
             let (s1, w1a) = self.site_after(a);
@@ -889,15 +867,8 @@ impl Builder<'_> {
                 }
                 continue;
             }
-            let Some((c, r)) = self.branch(a, span, s1, s2, first.0, last.0) else {
-                if std::env::var_os("MEDAX_DEBUG").is_some() {
-                    for e in &self.events {
-                        eprintln!("event {:?} r {} {:?} feet {:?}", e.center, e.radius, e.kind, e.feet);
-                    }
-                    eprintln!("pocket of {d} from {a:?} to {b:?}: s1 {s1} s2 {s2} first {first:?} last {last:?}");
-                }
-                return Err(BaseCaseError::NoBranch(self.events[d].center));
-            };
+            let (c, r) =
+                self.branch(a, span, s1, s2, first.0, last.0).ok_or(BaseCaseError::NoBranch(self.events[d].center))?;
             let (feet, whole) = self.touching(c, r);
             let id = self.add_event(c, r, EventKind::Branch, feet, whole);
             work.push((d, j));
@@ -932,17 +903,6 @@ impl Builder<'_> {
                     let sl = slack(i);
                     ((-sl..=1.0 + sl).contains(&w)).then(|| self.offset(a, self.key(i, u, r)))
                 };
-                let dbg = std::env::var_os("MEDAX_DEBUG").is_some();
-                if dbg {
-                    let w = |i: usize| self.fraction(i, self.param(i, c, r));
-                    let worst = (0..self.n()).map(|i| self.distance(i, c).0 - r).fold(f64::INFINITY, f64::min);
-                    eprintln!(
-                        "cand t {t}: c {c:?} r {r} w {:?} offs {:?} x1 {x1} y2 {y2} worst {worst:e} leaves {}",
-                        [w(s1), w(s2), w(t)],
-                        [at(s1), at(s2), at(t)],
-                        self.leaves_subshape(c, r)
-                    );
-                }
                 let (Some(o1), Some(o2), Some(ot)) = (at(s1), at(s2), at(t)) else { continue };
                 let o2 = if o2 == 0.0 { span } else { o2 };
                 let (sl1, sl2, slt) = (slack(s1), slack(s2), slack(t));

@@ -42,6 +42,17 @@ impl MedialAxis2d {
             }
         }
         for pl in self.sampled(shape, pic.tolerance) {
+            // Spans whose radius changes a lot (straight edges have two
+            // samples) are split, interpolating, so the colour can follow.
+            let mut fine: Vec<(crate::kernel::Point, f64)> = vec![pl[0]];
+            for w in pl.windows(2) {
+                let k = (((w[1].1 - w[0].1).abs() / r_max) / 0.04).ceil().clamp(1.0, 50.0) as usize;
+                for j in 1..=k {
+                    let f = j as f64 / k as f64;
+                    fine.push((w[0].0 + (w[1].0 - w[0].0) * f, w[0].1 + (w[1].1 - w[0].1) * f));
+                }
+            }
+            let pl = fine;
             // One stroke per stretch of similar radius, so colour follows r.
             let mut k = 0;
             while k + 1 < pl.len() {

@@ -1,0 +1,286 @@
+// The medial axis through the installed C API: mx_axis_compute on a 4 x 2
+// rectangle (known axis) and on random star polygons, every node radius and
+// every sampled disk checked against a brute-force distance to the polygon
+// computed here; sites in the caller's numbering; options (threads,
+// progress, cancel); holes; size queries; the axis outliving its shape.
+//
+// Usage: c_api_axis [star-polygons]   (default 40)
+
+#include "test_support.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <random>
+#include <utility>
+#include <vector>
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct AxisDeleter {
+    void operator()(mx_axis* p) const noexcept { mx_axis_free(p); }
+};
+using AxisPtr = std::unique_ptr<mx_axis, AxisDeleter>;
+
+using Pt = std::pair<double, double>;
+using Polygon = std::vector<Pt>;
+
+double segment_distance(Pt p, Pt a, Pt b) {
+    const double dx = b.first - a.first, dy = b.second - a.second;
+    double t = ((p.first - a.first) * dx + (p.second - a.second) * dy) / (dx * dx + dy * dy);
+    t = std::min(1.0, std::max(0.0, t));
+    return std::hypot(p.first - a.first - t * dx, p.second - a.second - t * dy);
+}
+
+double boundary_distance(const Polygon& poly, Pt p) {
+    double best = std::numeric_limits<double>::infinity();
+    for (size_t k = 0; k < poly.size(); ++k) best = std::min(best, segment_distance(p, poly[k], poly[(k + 1) % poly.size()]));
+    return best;
+}
+
+bool inside(const Polygon& poly, Pt p) {  // crossing number
+    bool in = false;
+    for (size_t k = 0, j = poly.size() - 1; k < poly.size(); j = k++) {
+        const Pt a = poly[k], b = poly[j];
+        if ((a.second > p.second) != (b.second > p.second) &&
+            p.first < (b.first - a.first) * (p.second - a.second) / (b.second - a.second) + a.first)
+            in = !in;
+    }
+    return in;
+}
+
+double diagonal(const Polygon& poly) {
+    double x0 = poly[0].first, x1 = x0, y0 = poly[0].second, y1 = y0;
+    for (const Pt& p : poly) {
+        x0 = std::min(x0, p.first), x1 = std::max(x1, p.first);
+        y0 = std::min(y0, p.second), y1 = std::max(y1, p.second);
+    }
+    return std::hypot(x1 - x0, y1 - y0);
+}
+
+mt::ShapePtr make(const std::vector<Polygon>& loops) {
+    std::vector<std::vector<double>> xyb;
+    for (const Polygon& l : loops) {
+        xyb.emplace_back();
+        for (const Pt& p : l) xyb.back().insert(xyb.back().end(), {p.first, p.second, 0.0});
+    }
+    mx_shape2d* s = nullptr;
+    MT_CHECK_OK(mt::from_loops(xyb, &s));
+    return mt::ShapePtr(s);
+}
+
+AxisPtr compute(const mx_shape2d* s, const mx_axis_options* o = nullptr) {
+    mx_axis* a = nullptr;
+    MT_CHECK_OK(mx_axis_compute(s, o, &a));
+    return AxisPtr(a);
+}
+
+// Every item of an axis: `count` says how many, `get` reads one.
+template <typename T>
+std::vector<T> items(const mx_axis* a, mx_status (*count)(const mx_axis*, size_t*),
+                     mx_status (*get)(const mx_axis*, size_t, T*)) {
+    size_t n = 0;
+    MT_CHECK_OK(count(a, &n));
+    std::vector<T> v(n);
+    for (size_t i = 0; i < n; ++i) MT_CHECK_OK(get(a, i, &v[i]));
+    return v;
+}
+
+std::vector<mx_axis_node> nodes_of(const mx_axis* a) {
+    return items(a, mx_axis_node_count, mx_axis_get_node);
+}
+
+std::vector<mx_axis_edge> edges_of(const mx_axis* a) {
+    return items(a, mx_axis_edge_count, mx_axis_get_edge);
+}
+
+std::vector<double> samples_of(const mx_axis* a, size_t i, double tol) {
+    size_t n = 0;
+    if (!MT_CHECK_OK(mx_axis_edge_sample(a, i, tol, nullptr, 0, &n))) return {};
+    std::vector<double> xyr(3 * n);
+    size_t m = 0;
+    MT_CHECK_OK(mx_axis_edge_sample(a, i, tol, xyr.data(), xyr.size(), &m));
+    MT_CHECK_EQ(m, n);
+    return xyr;
+}
+
+// Distance from p to a site given in the caller's numbering of poly.
+double site_distance(const Polygon& poly, const mx_axis_site& s, Pt p) {
+    if (s.loop_index != 0 || s.index >= poly.size()) return std::numeric_limits<double>::infinity();
+    const Pt v = poly[s.index];
+    if (s.is_vertex == 1) return std::hypot(p.first - v.first, p.second - v.second);
+    return segment_distance(p, v, poly[(s.index + 1) % poly.size()]);
+}
+
+// Every node and sample: a disk of its radius inside the polygon, touching
+// the boundary (brute force) and both sites of its edge. Returns the number
+// of disks checked.
+size_t check_disks(const Polygon& poly, const mx_axis* a) {
+    const double diag = diagonal(poly), eps = 1e-9 * diag;
+    const auto nodes = nodes_of(a);
+    const auto edges = edges_of(a);
+    size_t bad_nodes = 0, bad_samples = 0, bad_sites = 0, checked = 0;
+    for (const mx_axis_node& n : nodes) {
+        const double d = boundary_distance(poly, {n.x, n.y});
+        bad_nodes += !(std::fabs(d - n.r) <= eps && (n.r == 0.0 || inside(poly, {n.x, n.y})));
+        bad_nodes += n.kind == MX_NODE_CORNER && n.r != 0.0;
+        ++checked;
+    }
+    for (size_t i = 0; i < edges.size(); ++i) {
+        const mx_axis_edge& e = edges[i];
+        if (!MT_CHECK(e.from < nodes.size() && e.to < nodes.size())) continue;
+        const std::vector<double> s = samples_of(a, i, 1e-5 * diag);
+        if (!MT_CHECK(s.size() >= 6)) continue;
+        MT_CHECK(s[0] == nodes[e.from].x && s[1] == nodes[e.from].y && s[2] == nodes[e.from].r);
+        MT_CHECK(s[s.size() - 3] == nodes[e.to].x && s[s.size() - 1] == nodes[e.to].r);
+        for (size_t k = 0; k < s.size(); k += 3) {
+            const Pt p{s[k], s[k + 1]};
+            const double r = s[k + 2];
+            bad_samples += !(std::fabs(boundary_distance(poly, p) - r) <= eps);
+            for (const mx_axis_site& site : e.sites) bad_sites += !(std::fabs(site_distance(poly, site, p) - r) <= eps);
+            ++checked;
+        }
+    }
+    MT_CHECK_EQ(bad_nodes, size_t{0});
+    MT_CHECK_EQ(bad_samples, size_t{0});
+    MT_CHECK_EQ(bad_sites, size_t{0});
+    return checked;
+}
+
+void test_rectangle() {
+    mt::begin_case("rectangle 4 x 2");
+    const Polygon rect = {{0, 0}, {4, 0}, {4, 2}, {0, 2}};
+    auto s = make({rect});
+    if (!s) return;
+    AxisPtr a = compute(s.get());
+    s.reset();  // the axis owns what it needs
+    if (!a) return;
+    const auto nodes = nodes_of(a.get());
+    MT_CHECK_EQ(nodes.size(), size_t{6});
+    size_t branches = 0, corners = 0;
+    for (const mx_axis_node& n : nodes) {
+        if (n.kind == MX_NODE_BRANCH) {
+            ++branches;
+            MT_CHECK(std::fabs(n.x - 1.0) < 1e-9 || std::fabs(n.x - 3.0) < 1e-9);
+            MT_CHECK_NEAR(n.y, 1.0, 1e-9);
+            MT_CHECK_NEAR(n.r, 1.0, 1e-9);
+        }
+        corners += n.kind == MX_NODE_CORNER;
+    }
+    MT_CHECK_EQ(branches, size_t{2});
+    MT_CHECK_EQ(corners, size_t{4});
+    const auto edges = edges_of(a.get());
+    MT_CHECK_EQ(edges.size(), size_t{5});
+    for (const mx_axis_edge& e : edges) MT_CHECK_EQ(static_cast<int>(e.kind), static_cast<int>(MX_CONIC_LINE));
+    check_disks(rect, a.get());
+
+    // Errors leave out-params alone.
+    size_t n = 77;
+    MT_CHECK_STATUS(mx_axis_node_count(nullptr, &n), MX_ERR_NULL_ARGUMENT);
+    mx_axis_node node{7, 7, 7, MX_NODE_LEAF};
+    MT_CHECK_STATUS(mx_axis_get_node(a.get(), 6, &node), MX_ERR_INDEX_OUT_OF_RANGE);
+    MT_CHECK_EQ(node.x, 7.0);
+    double buf[5] = {7, 7, 7, 7, 7};
+    MT_CHECK_STATUS(mx_axis_edge_sample(a.get(), 0, 1e-3, buf, 5, &n), MX_ERR_BUFFER_TOO_SMALL);
+    MT_CHECK_STATUS(mx_axis_edge_sample(a.get(), 0, 0.0, buf, 5, &n), MX_ERR_INVALID_ARGUMENT);
+    MT_CHECK_STATUS(mx_axis_edge_sample(a.get(), 5, 1e-3, buf, 5, &n), MX_ERR_INDEX_OUT_OF_RANGE);
+    MT_CHECK_EQ(n, size_t{77});
+    MT_CHECK_EQ(buf[0], 7.0);
+}
+
+// A random star polygon around the origin: one vertex per angular sector,
+// jittered, radius in [0.3, 1] x R; counter-clockwise unless `cw`.
+Polygon star(std::mt19937_64& rng, size_t n, double R, bool cw) {
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    Polygon p;
+    for (size_t k = 0; k < n; ++k) {
+        const double t = 2.0 * kPi * (static_cast<double>(k) + 0.1 + 0.8 * u(rng)) / static_cast<double>(n);
+        const double r = R * (0.3 + 0.7 * u(rng));
+        p.emplace_back(r * std::cos(t), r * std::sin(t));
+    }
+    if (cw) std::reverse(p.begin(), p.end());
+    return p;
+}
+
+void test_stars(size_t count) {
+    std::mt19937_64 rng(20240611);
+    size_t disks = 0, computed = 0;
+    for (size_t i = 0; i < count; ++i) {
+        const size_t n = 5 + i * 7 % 120;
+        const double R = std::exp(std::uniform_real_distribution<double>(std::log(0.5), std::log(500.0))(rng));
+        const Polygon p = star(rng, n, R, i % 2 == 1);
+        mt::begin_case("star #" + std::to_string(i) + " n=" + std::to_string(n));
+        auto s = make({p});
+        if (!s) continue;
+        mx_axis_options o;
+        mx_axis_options_default(&o);
+        o.threads = i % 3;  // 0 (shared pool), 1, 2
+        mx_axis* raw = nullptr;
+        const mx_status st = mx_axis_compute(s.get(), &o, &raw);
+        AxisPtr a(raw);
+        if (!MT_CHECK_OK(st)) continue;
+        ++computed;
+        disks += check_disks(p, a.get());
+    }
+    std::cout << "c_api_axis: " << computed << " star axes, " << disks << " disks checked\n";
+}
+
+struct Progress {
+    std::vector<double> seen;
+    bool cancel = false;
+};
+
+int on_progress(double fraction, void* user) {
+    auto* p = static_cast<Progress*>(user);
+    p->seen.push_back(fraction);
+    return p->cancel ? 1 : 0;
+}
+
+void test_options_and_errors() {
+    mt::begin_case("options, progress, cancel, holes");
+    const Polygon rect = {{0, 0}, {4, 0}, {4, 2}, {0, 2}};
+    auto s = make({rect});
+    if (!s) return;
+    mx_axis_options o;
+    MT_CHECK_OK(mx_axis_options_default(&o));
+    MT_CHECK_EQ(o.struct_size, sizeof(mx_axis_options));
+    MT_CHECK_EQ(o.threads, size_t{0});
+    Progress seen;
+    o.progress = on_progress;
+    o.user = &seen;
+    auto a = compute(s.get(), &o);
+    MT_CHECK(a != nullptr);
+    MT_CHECK(seen.seen == std::vector<double>({0.0, 1.0}));
+
+    Progress cancel;
+    cancel.cancel = true;
+    o.user = &cancel;
+    mx_axis* out = reinterpret_cast<mx_axis*>(static_cast<std::uintptr_t>(0x5EE7u));
+    MT_CHECK_STATUS(mx_axis_compute(s.get(), &o, &out), MX_ERR_CANCELLED);
+    MT_CHECK(out == reinterpret_cast<mx_axis*>(static_cast<std::uintptr_t>(0x5EE7u)));
+    MT_CHECK_EQ(cancel.seen.size(), size_t{1});
+
+    o.progress = nullptr;
+    o.threads = MX_AXIS_MAX_THREADS + 1;
+    MT_CHECK_STATUS(mx_axis_compute(s.get(), &o, &out), MX_ERR_INVALID_ARGUMENT);
+    MT_CHECK_STATUS(mx_axis_compute(nullptr, nullptr, &out), MX_ERR_NULL_ARGUMENT);
+
+    auto holed = make({rect, {{1, 0.5}, {1, 1.5}, {3, 1.5}, {3, 0.5}}});
+    MT_CHECK_STATUS(mx_axis_compute(holed.get(), nullptr, &out), MX_ERR_UNSUPPORTED);
+    MT_CHECK(out == reinterpret_cast<mx_axis*>(static_cast<std::uintptr_t>(0x5EE7u)));
+    MT_CHECK_EQ(mt::last_info().loop_index, int64_t{1});
+    mx_axis_free(nullptr);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const size_t stars = argc > 1 ? static_cast<size_t>(std::max(1, std::atoi(argv[1]))) : 40;
+    test_rectangle();
+    test_stars(stars);
+    test_options_and_errors();
+    return mt::finish("c_api_axis");
+}

@@ -1,0 +1,415 @@
+//! C functions for the medial axis of a 2D shape: compute, inspect, sample,
+//! free. Mirrors `crate::plane` (`medial_axis`, `MedialAxis2d`); no geometry
+//! is computed here.
+
+use super::boundary::{self, check_out, deref, guard, index_error, read_options, write_out};
+use super::last_error::FfiError;
+use super::shape2d::mx_shape2d;
+use super::status::mx_status;
+use crate::kernel::bisector::ConicKind;
+use crate::plane::{medial_axis, AxisEdge, AxisError, AxisOptions, MedialAxis2d, NodeKind, Primitive};
+use crate::shape::Shape2d;
+use std::ffi::{c_int, c_void};
+
+/// A computed medial axis of a 2D shape: nodes (maximal disks) joined by
+/// conic edges. Opaque; create with `mx_axis_compute`, release with
+/// `mx_axis_free`. It owns a copy of the shape, so it stays valid after the
+/// shape is freed. Immutable: a `const mx_axis*` may be used from several
+/// threads at once.
+#[allow(non_camel_case_types)]
+pub struct mx_axis {
+    shape: Shape2d,
+    axis: MedialAxis2d,
+}
+
+/// Progress callback: `fraction` in [0, 1] of the work done; `user` is
+/// `mx_axis_options.user`. Return 0 to go on, nonzero to cancel. Called on
+/// the thread that called `mx_axis_compute`; it must not throw or unwind.
+#[allow(non_camel_case_types)]
+pub type mx_progress_fn = Option<unsafe extern "C" fn(fraction: f64, user: *mut c_void) -> c_int>;
+
+/// Options for `mx_axis_compute`. Initialise with `mx_axis_options_default`
+/// (which sets `struct_size`), then change fields.
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Debug, Clone, Copy)]
+pub struct mx_axis_options {
+    /// `sizeof(mx_axis_options)` as the caller was compiled; lets later
+    /// versions add fields without breaking old callers.
+    pub struct_size: usize,
+    /// Seed of the divide step's random choices. The axis is the same for
+    /// every seed up to rounding, and bit-identical for one seed whatever
+    /// the thread count.
+    pub seed: u64,
+    /// Worker threads: 0 = the shared pool (all cores, or
+    /// `RAYON_NUM_THREADS`), else a pool of exactly this many threads for
+    /// this call (at most `MX_AXIS_MAX_THREADS`).
+    pub threads: usize,
+    /// Optional progress callback (NULL = none). Coarse for now: called with
+    /// 0 before the computation and with 1 after it. A nonzero return at 0
+    /// cancels (`MX_ERR_CANCELLED`); the return value at 1 is ignored (the
+    /// axis is complete by then).
+    pub progress: mx_progress_fn,
+    /// Passed unchanged to `progress`.
+    pub user: *mut c_void,
+}
+
+/// The largest accepted `mx_axis_options.threads`.
+pub const MX_AXIS_MAX_THREADS: usize = 1024;
+
+/// `AxisOptions::default()` in C form.
+fn default_options() -> mx_axis_options {
+    mx_axis_options {
+        struct_size: std::mem::size_of::<mx_axis_options>(),
+        seed: AxisOptions::default().seed,
+        threads: 0,
+        progress: None,
+        user: std::ptr::null_mut(),
+    }
+}
+
+/// Size of `mx_axis_options` in release 0.1, the smallest accepted.
+const OPTIONS_V1_SIZE: usize = std::mem::size_of::<mx_axis_options>();
+
+/// Fills `out` with the default options (and its `struct_size`).
+///
+/// # Safety
+/// `out` must be NULL or point to a writable `mx_axis_options`.
+#[no_mangle]
+pub unsafe extern "C" fn mx_axis_options_default(out: *mut mx_axis_options) -> mx_status {
+    guard(|| {
+        check_out(out, "out")?;
+        // SAFETY: checked non-NULL above.
+        unsafe { write_out(out, default_options()) };
+        Ok(())
+    })
+}
+
+/// What a node of the medial axis is.
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum mx_node_kind {
+    /// Three or more edges meet: the disk touches three or more primitives.
+    MX_NODE_BRANCH = 0,
+    /// A convex vertex of the boundary: radius 0, an end of the axis.
+    MX_NODE_CORNER = 1,
+    /// The centre of an arc whose whole circle lies inside the shape: an end
+    /// of the axis at a curvature maximum.
+    MX_NODE_LEAF = 2,
+    /// Two edges meet and the pair of boundary primitives changes.
+    MX_NODE_JOINT = 3,
+}
+
+/// The kind of conic an edge of the medial axis lies on.
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum mx_conic_kind {
+    /// A straight line.
+    MX_CONIC_LINE = 0,
+    /// A parabola.
+    MX_CONIC_PARABOLA = 1,
+    /// An ellipse.
+    MX_CONIC_ELLIPSE = 2,
+    /// A hyperbola branch.
+    MX_CONIC_HYPERBOLA = 3,
+}
+
+/// A node of the medial axis: the maximal disk centred there.
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct mx_axis_node {
+    /// Centre x, model units.
+    pub x: f64,
+    /// Centre y, model units.
+    pub y: f64,
+    /// Radius of the maximal disk, model units (0 at a convex corner).
+    pub r: f64,
+    /// What happens here.
+    pub kind: mx_node_kind,
+}
+
+/// A boundary primitive an edge is equidistant from, in the caller's input
+/// numbering (as given to `mx_shape2d_from_*`, before any loop reversal).
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct mx_axis_site {
+    /// Loop index (0 = outer boundary).
+    pub loop_index: usize,
+    /// Input element index within the loop when `is_vertex` is 0; input
+    /// vertex index (a reflex vertex) when `is_vertex` is 1.
+    pub index: usize,
+    /// 1 for a reflex vertex, 0 for the inside of a segment or arc.
+    pub is_vertex: i32,
+}
+
+/// An edge of the medial axis: a piece of the conic of centres equidistant
+/// from its two sites.
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct mx_axis_edge {
+    /// Node index at the start.
+    pub from: usize,
+    /// Node index at the end.
+    pub to: usize,
+    /// The conic the edge lies on.
+    pub kind: mx_conic_kind,
+    /// The two sites; `sites[0]` is on the left when walking from `from` to
+    /// `to`.
+    pub sites: [mx_axis_site; 2],
+}
+
+fn axis_error(e: AxisError) -> FfiError {
+    let message = e.to_string();
+    match e {
+        AxisError::HolesUnsupported => {
+            let mut f = FfiError::new(mx_status::MX_ERR_UNSUPPORTED, message);
+            f.info.loop_index = 1;
+            f
+        }
+        AxisError::Numerical(p, _) => {
+            let mut f = FfiError::new(mx_status::MX_ERR_NUMERICAL, message);
+            f.info.has_position = 1;
+            f.info.x = p.x;
+            f.info.y = p.y;
+            f
+        }
+    }
+}
+
+/// Options from C (NULL = defaults), checked.
+unsafe fn options(p: *const mx_axis_options) -> Result<mx_axis_options, FfiError> {
+    // SAFETY: forwarded contract; `mx_axis_options` starts with `struct_size`.
+    let o = unsafe { read_options(p, default_options(), OPTIONS_V1_SIZE, "mx_axis_options")? }
+        .unwrap_or_else(default_options);
+    if o.threads > MX_AXIS_MAX_THREADS {
+        return Err(FfiError::new(
+            mx_status::MX_ERR_INVALID_ARGUMENT,
+            format!("mx_axis_options.threads = {}: use 0 (all cores) or at most {MX_AXIS_MAX_THREADS}", o.threads),
+        ));
+    }
+    Ok(o)
+}
+
+/// Reports `fraction` to the caller's callback; true when it asks to cancel.
+fn progress(o: &mx_axis_options, fraction: f64) -> bool {
+    // SAFETY: the caller supplied the callback and its `user` pointer for
+    // this call; the callback's contract is documented on `mx_progress_fn`.
+    o.progress.is_some_and(|f| unsafe { f(fraction, o.user) } != 0)
+}
+
+/// Computes the medial axis of `shape` (thesis Algorithm 2) and writes a new
+/// handle to `*out`. `options` may be NULL (defaults). The handle keeps its
+/// own copy of the shape. Fails with `MX_ERR_UNSUPPORTED` for shapes with
+/// holes (not supported yet), `MX_ERR_NUMERICAL` when the construction
+/// breaks down (position in `mx_error_info`), `MX_ERR_CANCELLED` when the
+/// progress callback asks to stop, `MX_ERR_INVALID_ARGUMENT` for bad
+/// options; `*out` is then untouched.
+///
+/// # Safety
+/// `shape` NULL or a live handle; `options` NULL or valid; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_axis_compute(
+    shape: *const mx_shape2d,
+    options: *const mx_axis_options,
+    out: *mut *mut mx_axis,
+) -> mx_status {
+    guard(|| {
+        check_out(out, "out")?;
+        // SAFETY: caller contract.
+        let (s, o) = unsafe { (deref(shape, "shape")?, self::options(options)?) };
+        if progress(&o, 0.0) {
+            return Err(FfiError::new(
+                mx_status::MX_ERR_CANCELLED,
+                "mx_axis_compute cancelled by the progress callback",
+            ));
+        }
+        let opts = AxisOptions { seed: o.seed, ..AxisOptions::default() };
+        let run = || medial_axis(&s.inner, &opts);
+        let axis = if o.threads == 0 {
+            run()
+        } else {
+            let pool = rayon::ThreadPoolBuilder::new().num_threads(o.threads).build().map_err(|e| {
+                FfiError::new(mx_status::MX_ERR_INVALID_ARGUMENT, format!("cannot start {} threads: {e}", o.threads))
+            })?;
+            pool.install(run)
+        }
+        .map_err(axis_error)?;
+        let h = Box::new(mx_axis { shape: s.inner.clone(), axis });
+        progress(&o, 1.0);
+        let h = Box::into_raw(h);
+        // SAFETY: checked non-NULL above.
+        unsafe { write_out(out, h) };
+        Ok(())
+    })
+}
+
+/// Releases an axis. NULL is a no-op.
+///
+/// # Safety
+/// `axis` must be NULL or a handle from medax not yet freed.
+#[no_mangle]
+pub unsafe extern "C" fn mx_axis_free(axis: *mut mx_axis) {
+    if !axis.is_null() {
+        // SAFETY: per the contract, it came from Box::into_raw in `mx_axis_compute`.
+        drop(unsafe { Box::from_raw(axis) });
+    }
+}
+
+/// Runs `f` on an axis handle and writes its result to `out`.
+unsafe fn query<T>(axis: *const mx_axis, out: *mut T, f: impl FnOnce(&mx_axis) -> Result<T, FfiError>) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { boundary::query(axis, "axis", out, f) }
+}
+
+fn edge_of(a: &mx_axis, i: usize) -> Result<&AxisEdge, FfiError> {
+    a.axis.edges.get(i).ok_or_else(|| index_error("edge", i, a.axis.edges.len()))
+}
+
+fn site(shape: &Shape2d, p: Primitive) -> mx_axis_site {
+    match p {
+        Primitive::Element(r) => mx_axis_site {
+            loop_index: r.loop_index,
+            index: shape.input_element_index(r.loop_index, r.element),
+            is_vertex: 0,
+        },
+        Primitive::Vertex { loop_index, vertex } => {
+            mx_axis_site { loop_index, index: shape.input_vertex_index(loop_index, vertex), is_vertex: 1 }
+        }
+    }
+}
+
+/// Number of nodes.
+///
+/// # Safety
+/// `axis` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_axis_node_count(axis: *const mx_axis, out: *mut usize) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { query(axis, out, |a| Ok(a.axis.nodes.len())) }
+}
+
+/// Number of edges.
+///
+/// # Safety
+/// `axis` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_axis_edge_count(axis: *const mx_axis, out: *mut usize) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { query(axis, out, |a| Ok(a.axis.edges.len())) }
+}
+
+/// Node `index` (`MX_ERR_INDEX_OUT_OF_RANGE` unless below
+/// `mx_axis_node_count`).
+///
+/// # Safety
+/// `axis` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_axis_get_node(axis: *const mx_axis, index: usize, out: *mut mx_axis_node) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe {
+        query(axis, out, |a| {
+            let nodes = &a.axis.nodes;
+            let n = nodes.get(index).ok_or_else(|| index_error("node", index, nodes.len()))?;
+            let kind = match n.kind {
+                NodeKind::Branch => mx_node_kind::MX_NODE_BRANCH,
+                NodeKind::Corner => mx_node_kind::MX_NODE_CORNER,
+                NodeKind::Leaf => mx_node_kind::MX_NODE_LEAF,
+                NodeKind::Joint => mx_node_kind::MX_NODE_JOINT,
+            };
+            Ok(mx_axis_node { x: n.point.x, y: n.point.y, r: n.radius, kind })
+        })
+    }
+}
+
+/// Edge `index` (`MX_ERR_INDEX_OUT_OF_RANGE` unless below
+/// `mx_axis_edge_count`): its nodes, conic kind and sites.
+///
+/// # Safety
+/// `axis` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_axis_get_edge(axis: *const mx_axis, index: usize, out: *mut mx_axis_edge) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe {
+        query(axis, out, |a| {
+            let e = edge_of(a, index)?;
+            let kind = match e.kind {
+                ConicKind::Line => mx_conic_kind::MX_CONIC_LINE,
+                ConicKind::Parabola => mx_conic_kind::MX_CONIC_PARABOLA,
+                ConicKind::Ellipse => mx_conic_kind::MX_CONIC_ELLIPSE,
+                ConicKind::Hyperbola => mx_conic_kind::MX_CONIC_HYPERBOLA,
+            };
+            Ok(mx_axis_edge { from: e.from, to: e.to, kind, sites: e.sites.map(|p| site(&a.shape, p)) })
+        })
+    }
+}
+
+/// The smallest accepted sampling tolerance, as a fraction of the shape's
+/// bounding-box diagonal (finer requests would need billions of samples).
+pub const MX_AXIS_MIN_RELATIVE_SAMPLE_TOLERANCE: f64 = 1e-12;
+
+/// Samples edge `index` from its `from` node to its `to` node as `x, y, r`
+/// triples (disk centre and radius, model units): the polyline through the
+/// centres deviates from the true conic by at most `tolerance` model units
+/// (positive, at least `MX_AXIS_MIN_RELATIVE_SAMPLE_TOLERANCE` × the
+/// bounding-box diagonal). The first and last triples are the end nodes.
+///
+/// `capacity` is the number of doubles `xyr` holds (3 per sample, as in
+/// `mx_shape2d_loop_vertices`); `*count` receives the number of samples.
+/// Size query: `capacity` 0 (`xyr` may be NULL) writes only `*count` and
+/// returns `MX_OK`. Otherwise a buffer shorter than 3 × the sample count
+/// gives `MX_ERR_BUFFER_TOO_SMALL` with nothing written. Sampling is
+/// deterministic, so a query and a fill with the same arguments agree.
+///
+/// # Safety
+/// `axis` NULL or a live handle; `xyr` NULL or `capacity` writable doubles;
+/// `count` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_axis_edge_sample(
+    axis: *const mx_axis,
+    index: usize,
+    tolerance: f64,
+    xyr: *mut f64,
+    capacity: usize,
+    count: *mut usize,
+) -> mx_status {
+    guard(|| {
+        check_out(count, "count")?;
+        // SAFETY: caller contract.
+        let a = unsafe { deref(axis, "axis")? };
+        let e = edge_of(a, index)?;
+        let min = MX_AXIS_MIN_RELATIVE_SAMPLE_TOLERANCE * a.shape.bbox().diagonal();
+        if !(tolerance.is_finite() && tolerance >= min) {
+            return Err(FfiError::new(
+                mx_status::MX_ERR_INVALID_ARGUMENT,
+                format!("tolerance = {tolerance}: use a finite length of at least {min} (1e-12 x the diagonal)"),
+            ));
+        }
+        let samples = e.sample(&a.shape, &a.axis.nodes, tolerance);
+        let need = 3 * samples.len();
+        if capacity != 0 {
+            if capacity < need {
+                return Err(FfiError::new(
+                    mx_status::MX_ERR_BUFFER_TOO_SMALL,
+                    format!("edge {index} needs {need} doubles ({} samples), buffer holds {capacity}", samples.len()),
+                ));
+            }
+            check_out(xyr, "xyr")?;
+            for (i, (c, r)) in samples.iter().enumerate() {
+                // SAFETY: 3i + 2 < need <= capacity, and `xyr` holds `capacity` doubles.
+                unsafe {
+                    *xyr.add(3 * i) = c.x;
+                    *xyr.add(3 * i + 1) = c.y;
+                    *xyr.add(3 * i + 2) = *r;
+                }
+            }
+        }
+        // SAFETY: checked non-NULL above.
+        unsafe { write_out(count, samples.len()) };
+        Ok(())
+    })
+}
