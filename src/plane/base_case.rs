@@ -659,6 +659,14 @@ impl Builder<'_> {
                 }
             }
         }
+        // A dividing disk tangent at `p` is the maximal disk there (its
+        // other contacts may lie outside this subshape).
+        for (_, _, arc) in &self.aux {
+            let v = arc.c - p;
+            if (v.norm() - arc.r).abs() <= self.tol && v.cross(nrm).abs() <= self.tol && v.dot(nrm) > 0.0 {
+                best = best.min(arc.r);
+            }
+        }
         best.is_finite().then(|| (g.center(best), best))
     }
 

@@ -98,7 +98,36 @@ pub fn medial_axis(shape: &Shape2d, opts: &AxisOptions) -> Result<MedialAxis2d, 
         return Err(AxisError::HolesUnsupported);
     }
     let d = decompose_with(shape, opts.seed, opts.leaf_parts.max(3));
-    glue(shape, &d)
+    let axis = glue(shape, &d)?;
+    check_disks(shape, &axis)?;
+    Ok(axis)
+}
+
+/// Interior points of each edge whose disks [`check_disks`] verifies.
+const CHECKS_PER_EDGE: usize = 8;
+
+/// Every node's disk and the disks at interior points of every edge must touch
+/// the boundary and hold none of it (nearest-element queries on the shared
+/// index, independent of how the axis was built): a wrong pair of
+/// primitives on an edge shows up here and is reported, not returned.
+fn check_disks(shape: &Shape2d, axis: &MedialAxis2d) -> Result<(), AxisError> {
+    let finder = super::DiskFinder::new(shape);
+    let slack = 64.0 * shape.tolerance();
+    let bad = |c: Point, r: f64| finder.nearest(c).is_none_or(|(_, d)| (d - r).abs() > slack);
+    if let Some(n) = axis.nodes.par_iter().find_any(|n| bad(n.point, n.radius)) {
+        return Err(AxisError::Numerical(n.point, "a node's disk is not maximal"));
+    }
+    let wrong = axis.edges.par_iter().find_map_any(|e| {
+        (1..CHECKS_PER_EDGE).find_map(|k| match e.eval(shape, &axis.nodes, k as f64 / CHECKS_PER_EDGE as f64) {
+            Some((c, r)) if !bad(c, r) => None,
+            Some((c, _)) => Some(c),
+            None => Some(axis.nodes[e.from].point),
+        })
+    });
+    match wrong {
+        Some(p) => Err(AxisError::Numerical(p, "an edge's disks are not maximal")),
+        None => Ok(()),
+    }
 }
 
 /// Solves every leaf and stuck subshape (in parallel) and glues them.
