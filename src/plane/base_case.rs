@@ -806,6 +806,28 @@ impl Builder<'_> {
         }
     }
 
+    /// Footpoint parameters on site `i` of the disks of events `d` and `e`,
+    /// from the disks themselves: cycle keys are clamped to the site's
+    /// range, and a clamped end would send the edge's curve past its node.
+    /// A corner (radius 0) or a disk concentric with an arc has no
+    /// direction: its key (fractions `w`) stands in.
+    fn params_between(&self, i: usize, d: usize, e: usize, w: (f64, f64)) -> (f64, f64) {
+        let at = |ev: usize, w: f64| {
+            let (c, r) = (self.events[ev].center, self.events[ev].radius);
+            let degenerate = match self.sites[i].site {
+                Site::Point(q) => c.dist(q) <= self.tol,
+                Site::Circle { o, .. } => c.dist(o) <= self.tol,
+                Site::Line { .. } => false,
+            };
+            if degenerate || r == 0.0 {
+                self.u_at(i, w)
+            } else {
+                self.param(i, c, r)
+            }
+        };
+        (at(d, w.0), at(e, w.1))
+    }
+
     fn u_at(&self, i: usize, w: f64) -> f64 {
         let s = &self.sites[i];
         s.u0 + (s.u1 - s.u0) * w
@@ -870,7 +892,7 @@ impl Builder<'_> {
                         from: d,
                         to: e,
                         sites: [self.sites[s2].prim, self.sites[s1].prim],
-                        params: [(self.u_at(s2, w2b), self.u_at(s2, w2e)), (self.u_at(s1, w1a), self.u_at(s1, w1e))],
+                        params: [self.params_between(s2, d, e, (w2b, w2e)), self.params_between(s1, d, e, (w1a, w1e))],
                     });
                 }
                 continue;

@@ -118,7 +118,10 @@ fn check_disks(shape: &Shape2d, axis: &MedialAxis2d) -> Result<(), AxisError> {
         return Err(AxisError::Numerical(n.point, "a node's disk is not maximal"));
     }
     let wrong = axis.edges.par_iter().find_map_any(|e| {
-        (1..CHECKS_PER_EDGE).find_map(|k| match e.eval(shape, &axis.nodes, k as f64 / CHECKS_PER_EDGE as f64) {
+        // Evenly spaced, plus close to both ends where a wrong footpoint
+        // range shows first.
+        let at = (1..CHECKS_PER_EDGE).map(|k| k as f64 / CHECKS_PER_EDGE as f64).chain([1.0 / 64.0, 63.0 / 64.0]);
+        at.into_iter().find_map(|s| match e.eval(shape, &axis.nodes, s) {
             Some((c, r)) if !bad(c, r) => None,
             Some((c, _)) => Some(c),
             None => Some(axis.nodes[e.from].point),
