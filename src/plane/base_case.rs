@@ -755,8 +755,10 @@ impl Builder<'_> {
     /// tolerance of the circle (`c`, `r`): a footpoint smeared by rounding
     /// into two (a disk through a vertex just beside its tangency point).
     fn hugs(&self, i: usize, w0: f64, w1: f64, c: Point, r: f64) -> bool {
-        if let Site::Point(q) = self.sites[i].site {
-            return (c.dist(q) - r).abs() <= self.tol;
+        if let Site::Point(_) = self.sites[i].site {
+            // A disk through the vertex touches it in one direction only;
+            // the rest of the fan is real boundary for the axis.
+            return false;
         }
         (0..=8).all(|k| {
             let w = w0 + (w1 - w0) * k as f64 / 8.0;
@@ -849,9 +851,6 @@ impl Builder<'_> {
             }
             let feet = &self.events[d].feet;
             let (a, b) = (feet[j], feet[(j + 1) % feet.len()]);
-            if self.pocket_is_empty(d, a, b) {
-                continue;
-            }
             let span = if a == b { 2.0 * self.n() as f64 } else { self.offset(a, b) };
             // The first footpoints of other events met from either end.
             let (mut first, mut last): (Option<Met>, Option<Met>) = (None, None);
@@ -872,7 +871,12 @@ impl Builder<'_> {
                     }
                 }
             }
+            // A pocket with no other event in it must hold no boundary (but
+            // slivers); one with events is walked even if it is thin.
             let (Some(first), Some(last)) = (first, last) else {
+                if self.pocket_is_empty(d, a, b) {
+                    continue;
+                }
                 return Err(BaseCaseError::EmptyPocket(self.events[d].center));
             };
             let (s1, w1a) = self.site_after(a);
@@ -897,8 +901,18 @@ impl Builder<'_> {
                 }
                 continue;
             }
-            let (c, r) =
-                self.branch(a, span, s1, s2, first.0, last.0).ok_or(BaseCaseError::NoBranch(self.events[d].center))?;
+            let Some((c, r)) = self.branch(a, span, s1, s2, first.0, last.0) else {
+                if std::env::var_os("MEDAX_DEBUG").is_some() {
+                    for (i, x) in self.sites.iter().enumerate() {
+                        eprintln!("site {i}: {:?} {:?} u {}..{} joined {}", x.prim, x.site, x.u0, x.u1, x.joined_next);
+                    }
+                    for e in &self.events {
+                        eprintln!("event {:?} r {} {:?} feet {:?}", e.center, e.radius, e.kind, e.feet);
+                    }
+                    eprintln!("pocket of {d} from {a:?} to {b:?}: s1 {s1} s2 {s2} first {first:?} last {last:?}");
+                }
+                return Err(BaseCaseError::NoBranch(self.events[d].center));
+            };
             let (feet, whole) = self.touching(c, r);
             let id = self.add_event(c, r, EventKind::Branch, feet, whole);
             work.push((d, j));
@@ -906,6 +920,22 @@ impl Builder<'_> {
         }
         let nodes =
             self.events.iter().map(|e| LocalNode { center: e.center, radius: e.radius, kind: e.kind }).collect();
+        // A subshape's axis is a tree: a pocket walked to the wrong event
+        // shows up as a missing or a doubled edge.
+        if edges.len() + 1 != self.events.len() {
+            if std::env::var_os("MEDAX_DEBUG").is_some() {
+                for (i, x) in self.sites.iter().enumerate() {
+                    eprintln!("site {i}: {:?} {:?} u {}..{} joined {}", x.prim, x.site, x.u0, x.u1, x.joined_next);
+                }
+                for e in &self.events {
+                    eprintln!("event {:?} r {} {:?} feet {:?}", e.center, e.radius, e.kind, e.feet);
+                }
+                for e in &edges {
+                    eprintln!("edge {} {}", e.from, e.to);
+                }
+            }
+            return Err(BaseCaseError::Inconsistent(self.events.first().map_or(Point::default(), |e| e.center)));
+        }
         Ok(LocalAxis { nodes, edges })
     }
 
@@ -933,6 +963,16 @@ impl Builder<'_> {
                     let sl = slack(i);
                     ((-sl..=1.0 + sl).contains(&w)).then(|| self.offset(a, self.key(i, u, r)))
                 };
+                if std::env::var_os("MEDAX_DEBUG").is_some() {
+                    let w = |i: usize| self.fraction(i, self.param(i, c, r));
+                    let worst = (0..self.n()).map(|i| self.distance(i, c).0 - r).fold(f64::INFINITY, f64::min);
+                    eprintln!(
+                        "cand t {t}: c {c:?} r {r} w {:?} offs {:?} x1 {x1} y2 {y2} worst {worst:e} leaves {}",
+                        [w(s1), w(s2), w(t)],
+                        [at(s1), at(s2), at(t)],
+                        self.leaves_subshape(c, r)
+                    );
+                }
                 let (Some(o1), Some(o2), Some(ot)) = (at(s1), at(s2), at(t)) else { continue };
                 let o2 = if o2 == 0.0 { span } else { o2 };
                 let (sl1, sl2, slt) = (slack(s1), slack(s2), slack(t));
@@ -940,7 +980,7 @@ impl Builder<'_> {
                     continue;
                 }
                 // Empty: no site closer than the radius, inside the subshape.
-                if (0..self.n()).any(|i| self.distance(i, c).0 < r - self.tol) || self.leaves_subshape(c, r) {
+                if (0..self.n()).any(|i| self.distance(i, c).0 < r - self.tol) {
                     continue;
                 }
                 if best.is_none_or(|b| o1 < b.0) {
