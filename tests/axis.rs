@@ -204,7 +204,7 @@ fn random_star_polygons() {
 
 #[test]
 fn smooth_biarc_flowers() {
-    for n in [20, 100] {
+    for n in [20, 100, 400, 2000] {
         let s = shape(samples::flower_arcs(n));
         let a = axis_of(&s);
         check(&s, &a, 100, n as u64);

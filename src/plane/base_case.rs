@@ -534,8 +534,8 @@ impl Builder<'_> {
         for i in 0..self.n() {
             if let Site::Circle { o, r: rc, .. } = self.sites[i].site {
                 if c.dist(o) <= self.tol && (rc - r).abs() <= self.tol {
-                    feet.push(self.key(i, self.sites[i].u0, r));
-                    feet.push(self.key(i, self.sites[i].u1, r));
+                    feet.push((i, self.key(i, self.sites[i].u0, r)));
+                    feet.push((i, self.key(i, self.sites[i].u1, r)));
                     whole.push(i);
                     continue;
                 }
@@ -557,9 +557,28 @@ impl Builder<'_> {
                 if self.fan_owns(i, k) {
                     continue;
                 }
-                feet.push(k);
+                feet.push((i, k));
             }
         }
+        // A contact at an element's clamped end, where the joined
+        // neighbour has a contact of its own, is that neighbour's contact
+        // seen within the tolerance (nearly concentric arcs smear one
+        // contact over a range): one footpoint, not two.
+        let n = self.n();
+        let has = |j: usize, feet: &[(usize, Key)]| feet.iter().any(|&(s, k)| s == j && k.w > 0.0 && k.w < 1.0);
+        let keep: Vec<bool> = feet
+            .iter()
+            .map(|&(i, k)| {
+                let at_start = k.site == i && k.w == 0.0;
+                let at_end = k.site != i || k.w == 1.0;
+                let prev = (i + n - 1) % n;
+                let next = (i + 1) % n;
+                let start_taken = at_start && self.sites[prev].joined_next && has(prev, &feet) && !has(i, &feet);
+                let end_taken = at_end && self.sites[i].joined_next && has(next, &feet) && !has(i, &feet);
+                !(start_taken || end_taken)
+            })
+            .collect();
+        let feet = feet.into_iter().zip(keep).filter(|(_, k)| *k).map(|((_, k), _)| k).collect();
         (feet, whole)
     }
 
@@ -902,15 +921,6 @@ impl Builder<'_> {
                 continue;
             }
             let Some((c, r)) = self.branch(a, span, s1, s2, first.0, last.0) else {
-                if std::env::var_os("MEDAX_DEBUG").is_some() {
-                    for (i, x) in self.sites.iter().enumerate() {
-                        eprintln!("site {i}: {:?} {:?} u {}..{} joined {}", x.prim, x.site, x.u0, x.u1, x.joined_next);
-                    }
-                    for e in &self.events {
-                        eprintln!("event {:?} r {} {:?} feet {:?}", e.center, e.radius, e.kind, e.feet);
-                    }
-                    eprintln!("pocket of {d} from {a:?} to {b:?}: s1 {s1} s2 {s2} first {first:?} last {last:?}");
-                }
                 return Err(BaseCaseError::NoBranch(self.events[d].center));
             };
             let (feet, whole) = self.touching(c, r);
@@ -923,17 +933,6 @@ impl Builder<'_> {
         // A subshape's axis is a tree: a pocket walked to the wrong event
         // shows up as a missing or a doubled edge.
         if edges.len() + 1 != self.events.len() {
-            if std::env::var_os("MEDAX_DEBUG").is_some() {
-                for (i, x) in self.sites.iter().enumerate() {
-                    eprintln!("site {i}: {:?} {:?} u {}..{} joined {}", x.prim, x.site, x.u0, x.u1, x.joined_next);
-                }
-                for e in &self.events {
-                    eprintln!("event {:?} r {} {:?} feet {:?}", e.center, e.radius, e.kind, e.feet);
-                }
-                for e in &edges {
-                    eprintln!("edge {} {}", e.from, e.to);
-                }
-            }
             return Err(BaseCaseError::Inconsistent(self.events.first().map_or(Point::default(), |e| e.center)));
         }
         Ok(LocalAxis { nodes, edges })
@@ -963,16 +962,6 @@ impl Builder<'_> {
                     let sl = slack(i);
                     ((-sl..=1.0 + sl).contains(&w)).then(|| self.offset(a, self.key(i, u, r)))
                 };
-                if std::env::var_os("MEDAX_DEBUG").is_some() {
-                    let w = |i: usize| self.fraction(i, self.param(i, c, r));
-                    let worst = (0..self.n()).map(|i| self.distance(i, c).0 - r).fold(f64::INFINITY, f64::min);
-                    eprintln!(
-                        "cand t {t}: c {c:?} r {r} w {:?} offs {:?} x1 {x1} y2 {y2} worst {worst:e} leaves {}",
-                        [w(s1), w(s2), w(t)],
-                        [at(s1), at(s2), at(t)],
-                        self.leaves_subshape(c, r)
-                    );
-                }
                 let (Some(o1), Some(o2), Some(ot)) = (at(s1), at(s2), at(t)) else { continue };
                 let o2 = if o2 == 0.0 { span } else { o2 };
                 let (sl1, sl2, slt) = (slack(s1), slack(s2), slack(t));

@@ -15,6 +15,10 @@ use crate::kernel::Point;
 use crate::shape::Shape2d;
 use rayon::prelude::*;
 
+/// Dividing disks whose centres and radii agree within this many
+/// tolerances are one disk met twice.
+const SAME_DISK: f64 = 64.0;
+
 /// Options for [`medial_axis`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AxisOptions {
@@ -141,6 +145,9 @@ pub fn glue(shape: &Shape2d, d: &Decomposition) -> Result<MedialAxis2d, AxisErro
         all.par_iter().map(|s| base_case::solve(shape, s, &d.cuts, tol)).collect::<Result<_, _>>()?;
     let mut nodes: Vec<AxisNode> = Vec::new();
     let mut port_node: Vec<Option<usize>> = vec![None; d.cuts.len()];
+    // Dividing disks found by sliding (maxdisk*) agree to about 1e-8 of
+    // the diagonal; disks closer than this are one node.
+    let same_as = coinciding_cuts(&d.cuts, SAME_DISK * tol);
     let mut edges: Vec<AxisEdge> = Vec::new();
     let mut is_port: Vec<bool> = Vec::new();
     for local in &locals {
@@ -155,7 +162,9 @@ pub fn glue(shape: &Shape2d, d: &Decomposition) -> Result<MedialAxis2d, AxisErro
                     nodes.len() - 1
                 };
                 match n.kind {
-                    EventKind::Port(c) => *port_node[c].get_or_insert_with(|| make(&mut nodes, &mut is_port, true)),
+                    EventKind::Port(c) => {
+                        *port_node[same_as[c]].get_or_insert_with(|| make(&mut nodes, &mut is_port, true))
+                    }
                     _ => make(&mut nodes, &mut is_port, false),
                 }
             })
@@ -202,6 +211,33 @@ fn check_tree(axis: &MedialAxis2d) -> Result<(), AxisError> {
         return Err(AxisError::Numerical(axis.nodes[lonely].point, "the axis fell apart into pieces"));
     }
     Ok(())
+}
+
+/// For each dividing disk, the first one that is the same disk (centre and
+/// radius within `tol`): the divide step can meet one disk twice, from two
+/// sides, and both must be one node.
+fn coinciding_cuts(cuts: &[super::subshape::Cut], tol: f64) -> Vec<usize> {
+    use std::collections::HashMap;
+    let cell = |x: f64| (x / (4.0 * tol)).floor() as i64;
+    let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+    let mut out = Vec::with_capacity(cuts.len());
+    for (i, c) in cuts.iter().enumerate() {
+        let (gx, gy) = (cell(c.center.x), cell(c.center.y));
+        let found = (-1..=1)
+            .flat_map(|dx| (-1..=1).map(move |dy| (gx + dx, gy + dy)))
+            .filter_map(|k| grid.get(&k))
+            .flatten()
+            .copied()
+            .find(|&j| cuts[j].center.dist(c.center) <= tol && (cuts[j].radius - c.radius).abs() <= tol);
+        match found {
+            Some(j) => out.push(j),
+            None => {
+                grid.entry((gx, gy)).or_default().push(i);
+                out.push(i);
+            }
+        }
+    }
+    out
 }
 
 /// Same unordered pair of primitives.

@@ -102,7 +102,40 @@ impl<'s> DiskFinder<'s> {
                 out.push(Footpoint { element: self.element(gid).0, point: q });
             }
         }
-        out
+        self.drop_clamped_ends(out)
+    }
+
+    /// Removes footpoints that are only an element's end point seen
+    /// within the tolerance (the element's own closest point to the centre
+    /// is clamped to its end) while the element beyond that smooth or
+    /// convex vertex has the real tangency nearby: one contact, not two.
+    /// At a reflex vertex the vertex itself is the contact and stays.
+    fn drop_clamped_ends(&self, feet: Vec<Footpoint>) -> Vec<Footpoint> {
+        let tol = self.contact_tolerance();
+        let keep: Vec<bool> = feet
+            .iter()
+            .map(|f| {
+                let lp = &self.shape.loops()[f.element.loop_index];
+                let n = lp.len();
+                let e = lp.element(f.element.element);
+                let (vertex, other) = if f.point.dist(e.end()) <= tol {
+                    ((f.element.element + 1) % n, (f.element.element + 1) % n)
+                } else if f.point.dist(e.start()) <= tol {
+                    (f.element.element, (f.element.element + n - 1) % n)
+                } else {
+                    return true;
+                };
+                if self.shape.joint(f.element.loop_index, vertex) == JointKind::Reflex {
+                    return true;
+                }
+                // The neighbour touches too, at a point of its own inside.
+                let v = lp.vertices()[vertex].p;
+                !feet.iter().any(|g| {
+                    g.element.loop_index == f.element.loop_index && g.element.element == other && g.point.dist(v) > tol
+                })
+            })
+            .collect();
+        feet.into_iter().zip(keep).filter(|(_, k)| *k).map(|(f, _)| f).collect()
     }
 
     fn element(&self, gid: usize) -> (ElementRef, Element) {
@@ -197,7 +230,13 @@ impl<'s> DiskFinder<'s> {
             }
         }
         found[1..].sort_by_key(|(gid, _)| *gid);
-        let footpoints = found.into_iter().map(|f| f.1).collect();
+        let first = found[0].1;
+        let mut footpoints = self.drop_clamped_ends(found.into_iter().map(|f| f.1).collect());
+        // The point grown from stays first, whatever the filter said.
+        if footpoints.first() != Some(&first) {
+            footpoints.retain(|f| *f != first);
+            footpoints.insert(0, first);
+        }
         MaxDisk { center, radius, footpoints, leaf_arc }
     }
 }
