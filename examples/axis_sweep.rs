@@ -12,7 +12,9 @@ fn main() {
         let mut total = 0;
         for seed in 0..6u64 {
             for n in [100usize, 300, 1000, 2000] {
-                for (name, loops) in [("star", samples::star_polygon(n, seed)), ("flower", samples::flower_arcs(n + seed as usize * 37))] {
+                for (name, loops) in
+                    [("star", samples::star_polygon(n, seed)), ("flower", samples::flower_arcs(n + seed as usize * 37))]
+                {
                     let Ok(s) = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()) else { continue };
                     total += 1;
                     if let Err(e) = medial_axis(&s, &AxisOptions { leaf_parts: lp, ..AxisOptions::default() }) {
@@ -22,6 +24,8 @@ fn main() {
             }
         }
         println!("leaf_parts {lp}: {} of {total} failed", fails.len());
-        for f in fails.iter().take(4) { println!("   {f}"); }
+        for f in fails.iter().take(4) {
+            println!("   {f}");
+        }
     }
 }
