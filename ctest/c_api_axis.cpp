@@ -6,7 +6,7 @@
 //
 // Usage: c_api_axis [star-polygons]   (default 40)
 
-#include "test_support.hpp"
+#include "polygon_support.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,55 +18,20 @@
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-struct AxisDeleter {
-    void operator()(mx_axis* p) const noexcept { mx_axis_free(p); }
-};
-using AxisPtr = std::unique_ptr<mx_axis, AxisDeleter>;
-
-using Pt = std::pair<double, double>;
-using Polygon = std::vector<Pt>;
-
-double segment_distance(Pt p, Pt a, Pt b) {
-    const double dx = b.first - a.first, dy = b.second - a.second;
-    double t = ((p.first - a.first) * dx + (p.second - a.second) * dy) / (dx * dx + dy * dy);
-    t = std::min(1.0, std::max(0.0, t));
-    return std::hypot(p.first - a.first - t * dx, p.second - a.second - t * dy);
-}
-
-double boundary_distance(const Polygon& poly, Pt p) {
-    double best = std::numeric_limits<double>::infinity();
-    for (size_t k = 0; k < poly.size(); ++k) best = std::min(best, segment_distance(p, poly[k], poly[(k + 1) % poly.size()]));
-    return best;
-}
-
-bool inside(const Polygon& poly, Pt p) {  // crossing number
-    bool in = false;
-    for (size_t k = 0, j = poly.size() - 1; k < poly.size(); j = k++) {
-        const Pt a = poly[k], b = poly[j];
-        if ((a.second > p.second) != (b.second > p.second) &&
-            p.first < (b.first - a.first) * (p.second - a.second) / (b.second - a.second) + a.first)
-            in = !in;
-    }
-    return in;
-}
-
-double diagonal(const Polygon& poly) {
-    double x0 = poly[0].first, x1 = x0, y0 = poly[0].second, y1 = y0;
-    for (const Pt& p : poly) {
-        x0 = std::min(x0, p.first), x1 = std::max(x1, p.first);
-        y0 = std::min(y0, p.second), y1 = std::max(y1, p.second);
-    }
-    return std::hypot(x1 - x0, y1 - y0);
-}
+using mt::AxisPtr;
+using mt::boundary_distance;
+using mt::diagonal;
+using mt::edges_of;
+using mt::inside;
+using mt::nodes_of;
+using mt::Polygon;
+using mt::Pt;
+using mt::segment_distance;
+using mt::star;
 
 mt::ShapePtr make(const std::vector<Polygon>& loops) {
     std::vector<std::vector<double>> xyb;
-    for (const Polygon& l : loops) {
-        xyb.emplace_back();
-        for (const Pt& p : l) xyb.back().insert(xyb.back().end(), {p.first, p.second, 0.0});
-    }
+    for (const Polygon& l : loops) xyb.push_back(mt::bulges(l));
     mx_shape2d* s = nullptr;
     MT_CHECK_OK(mt::from_loops(xyb, &s));
     return mt::ShapePtr(s);
@@ -76,25 +41,6 @@ AxisPtr compute(const mx_shape2d* s, const mx_axis_options* o = nullptr) {
     mx_axis* a = nullptr;
     MT_CHECK_OK(mx_axis_compute(s, o, &a));
     return AxisPtr(a);
-}
-
-// Every item of an axis: `count` says how many, `get` reads one.
-template <typename T>
-std::vector<T> items(const mx_axis* a, mx_status (*count)(const mx_axis*, size_t*),
-                     mx_status (*get)(const mx_axis*, size_t, T*)) {
-    size_t n = 0;
-    MT_CHECK_OK(count(a, &n));
-    std::vector<T> v(n);
-    for (size_t i = 0; i < n; ++i) MT_CHECK_OK(get(a, i, &v[i]));
-    return v;
-}
-
-std::vector<mx_axis_node> nodes_of(const mx_axis* a) {
-    return items(a, mx_axis_node_count, mx_axis_get_node);
-}
-
-std::vector<mx_axis_edge> edges_of(const mx_axis* a) {
-    return items(a, mx_axis_edge_count, mx_axis_get_edge);
 }
 
 std::vector<double> samples_of(const mx_axis* a, size_t i, double tol) {
@@ -189,20 +135,6 @@ void test_rectangle() {
     MT_CHECK_STATUS(mx_axis_edge_sample(a.get(), 5, 1e-3, buf, 5, &n), MX_ERR_INDEX_OUT_OF_RANGE);
     MT_CHECK_EQ(n, size_t{77});
     MT_CHECK_EQ(buf[0], 7.0);
-}
-
-// A random star polygon around the origin: one vertex per angular sector,
-// jittered, radius in [0.3, 1] x R; counter-clockwise unless `cw`.
-Polygon star(std::mt19937_64& rng, size_t n, double R, bool cw) {
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    Polygon p;
-    for (size_t k = 0; k < n; ++k) {
-        const double t = 2.0 * kPi * (static_cast<double>(k) + 0.1 + 0.8 * u(rng)) / static_cast<double>(n);
-        const double r = R * (0.3 + 0.7 * u(rng));
-        p.emplace_back(r * std::cos(t), r * std::sin(t));
-    }
-    if (cw) std::reverse(p.begin(), p.end());
-    return p;
 }
 
 void test_stars(size_t count) {

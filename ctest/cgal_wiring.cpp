@@ -1,8 +1,8 @@
 // Cross-checks medax's shape validation and shape queries against CGAL on
-// random polygons. This is the ONE translation unit that includes CGAL (one
-// CGAL TU costs about a minute and 1.4 GB to compile); later cross-checks
-// (e.g. medial axes against CGAL::Segment_Delaunay_graph_2) go in here as
-// further CrossCheck classes, registered in main().
+// random polygons. Further shape cross-checks go in here as CrossCheck
+// classes, registered in main() (a CGAL translation unit costs about a
+// minute and 1.4 GB to compile). The medial axis is cross-checked against
+// CGAL::Segment_Delaunay_graph_2 in cgal_axis.cpp, on its own corpus.
 //
 // Cases (all with bulge 0, i.e. polygons):
 //   star        random star polygon (angles jittered around a regular grid,
@@ -416,23 +416,11 @@ public:
     }
 };
 
-// Next: class AxisCheck final : public CrossCheck -- compare the medial axis
-// (once medax exposes it through mx_axis) with the Voronoi diagram of the
-// segments from CGAL::Segment_Delaunay_graph_2 (traits
-// Segment_Delaunay_graph_traits_2<K, CGAL::Field_with_sqrt_tag>), restricted
-// to the interior. It needs_shape() and reads t.oriented.
-
-uint64_t from_env_or_arg(int argc, char** argv, int index, const char* env, uint64_t fallback) {
-    if (argc > index) return std::strtoull(argv[index], nullptr, 0);
-    if (const char* e = std::getenv(env)) return std::strtoull(e, nullptr, 0);
-    return fallback;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-    const uint64_t seed = from_env_or_arg(argc, argv, 1, "MEDAX_CGAL_SEED", 20240611);
-    const size_t cases = static_cast<size_t>(from_env_or_arg(argc, argv, 2, "MEDAX_CGAL_CASES", 400));
+    const uint64_t seed = mt::from_env_or_arg(argc, argv, 1, "MEDAX_CGAL_SEED", 20240611);
+    const size_t cases = static_cast<size_t>(mt::from_env_or_arg(argc, argv, 2, "MEDAX_CGAL_CASES", 400));
     std::cout << "cgal_wiring: CGAL " << CGAL_VERSION_STR << ", medax " << mx_version() << ", seed " << seed << ", "
               << cases << " cases\n";
 

@@ -98,6 +98,14 @@ inline int finish(const char* program) {
     return s.failures == 0 ? 0 : 1;
 }
 
+// Argument `index` (strtoull, any base) if given, else the environment
+// variable `env`, else `fallback`.
+inline uint64_t from_env_or_arg(int argc, char** argv, int index, const char* env, uint64_t fallback) {
+    if (argc > index) return std::strtoull(argv[index], nullptr, 0);
+    if (const char* e = std::getenv(env)) return std::strtoull(e, nullptr, 0);
+    return fallback;
+}
+
 inline bool near_rel(double a, double b, double rel, double abs_floor = 0.0) {
     return std::fabs(a - b) <= std::max(rel * std::max(std::fabs(a), std::fabs(b)), abs_floor);
 }

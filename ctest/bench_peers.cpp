@@ -1,0 +1,132 @@
+// Benchmark, not a test (not registered with CTest, not built by default):
+// times on the same random star polygons (mt::star, R = 1, CCW)
+//   medax   mx_shape2d_from_bulges + mx_axis_compute, threads = 1 and 2
+//   CGAL    Segment_Delaunay_graph_2 construction, the polygon's edges
+//           inserted as segments (sdg_support.hpp)
+//   Boost   boost::polygon::construct_voronoi on the edges as
+//           segment_data<int> (coordinates x 1e7, rounded)
+// and prints a markdown table of the medians (seconds) and ratios.
+//
+// Usage: bench_peers [runs] [sizes...]     default: 3 runs; 1000 10000 100000
+// medax is not run on a size when its previous size took more than 6 s
+// (ten times that would pass a minute). medax's status is shown when it
+// failed (the time is then the time to the failure).
+//
+// Run with scripts/bench-peers (installs the prefix, builds in Release).
+
+#include "sdg_support.hpp"
+
+#include <boost/polygon/polygon.hpp>
+#include <boost/polygon/voronoi.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <iostream>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using mt::Polygon;
+
+double median_seconds(size_t runs, const std::function<void()>& f) {
+    std::vector<double> t;
+    for (size_t i = 0; i < runs; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        f();
+        t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    std::sort(t.begin(), t.end());
+    return t[t.size() / 2];
+}
+
+// medax from the bulge array, as a caller would; the status of the last run.
+mx_status run_medax(const Polygon& p, size_t threads) {
+    const std::vector<double> xyb = mt::bulges(p);
+    const size_t len = p.size();
+    mx_shape2d* shape = nullptr;
+    mx_status st = mx_shape2d_from_bulges(xyb.data(), xyb.size(), &len, 1, nullptr, &shape);
+    if (st != MX_OK) return st;
+    mx_axis_options o;
+    mx_axis_options_default(&o);
+    o.threads = threads;
+    mx_axis* axis = nullptr;
+    st = mx_axis_compute(shape, &o, &axis);
+    mx_axis_free(axis);
+    mx_shape2d_free(shape);
+    return st;
+}
+
+size_t run_cgal(const Polygon& p) {
+    mt::Sdg sdg;
+    mt::insert_polygon(sdg, p);
+    return sdg.number_of_faces();
+}
+
+size_t run_boost(const std::vector<boost::polygon::segment_data<int>>& segments) {
+    boost::polygon::voronoi_diagram<double> vd;
+    boost::polygon::construct_voronoi(segments.begin(), segments.end(), &vd);
+    return vd.num_vertices();
+}
+
+std::string cell(double secs, mx_status st) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.4g", secs);
+    std::string s = buf;
+    if (st != MX_OK) s += " (" + std::string(mx_status_str(static_cast<int32_t>(st))) + ")";
+    return s;
+}
+
+std::string ratio(double a, double b) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", a / b);
+    return buf;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const size_t runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
+    std::vector<size_t> sizes;
+    for (int i = 2; i < argc; ++i) sizes.push_back(static_cast<size_t>(std::atol(argv[i])));
+    if (sizes.empty()) sizes = {1000, 10000, 100000};
+
+    std::cout << "bench_peers: medax " << mx_version() << ", CGAL " << CGAL_VERSION_STR << ", Boost "
+              << BOOST_VERSION / 100000 << "." << BOOST_VERSION / 100 % 1000 << "; median of " << runs
+              << " runs, seconds; random star polygons (R = 1)\n\n";
+    std::cout << "| n | medax 1 thread | medax 2 threads | CGAL SDG | Boost voronoi | medax 1 / 2 threads | "
+                 "medax 1 thread / CGAL | medax 1 thread / Boost | CGAL / Boost |\n"
+              << "|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    std::mt19937_64 rng(20240611);
+    double last_medax = 0.0;
+    for (size_t n : sizes) {
+        const Polygon p = mt::star(rng, n, 1.0, false);
+        std::vector<boost::polygon::segment_data<int>> segments;
+        for (size_t k = 0; k < n; ++k) {
+            const mt::Pt a = p[k], b = p[(k + 1) % n];
+            auto q = [](double v) { return static_cast<int>(std::lround(v * 1e7)); };
+            segments.emplace_back(boost::polygon::point_data<int>(q(a.first), q(a.second)),
+                                  boost::polygon::point_data<int>(q(b.first), q(b.second)));
+        }
+        const double cgal = median_seconds(runs, [&] { run_cgal(p); });
+        const double boost = median_seconds(runs, [&] { run_boost(segments); });
+        std::string m1 = "not run", m2 = "not run", r12 = "-", rc = "-", rb = "-";
+        if (last_medax <= 6.0) {
+            mx_status s1 = MX_OK, s2 = MX_OK;
+            const double t1 = median_seconds(runs, [&] { s1 = run_medax(p, 1); });
+            const double t2 = median_seconds(runs, [&] { s2 = run_medax(p, 2); });
+            m1 = cell(t1, s1), m2 = cell(t2, s2);
+            r12 = ratio(t1, t2), rc = ratio(t1, cgal), rb = ratio(t1, boost);
+            last_medax = t1;
+        }
+        std::cout << "| " << n << " | " << m1 << " | " << m2 << " | " << cell(cgal, MX_OK) << " | "
+                  << cell(boost, MX_OK) << " | " << r12 << " | " << rc << " | " << rb << " | " << ratio(cgal, boost)
+                  << " |" << std::endl;
+    }
+    return 0;
+}
