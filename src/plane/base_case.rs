@@ -920,10 +920,15 @@ impl Builder<'_> {
                 }
                 continue;
             }
-            let Some((c, r)) = self.branch(a, span, s1, s2, first.0, last.0) else {
+            let Some((c, r, contacts)) = self.branch(a, span, s1, s2, first.0, last.0) else {
                 return Err(BaseCaseError::NoBranch(self.events[d].center));
             };
-            let (feet, whole) = self.touching(c, r);
+            // The three contacts the construction placed are footpoints
+            // even where rounding puts them a hair beyond the tolerance:
+            // without them the pocket would be walked to the same branch
+            // point again.
+            let (mut feet, whole) = self.touching(c, r);
+            feet.extend(contacts);
             let id = self.add_event(c, r, EventKind::Branch, feet, whole);
             work.push((d, j));
             work.extend((0..self.events[id].feet.len()).map(|k| (id, k)));
@@ -941,8 +946,8 @@ impl Builder<'_> {
     /// The branch point in the pocket starting at `a` (length `span`): an
     /// empty disk touching `s1` before offset `x1`, `s2` after offset `y2`
     /// and a third site in between. The one touching `s1` first wins.
-    fn branch(&self, a: Key, span: f64, s1: usize, s2: usize, x1: f64, y2: f64) -> Option<(Point, f64)> {
-        let mut best: Option<(f64, Point, f64)> = None;
+    fn branch(&self, a: Key, span: f64, s1: usize, s2: usize, x1: f64, y2: f64) -> Option<(Point, f64, [Key; 3])> {
+        let mut best: Option<(f64, Point, f64, [Key; 3])> = None;
         for t in 0..self.n() {
             if t == s1 || t == s2 {
                 continue;
@@ -973,10 +978,11 @@ impl Builder<'_> {
                     continue;
                 }
                 if best.is_none_or(|b| o1 < b.0) {
-                    best = Some((o1, c, r));
+                    let key = |i: usize| self.key(i, self.param(i, c, r), r);
+                    best = Some((o1, c, r, [key(s1), key(s2), key(t)]));
                 }
             }
         }
-        best.map(|b| (b.1, b.2))
+        best.map(|b| (b.1, b.2, b.3))
     }
 }
