@@ -121,10 +121,18 @@ impl AxisEdge {
         usize::from(self.reach(shape, 1, r_max) > self.reach(shape, 0, r_max) * (1.0 + TINY))
     }
 
-    /// The maximal disk at fraction `s` ∈ [0, 1] of the footpoint range of
-    /// the better-conditioned primitive: centre and radius, model units.
-    /// `None` if no disk is tangent there (never for an edge of a valid axis).
+    /// The maximal disk at fraction `s` ∈ [0, 1] along the edge: of the
+    /// footpoint range of the better-conditioned primitive, or of the
+    /// segment between the nodes for a straight edge (whose footpoint
+    /// parametrisation degenerates between nearly parallel lines). Centre
+    /// and radius, model units. `None` if no disk is tangent there (never
+    /// for an edge of a valid axis).
     pub fn eval(&self, shape: &Shape2d, nodes: &[AxisNode], s: f64) -> Option<(Point, f64)> {
+        if self.kind == ConicKind::Line {
+            let (a, b) = (nodes[self.from].point, nodes[self.to].point);
+            let c = a + (b - a) * s;
+            return Some((c, site_distance(&self.sites[0].site(shape), c)));
+        }
         let r_max = nodes[self.from].radius.max(nodes[self.to].radius);
         let k = self.driver(shape, r_max);
         let (u0, u1) = self.params[k];
@@ -152,6 +160,16 @@ impl AxisEdge {
             Some(s) => s.into_iter().map(|(c, r, _)| (c, r)).collect(),
             None => ends.to_vec(),
         }
+    }
+}
+
+/// The radius of the disk centred `c` tangent to site `s` as its kind says.
+fn site_distance(s: &Site, c: Point) -> f64 {
+    match *s {
+        Site::Point(q) => c.dist(q),
+        Site::Line { a, n } => n.dot(c - a),
+        Site::Circle { o, r, outside: true } => c.dist(o) - r,
+        Site::Circle { o, r, outside: false } => r - c.dist(o),
     }
 }
 
