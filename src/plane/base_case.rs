@@ -29,6 +29,7 @@
 //! The cost is O(k²) for k primitives, which the divide step keeps tiny.
 
 use super::axis::Primitive;
+use super::maxdisk::DiskFinder;
 use super::subshape::{BoundaryPos, ChainParts, Cut, Piece, Subshape};
 use crate::kernel::apollonius::{tangent_disks, Site};
 use crate::kernel::growing_disk::GrowingDisk;
@@ -229,8 +230,16 @@ fn merge_touching_chains(shape: &Shape2d, pieces: Vec<Piece>) -> Vec<Piece> {
 
 /// Solves one subshape. `cuts` are the divide step's dividing disks (the
 /// auxiliary arcs refer to them); `tol` is the contact tolerance.
-pub fn solve(shape: &Shape2d, s: &Subshape, cuts: &[Cut], tol: f64) -> Result<LocalAxis, BaseCaseError> {
-    let mut b = Builder { shape, tol, sites: Vec::new(), events: Vec::new(), aux: Vec::new() };
+/// `finder`, when given, is the whole shape's maximal-disk index: branch
+/// points are then also checked to be empty for the whole shape.
+pub fn solve(
+    shape: &Shape2d,
+    s: &Subshape,
+    cuts: &[Cut],
+    tol: f64,
+    finder: Option<&DiskFinder>,
+) -> Result<LocalAxis, BaseCaseError> {
+    let mut b = Builder { shape, tol, sites: Vec::new(), events: Vec::new(), aux: Vec::new(), finder };
     b.collect_sites(s, cuts);
     if b.sites.is_empty() {
         // A subshape of auxiliary arcs and single points only: its axis is
@@ -297,6 +306,8 @@ struct Builder<'a> {
     tol: f64,
     sites: Vec<LocalSite>,
     events: Vec<Event>,
+    /// The whole shape's index, for checking branch points.
+    finder: Option<&'a DiskFinder<'a>>,
     /// Each auxiliary arc: its disk, the index of the site after it, and
     /// the arc itself (centre, radius, start and end point, counter-clockwise).
     aux: Vec<(usize, usize, AuxArc)>,
@@ -975,6 +986,11 @@ impl Builder<'_> {
                 }
                 // Empty: no site closer than the radius, inside the subshape.
                 if (0..self.n()).any(|i| self.distance(i, c).0 < r - self.tol) {
+                    continue;
+                }
+                // And empty for the whole shape: a subshape's own
+                // primitives do not see past its auxiliary arcs.
+                if self.finder.and_then(|f| f.nearest(c)).is_some_and(|(_, dist)| dist < r - 4.0 * self.tol) {
                     continue;
                 }
                 if best.is_none_or(|b| o1 < b.0) {

@@ -102,8 +102,9 @@ pub fn medial_axis(shape: &Shape2d, opts: &AxisOptions) -> Result<MedialAxis2d, 
         return Err(AxisError::HolesUnsupported);
     }
     let d = decompose_with(shape, opts.seed, opts.leaf_parts.max(3));
-    let axis = glue(shape, &d)?;
-    check_disks(shape, &axis)?;
+    let finder = super::DiskFinder::new(shape);
+    let axis = glue_with(shape, &d, Some(&finder))?;
+    check_disks(&finder, &axis)?;
     Ok(axis)
 }
 
@@ -114,8 +115,8 @@ const CHECKS_PER_EDGE: usize = 8;
 /// the boundary and hold none of it (nearest-element queries on the shared
 /// index, independent of how the axis was built): a wrong pair of
 /// primitives on an edge shows up here and is reported, not returned.
-fn check_disks(shape: &Shape2d, axis: &MedialAxis2d) -> Result<(), AxisError> {
-    let finder = super::DiskFinder::new(shape);
+fn check_disks(finder: &super::DiskFinder, axis: &MedialAxis2d) -> Result<(), AxisError> {
+    let shape = finder.shape();
     let slack = 64.0 * shape.tolerance();
     let bad = |c: Point, r: f64| finder.nearest(c).is_none_or(|(_, d)| (d - r).abs() > slack);
     if let Some(n) = axis.nodes.par_iter().find_any(|n| bad(n.point, n.radius)) {
@@ -139,10 +140,19 @@ fn check_disks(shape: &Shape2d, axis: &MedialAxis2d) -> Result<(), AxisError> {
 
 /// Solves every leaf and stuck subshape (in parallel) and glues them.
 pub fn glue(shape: &Shape2d, d: &Decomposition) -> Result<MedialAxis2d, AxisError> {
+    glue_with(shape, d, None)
+}
+
+/// [`glue`], checking branch points against the whole shape's `finder`.
+fn glue_with(
+    shape: &Shape2d,
+    d: &Decomposition,
+    finder: Option<&super::DiskFinder>,
+) -> Result<MedialAxis2d, AxisError> {
     let tol = shape.tolerance();
     let all: Vec<&Subshape> = d.leaves.iter().chain(d.stuck.iter()).collect();
     let locals: Vec<LocalAxis> =
-        all.par_iter().map(|s| base_case::solve(shape, s, &d.cuts, tol)).collect::<Result<_, _>>()?;
+        all.par_iter().map(|s| base_case::solve(shape, s, &d.cuts, tol, finder)).collect::<Result<_, _>>()?;
     let mut nodes: Vec<AxisNode> = Vec::new();
     let mut port_node: Vec<Option<usize>> = vec![None; d.cuts.len()];
     // Dividing disks found by sliding (maxdisk*) agree to about 1e-8 of
