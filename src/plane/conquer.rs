@@ -34,7 +34,7 @@ pub struct AxisOptions {
 
 impl Default for AxisOptions {
     fn default() -> Self {
-        AxisOptions { seed: 0x006d_6564_6178, leaf_parts: 3 }
+        AxisOptions { seed: 0x006d_6564_6178, leaf_parts: 32 }
     }
 }
 
@@ -192,6 +192,7 @@ fn glue_with(
     let mut axis = MedialAxis2d { nodes, edges };
     merge_pass_through(&mut axis, &is_port);
     classify(&mut axis);
+    polish_branches(shape, &mut axis);
     check_tree(&axis)?;
     Ok(axis)
 }
@@ -336,6 +337,39 @@ fn reversed(e: AxisEdge) -> AxisEdge {
         sites: [e.sites[1], e.sites[0]],
         params: [(e.params[1].1, e.params[1].0), (e.params[0].1, e.params[0].0)],
         kind: e.kind,
+    }
+}
+
+/// Branch points that are dividing disks come from `maxdisk*`'s slide,
+/// accurate to about 1e-8 of the diagonal; the disk tangent to three of
+/// the node's primitives (Apollonius) is accurate to rounding. Replaced
+/// when the two agree to within 1e-6 of the disk's radius (otherwise the
+/// triple is ill-conditioned and the slide's disk stays).
+fn polish_branches(shape: &Shape2d, axis: &mut MedialAxis2d) {
+    use crate::kernel::apollonius::tangent_disks;
+    let mut prims: Vec<Vec<Primitive>> = vec![Vec::new(); axis.nodes.len()];
+    for e in &axis.edges {
+        for v in [e.from, e.to] {
+            for p in e.sites {
+                if !prims[v].contains(&p) {
+                    prims[v].push(p);
+                }
+            }
+        }
+    }
+    for (node, ps) in axis.nodes.iter_mut().zip(&prims) {
+        if node.kind != NodeKind::Branch || ps.len() < 3 {
+            continue;
+        }
+        let sites = [ps[0].site(shape), ps[1].site(shape), ps[2].site(shape)];
+        let best =
+            tangent_disks(sites).into_iter().min_by(|a, b| a.0.dist(node.point).total_cmp(&b.0.dist(node.point)));
+        if let Some((c, r)) = best {
+            if c.dist(node.point) <= 1e-6 * node.radius && (r - node.radius).abs() <= 1e-6 * node.radius {
+                node.point = c;
+                node.radius = r;
+            }
+        }
     }
 }
 
