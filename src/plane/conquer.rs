@@ -189,6 +189,13 @@ fn glue_with(
             });
         }
     }
+    // Two subshapes that both hold the same stretch of axis (between two
+    // disks met twice) give the same edge twice: keep one.
+    let mut seen: std::collections::HashSet<(usize, usize, [Primitive; 2])> = std::collections::HashSet::new();
+    edges.retain(|e| {
+        let (a, b, s) = if e.from <= e.to { (e.from, e.to, e.sites) } else { (e.to, e.from, [e.sites[1], e.sites[0]]) };
+        e.from != e.to && seen.insert((a, b, s))
+    });
     let mut axis = MedialAxis2d { nodes, edges };
     merge_pass_through(&mut axis, &is_port);
     classify(&mut axis);
