@@ -42,10 +42,6 @@ use std::f64::consts::{PI, TAU};
 /// than the same.
 const SLIVER: f64 = 64.0;
 
-/// A branch point within this many tolerances of an existing event is
-/// that event.
-const BRANCH_SAME: f64 = 64.0;
-
 /// How far (in tolerances, along the boundary) a branch point's contact
 /// may fall outside the range it must lie in.
 const CONTACT_SLACK: f64 = 16.0;
@@ -626,11 +622,7 @@ impl Builder<'_> {
     ) -> usize {
         // The same disk found twice (a joint disk that is also a branch
         // point or a leaf circle) is one event with all its footpoints.
-        // A branch point is searched for between two known events and can
-        // only come out as one of them through rounding (disks alike to
-        // within the slide's accuracy, at a near-symmetric centre): a wider
-        // net, so the walk makes progress instead of finding it again.
-        let near = if kind == EventKind::Branch { BRANCH_SAME * self.tol } else { 4.0 * self.tol };
+        let near = 4.0 * self.tol;
         let same = self.events.iter().position(|e| e.center.dist(center) <= near && (e.radius - radius).abs() <= near);
         let id = match same {
             Some(i) => {

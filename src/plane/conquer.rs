@@ -372,7 +372,10 @@ fn polish_branches(shape: &Shape2d, axis: &mut MedialAxis2d) {
         let best =
             tangent_disks(sites).into_iter().min_by(|a, b| a.0.dist(node.point).total_cmp(&b.0.dist(node.point)));
         if let Some((c, r)) = best {
-            if c.dist(node.point) <= 1e-6 * node.radius && (r - node.radius).abs() <= 1e-6 * node.radius {
+            // All of the node's primitives must fit the new disk (a node of
+            // four or more nearly cocircular primitives keeps its own).
+            let fits = ps.iter().all(|p| p.site(shape).defect(c, r).abs() <= shape.tolerance());
+            if fits && c.dist(node.point) <= 1e-6 * node.radius && (r - node.radius).abs() <= 1e-6 * node.radius {
                 node.point = c;
                 node.radius = r;
             }
