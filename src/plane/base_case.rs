@@ -870,6 +870,8 @@ impl Builder<'_> {
         for (d, e) in self.events.iter().enumerate() {
             work.extend((0..e.feet.len()).map(|j| (d, j)));
         }
+        // Every pocket is walked a few times (once more per branch point
+        // found in it); far more steps means the walk is going round.
         let budget = 64 * (self.n() + self.events.len()) + 64;
         let mut steps = 0;
         while let Some((d, j)) = work.pop() {
@@ -991,9 +993,15 @@ impl Builder<'_> {
                 if self.finder.and_then(|f| f.nearest(c)).is_some_and(|(_, dist)| dist < r - 4.0 * self.tol) {
                     continue;
                 }
+                let key = |i: usize| self.key(i, self.param(i, c, r), r);
+                let keys = [key(s1), key(s2), key(t)];
+                // Two contacts at one boundary position are one contact (a
+                // disk squeezed into a corner), not a branch point.
+                if keys[0] == keys[1] || keys[0] == keys[2] || keys[1] == keys[2] {
+                    continue;
+                }
                 if best.is_none_or(|b| o1 < b.0) {
-                    let key = |i: usize| self.key(i, self.param(i, c, r), r);
-                    best = Some((o1, c, r, [key(s1), key(s2), key(t)]));
+                    best = Some((o1, c, r, keys));
                 }
             }
         }

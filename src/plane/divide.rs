@@ -177,6 +177,78 @@ pub fn decompose(shape: &Shape2d, seed: u64) -> Decomposition {
     decompose_with(shape, seed, LEAF_PARTS)
 }
 
+/// The subshape's single-point chains that are reflex vertices (the
+/// thesis's zero-length arcs between auxiliary arcs), in piece order.
+fn reflex_points(shape: &Shape2d, s: &Subshape) -> Vec<BoundaryPos> {
+    s.pieces
+        .iter()
+        .filter_map(|p| match *p {
+            Piece::Chain { from, to } if ChainParts::new(shape, from, to).is_empty() => Some(from),
+            _ => None,
+        })
+        .filter(|p| {
+            let n = shape.loops()[p.loop_index].len();
+            let v = match p.t {
+                0.0 => p.element,
+                1.0 => (p.element + 1) % n,
+                _ => return false,
+            };
+            shape.joint(p.loop_index, v) == JointKind::Reflex
+        })
+        .collect()
+}
+
+/// A cluster of reflex vertices separated by auxiliary arcs only (thesis
+/// 2.2.2.2): fix two neighbouring zero-length arcs and find a third so
+/// that the circle through the three holds no other point of the cluster
+/// and no boundary at all. That disk touches three (or more) parts and
+/// cuts the cluster into smaller pieces. `None` when no such circle is
+/// found (the subshape then stays whole for the base-case solver).
+fn cluster_cut(finder: &DiskFinder, s: &Subshape, points: &[BoundaryPos], disk: usize) -> Option<(Cut, Vec<Subshape>)> {
+    let shape = finder.shape();
+    if points.len() < 3 {
+        return None;
+    }
+    let tol = finder.contact_tolerance();
+    let pts: Vec<Point> = points.iter().map(|p| p.point(shape)).collect();
+    for i in 0..pts.len() {
+        let (p, q) = (pts[i], pts[(i + 1) % pts.len()]);
+        for (k, &r) in pts.iter().enumerate() {
+            if k == i || k == (i + 1) % pts.len() {
+                continue;
+            }
+            let Some((c, rad)) = circumcircle(p, q, r) else { continue };
+            if pts.iter().any(|&x| x.dist(c) < rad - tol) {
+                continue;
+            }
+            if finder.nearest(c).is_none_or(|(_, d)| d < rad - tol) {
+                continue;
+            }
+            let feet: Vec<BoundaryPos> = finder.touching(c, rad).iter().map(|f| position(shape, f)).collect();
+            let Some(children) = s.split(shape, disk, &feet) else { continue };
+            // Progress: every piece has fewer parts and zero-length arcs.
+            let size = |x: &Subshape| original_parts(shape, x) + reflex_points(shape, x).len();
+            let whole = size(s);
+            if children.len() >= 2 && children.iter().all(|ch| size(ch) < whole) {
+                return Some((Cut { center: c, radius: rad }, children));
+            }
+        }
+    }
+    None
+}
+
+/// The circle through three points, if they are not collinear.
+fn circumcircle(a: Point, b: Point, c: Point) -> Option<(Point, f64)> {
+    let (ab, ac) = (b - a, c - a);
+    let d = 2.0 * ab.cross(ac);
+    if d.abs() <= f64::EPSILON * (ab.norm2() + ac.norm2()) {
+        return None;
+    }
+    let (l1, l2) = (ab.norm2(), ac.norm2());
+    let o = a + Point::new(ac.y * l1 - ab.y * l2, ab.x * l2 - ac.x * l1) * (1.0 / d);
+    Some((o, o.dist(a)))
+}
+
 /// [`decompose`] with leaves of up to `leaf_parts` original parts.
 pub fn decompose_with(shape: &Shape2d, seed: u64, leaf_parts: usize) -> Decomposition {
     let finder = DiskFinder::new(shape);
@@ -186,17 +258,22 @@ pub fn decompose_with(shape: &Shape2d, seed: u64, leaf_parts: usize) -> Decompos
     // of cuts, which is fixed by the seed.
     while let Some(s) = todo.pop() {
         let parts = original_parts(shape, &s);
-        if parts <= leaf_parts {
+        let points = reflex_points(shape, &s);
+        // Reflex vertices between auxiliary arcs are zero-length arcs: they
+        // count towards a leaf's size like original parts.
+        if parts + points.len() <= leaf_parts {
             out.leaves.push(s);
             continue;
         }
         let mut rng = Mix(seed_of(seed, &s));
-        let found = (0..ATTEMPTS).find_map(|_| {
-            let (pos, range) = pick_point(shape, &s, &mut rng)?;
-            let at = ElementRef { loop_index: pos.loop_index, element: pos.element };
-            let d = finder.max_disk(at, pos.t);
-            cut_with(&finder, &s, parts, out.cuts.len(), &d, pos, range)
-        });
+        let found = (0..ATTEMPTS + (parts as u32) / 4)
+            .find_map(|_| {
+                let (pos, range) = pick_point(shape, &s, &mut rng)?;
+                let at = ElementRef { loop_index: pos.loop_index, element: pos.element };
+                let d = finder.max_disk(at, pos.t);
+                cut_with(&finder, &s, parts, out.cuts.len(), &d, pos, range)
+            })
+            .or_else(|| cluster_cut(&finder, &s, &points, out.cuts.len()));
         match found {
             Some((cut, children)) => {
                 out.cuts.push(cut);
