@@ -42,6 +42,10 @@ use std::f64::consts::{PI, TAU};
 /// than the same.
 const SLIVER: f64 = 64.0;
 
+/// Fraction by which coinciding contacts of a branch point are pulled
+/// into their own primitives.
+const NUDGE: f64 = 1e-12;
+
 /// How far (in tolerances, along the boundary) a branch point's contact
 /// may fall outside the range it must lie in.
 const CONTACT_SLACK: f64 = 16.0;
@@ -134,6 +138,16 @@ pub enum BaseCaseError {
     NoBranch(Point),
     /// The walk did not finish within its step budget.
     Budget,
+}
+
+/// A branch point found in a pocket: its disk, its three contacts as
+/// footpoints, and the same contacts before coinciding ones were pulled
+/// apart.
+struct Branch {
+    center: Point,
+    radius: f64,
+    contacts: [Key; 3],
+    snapped: [Key; 3],
 }
 
 /// A footpoint met walking into a pocket: offset, event, key.
@@ -931,15 +945,18 @@ impl Builder<'_> {
                 }
                 continue;
             }
-            let Some((c, r, contacts)) = self.branch(a, span, s1, s2, first.0, last.0) else {
+            let Some(found) = self.branch(a, span, s1, s2, first.0, last.0) else {
                 return Err(BaseCaseError::NoBranch(self.events[d].center));
             };
+            let (c, r) = (found.center, found.radius);
             // The three contacts the construction placed are footpoints
             // even where rounding puts them a hair beyond the tolerance:
             // without them the pocket would be walked to the same branch
-            // point again.
+            // point again. Where two of them were pulled apart, the
+            // snapped position they shared is not a footpoint.
             let (mut feet, whole) = self.touching(c, r);
-            feet.extend(contacts);
+            feet.retain(|k| found.snapped.iter().zip(&found.contacts).all(|(sn, ct)| k != sn || sn == ct));
+            feet.extend(found.contacts);
             let id = self.add_event(c, r, EventKind::Branch, feet, whole);
             work.push((d, j));
             work.extend((0..self.events[id].feet.len()).map(|k| (id, k)));
@@ -957,8 +974,8 @@ impl Builder<'_> {
     /// The branch point in the pocket starting at `a` (length `span`): an
     /// empty disk touching `s1` before offset `x1`, `s2` after offset `y2`
     /// and a third site in between. The one touching `s1` first wins.
-    fn branch(&self, a: Key, span: f64, s1: usize, s2: usize, x1: f64, y2: f64) -> Option<(Point, f64, [Key; 3])> {
-        let mut best: Option<(f64, Point, f64, [Key; 3])> = None;
+    fn branch(&self, a: Key, span: f64, s1: usize, s2: usize, x1: f64, y2: f64) -> Option<Branch> {
+        let mut best: Option<(f64, Point, f64, [Key; 3], [Key; 3])> = None;
         for t in 0..self.n() {
             if t == s1 || t == s2 {
                 continue;
@@ -994,17 +1011,26 @@ impl Builder<'_> {
                     continue;
                 }
                 let key = |i: usize| self.key(i, self.param(i, c, r), r);
-                let keys = [key(s1), key(s2), key(t)];
-                // Two contacts at one boundary position are one contact (a
-                // disk squeezed into a corner), not a branch point.
-                if keys[0] == keys[1] || keys[0] == keys[2] || keys[1] == keys[2] {
-                    continue;
+                let raw = [key(s1), key(s2), key(t)];
+                let mut keys = raw;
+                let sites = [s1, s2, t];
+                // Two contacts within the tolerance of one vertex (a disk in
+                // the wedge of a nearly flat convex corner) are still two
+                // contacts, each on its own side of the vertex: keep them
+                // apart so the corner's own event lies between them.
+                for x in 0..3 {
+                    for y in 0..3 {
+                        if x != y && raw[x] == raw[y] {
+                            let w = self.fraction(sites[x], self.param(sites[x], c, r));
+                            keys[x] = Key { site: sites[x], w: if w > 0.5 { 1.0 - NUDGE } else { NUDGE } };
+                        }
+                    }
                 }
                 if best.is_none_or(|b| o1 < b.0) {
-                    best = Some((o1, c, r, keys));
+                    best = Some((o1, c, r, keys, raw));
                 }
             }
         }
-        best.map(|b| (b.1, b.2, b.3))
+        best.map(|b| Branch { center: b.1, radius: b.2, contacts: b.3, snapped: b.4 })
     }
 }
