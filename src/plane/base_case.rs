@@ -975,7 +975,7 @@ impl Builder<'_> {
     /// empty disk touching `s1` before offset `x1`, `s2` after offset `y2`
     /// and a third site in between. The one touching `s1` first wins.
     fn branch(&self, a: Key, span: f64, s1: usize, s2: usize, x1: f64, y2: f64) -> Option<Branch> {
-        let mut best: Option<(f64, Point, f64, [Key; 3], [Key; 3])> = None;
+        let mut best: Option<(f64, Branch)> = None;
         for t in 0..self.n() {
             if t == s1 || t == s2 {
                 continue;
@@ -1026,11 +1026,11 @@ impl Builder<'_> {
                         }
                     }
                 }
-                if best.is_none_or(|b| o1 < b.0) {
-                    best = Some((o1, c, r, keys, raw));
+                if best.as_ref().is_none_or(|b| o1 < b.0) {
+                    best = Some((o1, Branch { center: c, radius: r, contacts: keys, snapped: raw }));
                 }
             }
         }
-        best.map(|b| Branch { center: b.1, radius: b.2, contacts: b.3, snapped: b.4 })
+        best.map(|b| b.1)
     }
 }
