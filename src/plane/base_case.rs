@@ -42,6 +42,10 @@ use std::f64::consts::{PI, TAU};
 /// than the same.
 const SLIVER: f64 = 64.0;
 
+/// Footpoint tolerance of constructed disks, as a fraction of the shape's
+/// tolerance.
+const TOUCH: f64 = 1e-3;
+
 /// Fraction by which coinciding contacts of a branch point are pulled
 /// into their own primitives.
 const NUDGE: f64 = 1e-12;
@@ -566,7 +570,7 @@ impl Builder<'_> {
                 }
             }
             let (d, u) = self.distance(i, c);
-            if (d - r).abs() <= self.tol {
+            if (d - r).abs() <= self.touch_tol() {
                 if let Site::Point(q) = self.sites[i].site {
                     // A disk through a reflex vertex from outside its fan
                     // (in this subshape) touches the element beside it.
@@ -605,6 +609,19 @@ impl Builder<'_> {
             .collect();
         let feet = feet.into_iter().zip(keep).filter(|(_, k)| *k).map(|((_, k), _)| k).collect();
         (feet, whole)
+    }
+
+    /// Contacts of a constructed disk count as footpoints within this
+    /// distance: the disks here come from closed-form constructions
+    /// (residuals of a few ulps), while the shape's tolerance would let a
+    /// disk inside a nearly circular stretch of arcs (a rounded tip) touch
+    /// all of them at once.
+    /// Far from the origin, rounding of the coordinates themselves sets the
+    /// floor.
+    fn touch_tol(&self) -> f64 {
+        let bb = self.shape.bbox();
+        let magnitude = bb.min.x.abs().max(bb.min.y.abs()).max(bb.max.x.abs()).max(bb.max.y.abs()) + bb.diagonal();
+        (TOUCH * self.tol).max(256.0 * f64::EPSILON * magnitude).min(self.tol)
     }
 
     /// True when key `k`, found on element site `i`, is an end of `i`
