@@ -109,7 +109,7 @@ pub fn medial_axis(shape: &Shape2d, opts: &AxisOptions) -> Result<MedialAxis2d, 
 }
 
 /// Interior points of each edge whose disks [`check_disks`] verifies.
-const CHECKS_PER_EDGE: usize = 8;
+const CHECKS_PER_EDGE: usize = 2;
 
 /// Every node's disk and the disks at interior points of every edge must touch
 /// the boundary and hold none of it (nearest-element queries on the shared
