@@ -1,10 +1,11 @@
 //! The whole medial axis (divide, base cases, conquer) per element on
 //! smooth biarc flowers and random star polygons, 1 and 2 threads, with
 //! the share of the divide step. `cargo bench --bench axis`. Figures go to
-//! docs/PERFORMANCE.md. Sizes stop where the divide step (still O(n) work
-//! per `maxdisk*` slide) makes a run longer than a minute.
+//! docs/PERFORMANCE.md. Sizes stop where the divide step (whose `maxdisk*`
+//! slides still cost a nearest-element query per step) makes a run longer
+//! than a few seconds, or where the axis still breaks down.
 
-use medax::plane::divide::decompose;
+use medax::plane::divide::decompose_with;
 use medax::plane::{medial_axis, AxisOptions};
 use medax::shape::{samples, Shape2d, ShapeOptions, Vertex};
 use std::time::Instant;
@@ -12,8 +13,8 @@ use std::time::Instant;
 fn main() {
     type Gen = fn(usize) -> Vec<Vec<Vertex>>;
     let kinds: [(&str, Gen, &[usize]); 2] = [
-        ("flower arcs (C1)", samples::flower_arcs, &[50, 100, 200]),
-        ("star polygon", |n| samples::star_polygon(n, 3), &[100, 300, 1000, 3000]),
+        ("flower arcs (C1)", samples::flower_arcs, &[1_000, 3_000, 10_000, 30_000]),
+        ("star polygon", |n| samples::star_polygon(n, 3), &[1_000, 3_000, 10_000]),
     ];
     println!("| shape | n | threads | axis | µs per element | divide share | nodes |");
     println!("|---|---:|---:|---:|---:|---:|---:|");
@@ -26,7 +27,7 @@ fn main() {
                 let axis = pool.install(|| medial_axis(&s, &AxisOptions::default()));
                 let total = t.elapsed().as_secs_f64();
                 let t = Instant::now();
-                let d = decompose(&s, AxisOptions::default().seed);
+                let d = decompose_with(&s, AxisOptions::default().seed, AxisOptions::default().leaf_parts);
                 let divide = t.elapsed().as_secs_f64();
                 let nodes = match (&axis, d.cuts.is_empty()) {
                     (Ok(a), _) => a.nodes.len().to_string(),
