@@ -101,12 +101,27 @@ pub fn medial_axis(shape: &Shape2d, opts: &AxisOptions) -> Result<MedialAxis2d, 
     if shape.loops().len() > 1 {
         return Err(AxisError::HolesUnsupported);
     }
-    let d = decompose_with(shape, opts.seed, opts.leaf_parts.max(3));
     let finder = super::DiskFinder::new(shape);
-    let axis = glue_with(shape, &d, Some(&finder))?;
-    check_disks(&finder, &axis)?;
-    Ok(axis)
+    // The divide step is randomized: a numerical breakdown in one
+    // decomposition is retried with other random choices (derived from the
+    // seed, so the result stays deterministic); the first error is
+    // reported if every try fails.
+    let mut first_error = None;
+    for attempt in 0..RETRIES {
+        let seed = opts.seed.wrapping_add(attempt.wrapping_mul(0x9e37_79b9_7f4a_7c15));
+        let d = decompose_with(shape, seed, opts.leaf_parts.max(3));
+        match glue_with(shape, &d, Some(&finder)).and_then(|axis| check_disks(&finder, &axis).map(|_| axis)) {
+            Ok(axis) => return Ok(axis),
+            Err(e) => {
+                first_error.get_or_insert(e);
+            }
+        }
+    }
+    Err(first_error.unwrap_or(AxisError::Numerical(Point::default(), "no attempt")))
 }
+
+/// Decompositions tried before a numerical breakdown is reported.
+const RETRIES: u64 = 3;
 
 /// Interior points of each edge whose disks [`check_disks`] verifies.
 const CHECKS_PER_EDGE: usize = 2;
