@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::{boundary_distance, circle, inside, poly, rect, shape, star, v};
+use common::{bisected_radius, boundary_distance, circle, inside, poly, rect, shape, star, v};
 use medax::kernel::Point;
 use medax::plane::{medial_axis, AxisOptions, MedialAxis2d, NodeKind};
 use medax::shape::{samples, Element, JointKind, Shape2d, Vertex};
@@ -27,22 +27,6 @@ fn axis_distance(polylines: &[Vec<(Point, f64)>], p: Point) -> f64 {
         }
     }
     best
-}
-
-/// The centre of the largest disk tangent at `p` with inward normal `n`
-/// that stays inside, by bisection on the brute-force distance.
-fn bisected_center(s: &Shape2d, p: Point, n: Point, diag: f64) -> Point {
-    let fits = |t: f64| boundary_distance(s, p + n * t) >= t - 1e-12 * diag;
-    let (mut lo, mut hi) = (0.0, 2.0 * diag);
-    for _ in 0..70 {
-        let mid = 0.5 * (lo + hi);
-        if fits(mid) {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    p + n * lo
 }
 
 struct Report {
@@ -117,7 +101,7 @@ fn check(s: &Shape2d, axis: &MedialAxis2d, probes: usize, seed: u64) -> Report {
             Element::Arc(a) if a.is_ccw() => (a.center - p).unit(),
             Element::Arc(a) => (p - a.center).unit(),
         };
-        let c = bisected_center(s, p, n, diag);
+        let c = p + n * bisected_radius(s, p, n, diag);
         let d = axis_distance(&lines, c);
         assert!(d <= sample_tol + 1e-9 * diag, "probe at {p:?}: centre {c:?} is {d} from the axis");
     }

@@ -5,29 +5,11 @@
 
 mod common;
 
-use common::{boundary_distance, circle, inside, poly, rect, shape, star, v};
+use common::{bisected_radius, boundary_distance, circle, inside, poly, rect, shape, star, v};
 use medax::kernel::Point;
 use medax::plane::DiskFinder;
 use medax::shape::{samples, ElementRef, JointKind, Shape2d, ShapeOptions};
 use rand::{Rng, SeedableRng};
-
-/// The largest t for which the disk of radius t at `p + t·n` stays inside
-/// the boundary (distance from its centre at least t, up to rounding of
-/// coordinates: 1e-12 × `diag`), by bisection.
-fn bisected_radius(s: &Shape2d, p: Point, n: Point, diag: f64) -> f64 {
-    let hi = 4.0 * diag;
-    let fits = |t: f64| boundary_distance(s, p + n * t) >= t - 1e-12 * diag;
-    let (mut lo, mut hi) = (0.0, hi);
-    for _ in 0..80 {
-        let mid = 0.5 * (lo + hi);
-        if fits(mid) {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    lo
-}
 
 #[derive(Default)]
 struct Tally {

@@ -185,33 +185,6 @@ fn element_param(e: &Element, t: f64) -> f64 {
     }
 }
 
-/// Inward unit normal of element `e` at fraction `t`.
-fn normal_at(e: &Element, t: f64) -> Point {
-    let tangent = match e {
-        Element::Segment(s) => (s.b - s.a).unit(),
-        Element::Arc(a) => {
-            let p = e.point_at(t);
-            let d = (p - a.center).perp().unit();
-            if a.is_ccw() {
-                d
-            } else {
-                -d
-            }
-        }
-    };
-    tangent.perp()
-}
-
-/// The vertex at a boundary position, if it is one.
-fn vertex_at(shape: &Shape2d, p: BoundaryPos) -> Option<usize> {
-    let n = shape.loops()[p.loop_index].len();
-    match p.t {
-        0.0 => Some(p.element),
-        1.0 => Some((p.element + 1) % n),
-        _ => None,
-    }
-}
-
 /// The same boundary position, written at the end of one element or the
 /// start of the next.
 fn same_position(shape: &Shape2d, a: BoundaryPos, b: BoundaryPos) -> bool {
@@ -248,16 +221,17 @@ fn merge_touching_chains(shape: &Shape2d, pieces: Vec<Piece>) -> Vec<Piece> {
 
 /// Solves one subshape. `cuts` are the divide step's dividing disks (the
 /// auxiliary arcs refer to them); `tol` is the contact tolerance.
-/// `finder`, when given, is the whole shape's maximal-disk index: branch
-/// points are then also checked to be empty for the whole shape.
+/// `finder` is the whole shape's maximal-disk index: branch points are
+/// also checked to be empty for the whole shape.
 pub fn solve(
     shape: &Shape2d,
     s: &Subshape,
     cuts: &[Cut],
     tol: f64,
-    finder: Option<&DiskFinder>,
+    finder: &DiskFinder,
 ) -> Result<LocalAxis, BaseCaseError> {
-    let mut b = Builder { shape, tol, sites: Vec::new(), events: Vec::new(), aux: Vec::new(), finder };
+    let touch = Builder::touch_tol(shape, tol);
+    let mut b = Builder { shape, tol, touch, sites: Vec::new(), events: Vec::new(), aux: Vec::new(), finder };
     b.collect_sites(s, cuts);
     if b.sites.is_empty() {
         // A subshape of auxiliary arcs and single points only: its axis is
@@ -322,10 +296,12 @@ impl AuxArc {
 struct Builder<'a> {
     shape: &'a Shape2d,
     tol: f64,
+    /// Footpoint tolerance of constructed disks ([`Builder::touch_tol`]).
+    touch: f64,
     sites: Vec<LocalSite>,
     events: Vec<Event>,
     /// The whole shape's index, for checking branch points.
-    finder: Option<&'a DiskFinder<'a>>,
+    finder: &'a DiskFinder<'a>,
     /// Each auxiliary arc: its disk, the index of the site after it, and
     /// the arc itself (centre, radius, start and end point, counter-clockwise).
     aux: Vec<(usize, usize, AuxArc)>,
@@ -421,10 +397,10 @@ impl Builder<'_> {
             if parts.is_empty() {
                 // A single point between two auxiliary arcs: a reflex
                 // vertex's fan between the two disks' directions.
-                if let (Some(v), Some((c0, r0)), Some((c1, r1))) = (vertex_at(shape, from), before, after) {
+                if let (Some(v), Some((c0, r0)), Some((c1, r1))) = (from.vertex(shape), before, after) {
                     if shape.joint(l, v) == JointKind::Reflex {
                         let q = lp.vertices()[v].p;
-                        let n_prev = normal_at(&lp.element((v + n - 1) % n), 1.0);
+                        let n_prev = lp.element((v + n - 1) % n).end_tangent().perp();
                         self.push_fan(l, v, n_prev, c0 - q, c1 - q, r0.min(r1));
                     }
                 }
@@ -435,8 +411,8 @@ impl Builder<'_> {
             if let (Some(v), Some((c, r))) = (start_vertex, before) {
                 if shape.joint(l, v) == JointKind::Reflex {
                     let q = lp.vertices()[v].p;
-                    let n_prev = normal_at(&lp.element((v + n - 1) % n), 1.0);
-                    let n_next = normal_at(&lp.element(v), 0.0);
+                    let n_prev = lp.element((v + n - 1) % n).end_tangent().perp();
+                    let n_next = lp.element(v).start_tangent().perp();
                     self.push_fan(l, v, n_prev, c - q, n_next, r);
                 }
             }
@@ -446,8 +422,8 @@ impl Builder<'_> {
                     // The joint at this element's start, inside the chain.
                     if shape.joint(l, e) == JointKind::Reflex {
                         let prev = lp.element((e + n - 1) % n);
-                        let np = normal_at(&prev, 1.0);
-                        self.push_fan(l, e, np, np, normal_at(&lp.element(e), 0.0), f64::INFINITY);
+                        let np = prev.end_tangent().perp();
+                        self.push_fan(l, e, np, np, lp.element(e).start_tangent().perp(), f64::INFINITY);
                     }
                 }
                 // A sliver at a chain's end (a cut within the tolerance of
@@ -462,7 +438,7 @@ impl Builder<'_> {
                 let v = (el + 1) % n;
                 if shape.joint(l, v) == JointKind::Reflex {
                     let q = lp.vertices()[v].p;
-                    let n_prev = normal_at(&lp.element(el), 1.0);
+                    let n_prev = lp.element(el).end_tangent().perp();
                     self.push_fan(l, v, n_prev, n_prev, c - q, r);
                 }
             }
@@ -570,7 +546,7 @@ impl Builder<'_> {
                 }
             }
             let (d, u) = self.distance(i, c);
-            if (d - r).abs() <= self.touch_tol() {
+            if (d - r).abs() <= self.touch {
                 if let Site::Point(q) = self.sites[i].site {
                     // A disk through a reflex vertex from outside its fan
                     // (in this subshape) touches the element beside it.
@@ -618,10 +594,10 @@ impl Builder<'_> {
     /// all of them at once.
     /// Far from the origin, rounding of the coordinates themselves sets the
     /// floor.
-    fn touch_tol(&self) -> f64 {
-        let bb = self.shape.bbox();
+    fn touch_tol(shape: &Shape2d, tol: f64) -> f64 {
+        let bb = shape.bbox();
         let magnitude = bb.min.x.abs().max(bb.min.y.abs()).max(bb.max.x.abs()).max(bb.max.y.abs()) + bb.diagonal();
-        (TOUCH * self.tol).max(256.0 * f64::EPSILON * magnitude).min(self.tol)
+        (TOUCH * tol).max(256.0 * f64::EPSILON * magnitude).min(tol)
     }
 
     /// True when key `k`, found on element site `i`, is an end of `i`
@@ -672,7 +648,10 @@ impl Builder<'_> {
         };
         feet.sort_by(|a, b| self.pos(*a).total_cmp(&self.pos(*b)));
         feet.dedup_by(|a, b| a.site == b.site && (a.w - b.w).abs() <= 1e-12);
-        self.events[id].feet = feet;
+        let e = &mut self.events[id];
+        e.feet = feet;
+        e.whole.sort_unstable();
+        e.whole.dedup();
         id
     }
 
@@ -747,36 +726,27 @@ impl Builder<'_> {
             let (a, b) = (self.sites[i], self.sites[j]);
             let key = Key { site: j, w: 0.0 };
             let p = self.point_of(j, b.u0);
-            match (a.prim, b.prim) {
-                (Primitive::Element(ea), Primitive::Element(eb)) => {
-                    let joint = self.shape.joint(eb.loop_index, eb.element);
-                    debug_assert_eq!(ea.loop_index, eb.loop_index);
-                    if joint == JointKind::Convex {
+            // The element whose normal the joint's disk grows along: the
+            // one after the joint, or before it at the start of a fan.
+            let grow_from = match (a.prim, b.prim) {
+                (Primitive::Element(_), Primitive::Element(eb)) => {
+                    if self.shape.joint(eb.loop_index, eb.element) == JointKind::Convex {
                         self.add_event(p, 0.0, EventKind::Corner, vec![key], Vec::new());
                         continue;
                     }
-                    let e = self.shape.loops()[eb.loop_index].element(eb.element);
-                    let (c, r) = self.grow(p, normal_at(&e, 0.0), &[i, j]).ok_or(BaseCaseError::NoDisk(p))?;
-                    let (mut feet, whole) = self.touching(c, r);
-                    feet.push(key);
-                    self.add_event(c, r, EventKind::Joint, feet, whole);
+                    (eb, false)
                 }
-                (Primitive::Element(ea), Primitive::Vertex { .. }) => {
-                    let e = self.shape.loops()[ea.loop_index].element(ea.element);
-                    let (c, r) = self.grow(p, normal_at(&e, 1.0), &[i, j]).ok_or(BaseCaseError::NoDisk(p))?;
-                    let (mut feet, whole) = self.touching(c, r);
-                    feet.push(key);
-                    self.add_event(c, r, EventKind::Joint, feet, whole);
-                }
-                (Primitive::Vertex { .. }, Primitive::Element(eb)) => {
-                    let e = self.shape.loops()[eb.loop_index].element(eb.element);
-                    let (c, r) = self.grow(p, normal_at(&e, 0.0), &[i, j]).ok_or(BaseCaseError::NoDisk(p))?;
-                    let (mut feet, whole) = self.touching(c, r);
-                    feet.push(key);
-                    self.add_event(c, r, EventKind::Joint, feet, whole);
-                }
-                (Primitive::Vertex { .. }, Primitive::Vertex { .. }) => {}
-            }
+                (Primitive::Element(ea), Primitive::Vertex { .. }) => (ea, true),
+                (Primitive::Vertex { .. }, Primitive::Element(eb)) => (eb, false),
+                (Primitive::Vertex { .. }, Primitive::Vertex { .. }) => continue,
+            };
+            let (er, at_end) = grow_from;
+            let e = self.shape.loops()[er.loop_index].element(er.element);
+            let nrm = if at_end { e.end_tangent() } else { e.start_tangent() }.perp();
+            let (c, r) = self.grow(p, nrm, &[i, j]).ok_or(BaseCaseError::NoDisk(p))?;
+            let (mut feet, whole) = self.touching(c, r);
+            feet.push(key);
+            self.add_event(c, r, EventKind::Joint, feet, whole);
         }
         // Arcs whose own circle is the maximal disk at their middle.
         for i in 0..n {
@@ -1024,7 +994,7 @@ impl Builder<'_> {
                 }
                 // And empty for the whole shape: a subshape's own
                 // primitives do not see past its auxiliary arcs.
-                if self.finder.and_then(|f| f.nearest(c)).is_some_and(|(_, dist)| dist < r - 4.0 * self.tol) {
+                if self.finder.nearest(c).is_some_and(|(_, dist)| dist < r - 4.0 * self.tol) {
                     continue;
                 }
                 let key = |i: usize| self.key(i, self.param(i, c, r), r);

@@ -9,8 +9,9 @@
 
 use super::axis::{edge_kind, AxisEdge, AxisNode, MedialAxis2d, NodeKind, Primitive};
 use super::base_case::{self, BaseCaseError, EventKind, LocalAxis};
-use super::divide::{decompose_with, Decomposition};
+use super::divide::{decompose_in, Decomposition};
 use super::subshape::Subshape;
+use super::DiskFinder;
 use crate::kernel::Point;
 use crate::shape::Shape2d;
 use rayon::prelude::*;
@@ -101,7 +102,7 @@ pub fn medial_axis(shape: &Shape2d, opts: &AxisOptions) -> Result<MedialAxis2d, 
     if shape.loops().len() > 1 {
         return Err(AxisError::HolesUnsupported);
     }
-    let finder = super::DiskFinder::new(shape);
+    let finder = DiskFinder::new(shape);
     // The divide step is randomized: a numerical breakdown in one
     // decomposition is retried with other random choices (derived from the
     // seed, so the result stays deterministic); the first error is
@@ -109,8 +110,8 @@ pub fn medial_axis(shape: &Shape2d, opts: &AxisOptions) -> Result<MedialAxis2d, 
     let mut first_error = None;
     for attempt in 0..RETRIES {
         let seed = opts.seed.wrapping_add(attempt.wrapping_mul(0x9e37_79b9_7f4a_7c15));
-        let d = decompose_with(shape, seed, opts.leaf_parts.max(3));
-        match glue_with(shape, &d, Some(&finder)).and_then(|axis| check_disks(&finder, &axis).map(|_| axis)) {
+        let d = decompose_in(&finder, seed, opts.leaf_parts.max(3));
+        match glue(&finder, &d).and_then(|axis| check_disks(&finder, &axis).map(|_| axis)) {
             Ok(axis) => return Ok(axis),
             Err(e) => {
                 first_error.get_or_insert(e);
@@ -123,14 +124,16 @@ pub fn medial_axis(shape: &Shape2d, opts: &AxisOptions) -> Result<MedialAxis2d, 
 /// Decompositions tried before a numerical breakdown is reported.
 const RETRIES: u64 = 3;
 
-/// Interior points of each edge whose disks [`check_disks`] verifies.
-const CHECKS_PER_EDGE: usize = 2;
+/// Where along each edge (fractions of its parameter range) [`check_disks`]
+/// verifies the disk: the middle, and close to both ends, where a wrong
+/// footpoint range shows first.
+const EDGE_CHECKS: [f64; 3] = [1.0 / 64.0, 0.5, 63.0 / 64.0];
 
 /// Every node's disk and the disks at interior points of every edge must touch
 /// the boundary and hold none of it (nearest-element queries on the shared
 /// index, independent of how the axis was built): a wrong pair of
 /// primitives on an edge shows up here and is reported, not returned.
-fn check_disks(finder: &super::DiskFinder, axis: &MedialAxis2d) -> Result<(), AxisError> {
+fn check_disks(finder: &DiskFinder, axis: &MedialAxis2d) -> Result<(), AxisError> {
     let shape = finder.shape();
     let slack = 64.0 * shape.tolerance();
     let bad = |c: Point, r: f64| finder.nearest(c).is_none_or(|(_, d)| (d - r).abs() > slack);
@@ -138,10 +141,7 @@ fn check_disks(finder: &super::DiskFinder, axis: &MedialAxis2d) -> Result<(), Ax
         return Err(AxisError::Numerical(n.point, "a node's disk is not maximal"));
     }
     let wrong = axis.edges.par_iter().find_map_any(|e| {
-        // Evenly spaced, plus close to both ends where a wrong footpoint
-        // range shows first.
-        let at = (1..CHECKS_PER_EDGE).map(|k| k as f64 / CHECKS_PER_EDGE as f64).chain([1.0 / 64.0, 63.0 / 64.0]);
-        at.into_iter().find_map(|s| match e.eval(shape, &axis.nodes, s) {
+        EDGE_CHECKS.iter().find_map(|&s| match e.eval(shape, &axis.nodes, s) {
             Some((c, r)) if !bad(c, r) => None,
             Some((c, _)) => Some(c),
             None => Some(axis.nodes[e.from].point),
@@ -153,17 +153,10 @@ fn check_disks(finder: &super::DiskFinder, axis: &MedialAxis2d) -> Result<(), Ax
     }
 }
 
-/// Solves every leaf and stuck subshape (in parallel) and glues them.
-pub fn glue(shape: &Shape2d, d: &Decomposition) -> Result<MedialAxis2d, AxisError> {
-    glue_with(shape, d, None)
-}
-
-/// [`glue`], checking branch points against the whole shape's `finder`.
-fn glue_with(
-    shape: &Shape2d,
-    d: &Decomposition,
-    finder: Option<&super::DiskFinder>,
-) -> Result<MedialAxis2d, AxisError> {
+/// Solves every leaf and stuck subshape (in parallel) and glues them;
+/// `finder` indexes the shape the decomposition `d` was made of.
+pub fn glue(finder: &DiskFinder, d: &Decomposition) -> Result<MedialAxis2d, AxisError> {
+    let shape = finder.shape();
     let tol = shape.tolerance();
     let all: Vec<&Subshape> = d.leaves.iter().chain(d.stuck.iter()).collect();
     let locals: Vec<LocalAxis> =

@@ -186,15 +186,7 @@ fn reflex_points(shape: &Shape2d, s: &Subshape) -> Vec<BoundaryPos> {
             Piece::Chain { from, to } if ChainParts::new(shape, from, to).is_empty() => Some(from),
             _ => None,
         })
-        .filter(|p| {
-            let n = shape.loops()[p.loop_index].len();
-            let v = match p.t {
-                0.0 => p.element,
-                1.0 => (p.element + 1) % n,
-                _ => return false,
-            };
-            shape.joint(p.loop_index, v) == JointKind::Reflex
-        })
+        .filter(|p| p.vertex(shape).is_some_and(|v| shape.joint(p.loop_index, v) == JointKind::Reflex))
         .collect()
 }
 
@@ -251,7 +243,13 @@ fn circumcircle(a: Point, b: Point, c: Point) -> Option<(Point, f64)> {
 
 /// [`decompose`] with leaves of up to `leaf_parts` original parts.
 pub fn decompose_with(shape: &Shape2d, seed: u64, leaf_parts: usize) -> Decomposition {
-    let finder = DiskFinder::new(shape);
+    decompose_in(&DiskFinder::new(shape), seed, leaf_parts)
+}
+
+/// [`decompose_with`] on the maximal disks of an existing `finder` (its
+/// index is built once for every decomposition of the same shape).
+pub fn decompose_in(finder: &DiskFinder, seed: u64, leaf_parts: usize) -> Decomposition {
+    let shape = finder.shape();
     let mut out = Decomposition::default();
     let mut todo = vec![Subshape::whole_loop(shape, 0)];
     // Depth-first with an explicit stack: cut ids depend only on the order
@@ -271,9 +269,9 @@ pub fn decompose_with(shape: &Shape2d, seed: u64, leaf_parts: usize) -> Decompos
                 let (pos, range) = pick_point(shape, &s, &mut rng)?;
                 let at = ElementRef { loop_index: pos.loop_index, element: pos.element };
                 let d = finder.max_disk(at, pos.t);
-                cut_with(&finder, &s, parts, out.cuts.len(), &d, pos, range)
+                cut_with(finder, &s, parts, out.cuts.len(), &d, pos, range)
             })
-            .or_else(|| cluster_cut(&finder, &s, &points, out.cuts.len()));
+            .or_else(|| cluster_cut(finder, &s, &points, out.cuts.len()));
         match found {
             Some((cut, children)) => {
                 out.cuts.push(cut);

@@ -34,6 +34,16 @@ impl BoundaryPos {
     pub fn point(&self, shape: &Shape2d) -> Point {
         shape.loops()[self.loop_index].element(self.element).point_at(self.t)
     }
+
+    /// The vertex this position is at (the start of element `t` = 0 or the
+    /// end of `t` = 1), if it is one.
+    pub fn vertex(&self, shape: &Shape2d) -> Option<usize> {
+        match self.t {
+            0.0 => Some(self.element),
+            1.0 => Some((self.element + 1) % shape.loops()[self.loop_index].len()),
+            _ => None,
+        }
+    }
 }
 
 /// One piece of a subshape's boundary, in travel order (interior on the left).

@@ -88,3 +88,20 @@ pub fn inside(s: &medax::shape::Shape2d, p: Point) -> bool {
     let k = medax::kernel::FilteredKernel;
     s.loops().iter().map(|l| l.winding_number(&k, p)).sum::<i32>() == 1
 }
+
+/// The largest t for which the disk of radius t at `p + t·n` stays inside
+/// the boundary (distance from its centre at least t, up to rounding of
+/// coordinates: 1e-12 × `diag`), by bisection on [`boundary_distance`].
+pub fn bisected_radius(s: &medax::shape::Shape2d, p: Point, n: Point, diag: f64) -> f64 {
+    let fits = |t: f64| boundary_distance(s, p + n * t) >= t - 1e-12 * diag;
+    let (mut lo, mut hi) = (0.0, 4.0 * diag);
+    for _ in 0..80 {
+        let mid = 0.5 * (lo + hi);
+        if fits(mid) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    lo
+}
