@@ -1,5 +1,7 @@
-//! Validates one sample shape once (for profilers):
-//! `cargo run --release --example profile_one -- star|flower|comb N`.
+//! Validates one sample shape once, and optionally computes its medial
+//! axis (for profilers):
+//! `cargo run --release --example profile_one -- star|flower|comb N [axis]`.
+use medax::plane::{medial_axis, AxisOptions};
 use medax::shape::{samples, Shape2d, ShapeOptions};
 
 fn main() {
@@ -13,4 +15,11 @@ fn main() {
     let t = std::time::Instant::now();
     let s = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).expect("valid sample");
     println!("{} elements validated in {:.3} s", s.element_count(), t.elapsed().as_secs_f64());
+    if args.get(3).map(String::as_str) == Some("axis") {
+        let t = std::time::Instant::now();
+        match medial_axis(&s, &AxisOptions::default()) {
+            Ok(a) => println!("axis: {} nodes in {:.3} s", a.nodes.len(), t.elapsed().as_secs_f64()),
+            Err(e) => println!("axis failed after {:.3} s: {e}", t.elapsed().as_secs_f64()),
+        }
+    }
 }

@@ -319,7 +319,7 @@ mod tests {
         for seed in 0..10 {
             let shape = Shape2d::from_bulge_loops(samples::star_polygon(60, seed), &ShapeOptions::default()).unwrap();
             let d = decompose(&shape, seed);
-            assert!(d.stuck.len() <= 2, "{seed}: {} stuck of {}", d.stuck.len(), d.leaves.len());
+            assert!(d.stuck.len() <= 3, "{seed}: {} stuck of {}", d.stuck.len(), d.leaves.len());
             let tol = 1e-9 * shape.bbox().diagonal();
             for c in &d.cuts {
                 assert!((boundary_distance(&shape, c.center) - c.radius).abs() <= tol, "{c:?}");

@@ -7,18 +7,23 @@
 //! defining pair changes, Figure 2.6).
 //!
 //! The thesis finds D* by iterating tritangent constructions over the
-//! elements that overlap the current candidate. Here the slide follows the
-//! bisector by its footpoint parametrisation (kernel::bisector), checks
-//! that each disk stays empty with a nearest-element query, and bisects the
-//! parameter where emptiness first fails, to 2^-50 of the step. The result
-//! is exact up to that bisection; the exact kernel will replace the last
-//! step by the Apollonius construction of the three sites.
+//! elements that overlap the current candidate, and so does this module:
+//! an upper bound on where the slide stops (where a contact leaves its
+//! element) shrinks by the Apollonius disk of the two sites and the element
+//! nearest to the candidate's centre until the candidate is empty; one
+//! nearest-element query per construction, whatever the distance travelled
+//! (long thin channels are where a march would take thousands of steps).
+//! A march along the bisector with a bisection at the end is kept as the
+//! fallback for the rare constructions that fail numerically (measured:
+//! none of 351 slides on a random star polygon of 10^4 vertices, 1 in 60
+//! at 3·10^4).
 
 use super::maxdisk::{DiskFinder, Footpoint};
-use crate::kernel::apollonius::Site;
+use crate::kernel::apollonius::{tangent_disks, Site};
 use crate::kernel::bisector::bisector_point;
 use crate::kernel::Point;
-use crate::shape::{Element, JointKind};
+use crate::shape::{Element, ElementRef, JointKind};
+use std::f64::consts::{PI, TAU};
 
 /// What a disk touching `f` sees there: the element's line or circle, or a
 /// point at a reflex vertex.
@@ -113,7 +118,12 @@ pub fn slide_to_third(
         (None, Some(_)) => -1.0,
         (None, None) => return None,
     };
-    // March with steps that move the centre by 2–20 % of the radius.
+    if let Some(found) = jump_to_third(finder, [fa, fb], [&sa, &sb], (c, r), u0, dir) {
+        return Some(found);
+    }
+    // Fallback: march with steps that move the centre by 2–20 % of the
+    // radius (slow in long thin channels, where the disk travels many
+    // radii), then bisect where the disk stops being empty.
     let (mut lo, mut h) = (u0, h0);
     let (mut prev_c, mut prev_r) = (c, r);
     for _ in 0..2_000 {
@@ -143,6 +153,144 @@ pub fn slide_to_third(
         }
     }
     None
+}
+
+/// Constructions tried before the slide falls back to marching.
+const JUMPS: usize = 24;
+
+/// The slide of [`slide_to_third`] by constructions instead of steps.
+///
+/// The first event along the bisector is an upper bound `hi` that only
+/// shrinks: it starts at the nearer place where a contact leaves its
+/// element (or a reflex vertex's fan of normals), and whenever the disk at
+/// `hi` holds part of the boundary, the element nearest to its centre must
+/// have been touched first somewhere before `hi` (the start disk is
+/// empty): the Apollonius disk tangent to `sa`, `sb` and that element's
+/// line, circle or end points moves `hi` there. The first empty disk is
+/// returned, usually after one to three constructions, whatever the
+/// distance travelled. `None` (then the caller marches) when a
+/// construction fails numerically.
+fn jump_to_third(
+    finder: &DiskFinder,
+    [fa, fb]: [&Footpoint; 2],
+    [sa, sb]: [&Site; 2],
+    (c0, r0): (Point, f64),
+    u0: f64,
+    dir: f64,
+) -> Option<(Point, f64)> {
+    let shape = finder.shape();
+    let tol = finder.contact_tolerance();
+    let element = |r: ElementRef| shape.loops()[r.loop_index].element(r.element);
+    let (ea, eb) = (element(fa.element), element(fb.element));
+    let on = |e: &Element, q: Point| e.closest_point(q).0 <= tol;
+    // How far along the slide a footpoint parameter on `sa` lies; angles
+    // signed, as a slide turns a footpoint around a vertex or an arc's
+    // centre by less than half a turn (a reflex fan is narrower than π).
+    let angular = !matches!(sa, Site::Line { .. });
+    let ahead = |u: f64| {
+        let d = (u - u0) * dir;
+        if angular {
+            (d + PI).rem_euclid(TAU) - PI
+        } else {
+            d
+        }
+    };
+    let min_ahead = if angular { 1e-12 } else { tol };
+    // A disk (c, r) counts if it lies on this branch of the bisector.
+    let on_branch = |c: Point, r: f64| -> Option<f64> {
+        let u = param_on(sa, c, sa.contact(c, r));
+        let (cb, rb) = bisector_point(sa, sb, u)?;
+        (cb.dist(c) <= 16.0 * tol && (rb - r).abs() <= 16.0 * tol).then_some(u)
+    };
+    // Keeps the disk (c, r) in `best` if it comes first, before `bound`.
+    let offer = |best: &mut Option<(f64, Point, f64)>, c: Point, r: f64, bound: f64| -> bool {
+        let Some(u) = on_branch(c, r) else { return false };
+        let d = ahead(u);
+        let better = d > min_ahead && d < bound && best.is_none_or(|(b, _, _)| d < b);
+        if better {
+            *best = Some((d, c, r));
+        }
+        better
+    };
+    // Where each contact leaves its range, ahead in that site's own
+    // parameter (the direction a small step moves it): the nearer such
+    // place bounds the slide. A contact already at the end of its range
+    // (a maximal disk grown at a reflex vertex touches at the end of its
+    // fan) ends the slide where it starts: the defining pair changes there.
+    let scale = if angular { 1.0 } else { r0 };
+    let (c1, r1) = bisector_point(sa, sb, u0 + dir * 1e-6 * scale)?;
+    let mut best = None;
+    for (f, s, other) in [(fa, sa, sb), (fb, sb, sa)] {
+        let turns = !matches!(s, Site::Line { .. });
+        let signed = |d: f64| if turns { (d + PI).rem_euclid(TAU) - PI } else { d };
+        let here = param_on(s, c0, s.contact(c0, r0));
+        let forward = signed(param_on(s, c1, s.contact(c1, r1)) - here).signum();
+        let mut open = false;
+        for u in contact_range(finder, f, s) {
+            if signed(u - here) * forward <= if turns { 1e-12 } else { tol } {
+                continue;
+            }
+            open = true;
+            if let Some((c, r)) = bisector_point(s, other, u) {
+                offer(&mut best, c, r, f64::INFINITY);
+            }
+        }
+        if !open {
+            return Some((c0, r0));
+        }
+    }
+    for _ in 0..JUMPS {
+        let (bound, c, r) = best?;
+        let (hit, d) = finder.nearest(c)?;
+        if d >= r - tol {
+            // Empty; the contacts stay on their elements by construction,
+            // checked again against rounding.
+            return (on(&ea, sa.contact(c, r)) && on(&eb, sb.contact(c, r))).then_some((c, r));
+        }
+        let e = element(hit);
+        let interior = match e {
+            Element::Segment(g) => Site::Line { a: g.a, n: (g.b - g.a).unit().perp() },
+            Element::Arc(a) => Site::Circle { o: a.center, r: a.radius, outside: !a.is_ccw() },
+        };
+        let mut moved = false;
+        for s3 in [interior, Site::Point(e.start()), Site::Point(e.end())] {
+            for (c3, r3) in tangent_disks([*sa, *sb, s3]) {
+                if matches!(s3, Site::Point(_)) || on(&e, s3.contact(c3, r3)) {
+                    moved |= offer(&mut best, c3, r3, bound);
+                }
+            }
+        }
+        if !moved {
+            return None;
+        }
+    }
+    None
+}
+
+/// The footpoint parameters on `s` (see [`param_on`]) where a contact at
+/// `f` leaves its element: the element's ends, or for a reflex vertex the
+/// normals of its two elements, which bound the vertex's fan.
+fn contact_range(finder: &DiskFinder, f: &Footpoint, s: &Site) -> Vec<f64> {
+    let shape = finder.shape();
+    let lp = &shape.loops()[f.element.loop_index];
+    let e = lp.element(f.element.element);
+    match *s {
+        Site::Line { a, n } => [e.start(), e.end()].iter().map(|&q| (q - a).dot(-n.perp())).collect(),
+        Site::Circle { o, .. } => [e.start(), e.end()]
+            .iter()
+            .map(|&q| {
+                let d = q - o;
+                d.y.atan2(d.x)
+            })
+            .collect(),
+        Site::Point(q) => {
+            let n = lp.len();
+            // The vertex is the start or the end of the footpoint's element.
+            let v = if q.dist(e.start()) <= q.dist(e.end()) { f.element.element } else { (f.element.element + 1) % n };
+            let (before, after) = (lp.element((v + n - 1) % n), lp.element(v));
+            [before.end_tangent().perp(), after.start_tangent().perp()].iter().map(|d| d.y.atan2(d.x)).collect()
+        }
+    }
 }
 
 #[cfg(test)]
@@ -188,5 +336,26 @@ mod tests {
                 .unwrap();
         assert!(c.dist(Point::new(1.0, 1.0)) < 1e-9 && (r - 1.0).abs() < 1e-9, "{c:?} {r}");
         assert_eq!(finder.touching(c, r).len(), 3);
+    }
+
+    #[test]
+    fn slides_the_length_of_a_needle_in_a_few_constructions() {
+        // A needle: apex angle 0.02 rad. From a disk near the apex the slide
+        // travels ~99 units while the radius grows from 0.01 to 0.99 (a
+        // march of steps of 20 % of the radius needs thousands of them); it
+        // must stop at the incircle, the only disk touching all three sides.
+        let v = |x: f64, y: f64| Vertex { p: Point::new(x, y), bulge: 0.0 };
+        let shape =
+            Shape2d::from_bulge_loops(vec![vec![v(0.0, 0.0), v(100.0, -1.0), v(100.0, 1.0)]], &ShapeOptions::default())
+                .unwrap();
+        let finder = DiskFinder::new(&shape);
+        let d = finder.max_disk(ElementRef { loop_index: 0, element: 0 }, 0.01);
+        assert_eq!(d.footpoints.len(), 2, "{d:?}");
+        let (c, r) =
+            slide_to_third(&finder, &d.footpoints[0], &d.footpoints[1], d.center, d.radius, Point::new(0.0, 0.0))
+                .unwrap();
+        let side = 10001f64.sqrt();
+        let (incentre, inradius) = (Point::new(100.0 * side / (1.0 + side), 0.0), 100.0 / (1.0 + side));
+        assert!(c.dist(incentre) < 1e-9 && (r - inradius).abs() < 1e-9, "{c:?} {r}");
     }
 }
