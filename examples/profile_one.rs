@@ -1,6 +1,6 @@
 //! Validates one sample shape once, and optionally computes its medial
 //! axis (for profilers):
-//! `cargo run --release --example profile_one -- star|flower|comb N [axis]`.
+//! `cargo run --release --example profile_one -- star|flower|comb N [axis [LEAF_PARTS]]`.
 use medax::plane::{medial_axis, AxisOptions};
 use medax::shape::{samples, Shape2d, ShapeOptions};
 
@@ -17,7 +17,8 @@ fn main() {
     println!("{} elements validated in {:.3} s", s.element_count(), t.elapsed().as_secs_f64());
     if args.get(3).map(String::as_str) == Some("axis") {
         let t = std::time::Instant::now();
-        match medial_axis(&s, &AxisOptions::default()) {
+        let leaf_parts = args.get(4).and_then(|s| s.parse().ok()).unwrap_or(AxisOptions::default().leaf_parts);
+        match medial_axis(&s, &AxisOptions { leaf_parts, ..AxisOptions::default() }) {
             Ok(a) => println!("axis: {} nodes in {:.3} s", a.nodes.len(), t.elapsed().as_secs_f64()),
             Err(e) => println!("axis failed after {:.3} s: {e}", t.elapsed().as_secs_f64()),
         }

@@ -286,3 +286,41 @@ fn thesis_sized_leaves_give_the_same_axis() {
         assert_eq!(thesis.nodes.len(), big.nodes.len());
     }
 }
+
+#[test]
+fn lobe_tips_of_a_fine_flower_end_at_a_leaf_disk() {
+    // 3·10^4 biarcs: each lobe's tip is a run of arcs within a few
+    // tolerances of one circle, where footpoint order is rounding. The
+    // axis must still come out, and near the tips be sound and complete.
+    let s = shape(samples::flower_arcs(30_000));
+    let a = axis_of(&s);
+    let diag = s.bbox().diagonal();
+    let tol = 1e-9 * diag;
+    let sample_tol = 1e-4 * diag;
+    let tip = |p: Point| p.norm() > 1.29;
+    let lp = &s.loops()[0];
+    // Leaves (curvature maxima) whose disks reach into the tips.
+    let reach = |i: usize| a.nodes[i].point + a.nodes[i].point.unit() * a.nodes[i].radius;
+    let near: Vec<usize> = (0..a.nodes.len()).filter(|&i| a.nodes[i].kind == NodeKind::Leaf && tip(reach(i))).collect();
+    assert!(near.len() >= 5, "{} leaves near the tips", near.len());
+    for &i in near.iter().step_by(near.len() / 30 + 1) {
+        let n = &a.nodes[i];
+        assert!((boundary_distance(&s, n.point) - n.radius).abs() <= tol, "node {n:?}");
+    }
+    let lines = a.sampled(&s, sample_tol);
+    let mut probes = 0;
+    for k in (0..lp.len()).step_by(97) {
+        let e = lp.element(k);
+        let p = e.point_at(0.5);
+        if !tip(p) {
+            continue;
+        }
+        let Element::Arc(arc) = e else { continue };
+        let n = if arc.is_ccw() { (arc.center - p).unit() } else { (p - arc.center).unit() };
+        let c = p + n * bisected_radius(&s, p, n, diag);
+        let d = axis_distance(&lines, c);
+        assert!(d <= sample_tol + tol, "probe at {p:?}: centre {c:?} is {d} from the axis");
+        probes += 1;
+    }
+    assert!(probes >= 20, "{probes} probes");
+}

@@ -30,7 +30,7 @@
 
 use super::axis::Primitive;
 use super::maxdisk::DiskFinder;
-use super::subshape::{BoundaryPos, ChainParts, Cut, Piece, Subshape};
+use super::subshape::{hugged_disk, BoundaryPos, ChainParts, Cut, Piece, Subshape, HUGGED_TIP};
 use crate::kernel::apollonius::{tangent_disks, Site};
 use crate::kernel::growing_disk::GrowingDisk;
 use crate::kernel::Point;
@@ -230,6 +230,18 @@ pub fn solve(
     tol: f64,
     finder: &DiskFinder,
 ) -> Result<LocalAxis, BaseCaseError> {
+    if let Some(disk) = hugged_disk(shape, s, cuts, HUGGED_TIP * tol) {
+        // The tip of a lobe cut at nearly its osculating circle: its true
+        // axis runs on inside a sliver a few tolerances thin, where the
+        // order of footpoints is rounding rather than geometry, and every
+        // disk there is this one within those tolerances. The disk is the
+        // tip's whole axis, a leaf.
+        let c = cuts[disk];
+        return Ok(LocalAxis {
+            nodes: vec![LocalNode { center: c.center, radius: c.radius, kind: EventKind::Port(disk) }],
+            edges: Vec::new(),
+        });
+    }
     let touch = Builder::touch_tol(shape, tol);
     let mut b = Builder { shape, tol, touch, sites: Vec::new(), events: Vec::new(), aux: Vec::new(), finder };
     b.collect_sites(s, cuts);

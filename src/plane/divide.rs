@@ -22,7 +22,7 @@
 
 use super::maxdisk::{DiskFinder, Footpoint, MaxDisk};
 use super::maxdisk_star::slide_to_third;
-use super::subshape::{BoundaryPos, ChainParts, Cut, Piece, Subshape};
+use super::subshape::{hugged_disk, BoundaryPos, ChainParts, Cut, Piece, Subshape, HUGGED_TIP};
 use crate::kernel::Point;
 use crate::shape::samples::Mix;
 use crate::shape::{ElementRef, JointKind, Shape2d};
@@ -259,7 +259,12 @@ pub fn decompose_in(finder: &DiskFinder, seed: u64, leaf_parts: usize) -> Decomp
         let points = reflex_points(shape, &s);
         // Reflex vertices between auxiliary arcs are zero-length arcs: they
         // count towards a leaf's size like original parts.
-        if parts + points.len() <= leaf_parts {
+        // A lobe's tip within a few tolerances of its one dividing disk is
+        // a leaf however many parts it has: cutting it again would leave
+        // bands of rounding between nearly equal disks.
+        if parts + points.len() <= leaf_parts
+            || hugged_disk(shape, &s, &out.cuts, HUGGED_TIP * shape.tolerance()).is_some()
+        {
             out.leaves.push(s);
             continue;
         }

@@ -152,6 +152,33 @@ impl ChainParts {
     }
 }
 
+/// Tolerances within which the boundary of a subshape must stay of its one
+/// dividing disk's circle for the disk to be the subshape's whole axis
+/// ([`hugged_disk`]). Measured on flowers of 3·10^4 to 10^5 arcs: lobe
+/// tips 2–8·10^-5 long whose boundary lies 1–5 tolerances from the cut.
+pub(crate) const HUGGED_TIP: f64 = 16.0;
+
+/// The dividing disk (an index into `cuts`) of a subshape cut off by that
+/// one disk alone whose boundary stays within `slack` (model units) of the
+/// disk's circle: the tip of a smooth lobe cut at nearly its osculating
+/// circle. `None` for any other subshape. Stops at the first part that
+/// strays, so it costs little on ordinary subshapes.
+pub fn hugged_disk(shape: &Shape2d, s: &Subshape, cuts: &[Cut], slack: f64) -> Option<usize> {
+    let mut disks = s.pieces.iter().filter_map(|p| match *p {
+        Piece::Aux { disk } => Some(disk),
+        Piece::Chain { .. } => None,
+    });
+    let (Some(disk), None) = (disks.next(), disks.next()) else { return None };
+    let c = cuts[disk];
+    let hugs = s.chains().all(|(from, to)| {
+        let lp = &shape.loops()[from.loop_index];
+        ChainParts::new(shape, from, to)
+            .iter()
+            .all(|(e, lo, hi)| lp.element(e).circle_deviation(lo, hi, c.center, c.radius) <= slack)
+    });
+    hugs.then_some(disk)
+}
+
 impl Subshape {
     /// The whole of loop `loop_index` as one chain (a simply connected shape
     /// before any cut).

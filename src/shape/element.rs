@@ -283,6 +283,21 @@ impl Element {
         }
     }
 
+    /// The largest distance (model units) between the circle (`c`, `r`)
+    /// and the part of the element between fractions `t0` and `t1`:
+    /// distances to a circle are extreme at the part's ends, at the foot of
+    /// `c` on a segment, and on an arc in the direction of `c` from the
+    /// arc's centre and opposite to it.
+    pub fn circle_deviation(&self, t0: f64, t1: f64, c: Point, r: f64) -> f64 {
+        let off = |t: f64| (self.point_at(t).dist(c) - r).abs();
+        let (lo, hi) = (t0.min(t1), t0.max(t1));
+        let inner = match self {
+            Element::Segment(_) => [Some(self.param_of(c)), None],
+            Element::Arc(a) => [Some(self.param_of(c)), Some(self.param_of(a.center + (a.center - c)))],
+        };
+        inner.into_iter().flatten().filter(|t| (lo..=hi).contains(t)).map(off).fold(off(t0).max(off(t1)), f64::max)
+    }
+
     /// Point at arc-length fraction `t` in [0, 1] along the element; exactly
     /// the start and end points at 0 and 1, so that positions at vertices
     /// are the vertices.
@@ -424,5 +439,24 @@ mod tests {
         // Parabolic approximation: area ≈ 2/3 · chord · sagitta.
         let expect = 2.0 / 3.0 * 1.0 * 0.5e-6;
         assert!((e.bulge_area() - expect).abs() < 1e-15, "{}", e.bulge_area());
+    }
+
+    #[test]
+    fn circle_deviation_finds_the_extremes_inside_a_part() {
+        let o = Point::new(0.0, 0.0);
+        // A half circle of radius 1 (ccw from (1, 0) to (-1, 0)) against
+        // the circle of radius 1 centred (0, 0.1): farthest from it at the
+        // top (0, 1), 0.1 inside; the ends lie √1.01 − 1 outside.
+        let half = Element::from_bulge(Point::new(1.0, 0.0), Point::new(-1.0, 0.0), 1.0);
+        let c = Point::new(0.0, 0.1);
+        assert!(close(half.circle_deviation(0.0, 1.0, c, 1.0), 0.1), "{}", half.circle_deviation(0.0, 1.0, c, 1.0));
+        // The part near the start only: the top is outside it.
+        let part = half.circle_deviation(0.0, 0.25, c, 1.0);
+        let p = half.point_at(0.25);
+        assert!(close(part, (p.dist(c) - 1.0).abs().max((1.01f64.sqrt() - 1.0).abs())), "{part}");
+        // A segment through the circle's centre line: extreme at its foot.
+        let seg = Element::from_bulge(Point::new(-1.0, 2.0), Point::new(1.0, 2.0), 0.0);
+        assert!(close(seg.circle_deviation(0.0, 1.0, o, 2.0), 5f64.sqrt() - 2.0));
+        assert!(close(seg.circle_deviation(0.25, 0.75, o, 2.0), 4.25f64.sqrt() - 2.0));
     }
 }
