@@ -273,6 +273,28 @@ fn invariant_under_start_vertex_reversal_translation_and_scale() {
 }
 
 #[test]
+fn mirror_images_have_mirrored_axes() {
+    // Mirroring flips every arc and the orientation; the shape normalises
+    // the orientation again. Mirror-symmetric shapes (the flowers) meet the
+    // same disk from both sides of their symmetry axis, where nearly equal
+    // disks must still come out as one node.
+    let mut loops: Vec<Vec<Vertex>> = (0..8u64).map(|seed| star(20 + seed as usize * 7, 500 + seed)).collect();
+    loops.push(samples::flower_arcs(400).remove(0));
+    loops.push(samples::flower_arcs(2000).remove(0));
+    for base in loops {
+        let a = axis_of(&shape(vec![base.clone()]));
+        let mirrored: Vec<Vertex> = base.iter().map(|w| v(-w.p.x, w.p.y, -w.bulge)).collect();
+        let m = axis_of(&shape(vec![mirrored]));
+        let back: Vec<(f64, f64, f64)> = branches(&m).into_iter().map(|(x, y, r)| (-x, y, r)).collect();
+        // A many-fold centre is one node, the mean of branch points found
+        // within 64 tolerances of each other; the mirror finds others.
+        let tol = if base.len() > 100 { 64e-9 * 4.0 } else { 1e-9 };
+        same_branches(&branches(&a), &back, tol, &format!("mirror of {} vertices", base.len()));
+        assert_eq!(a.nodes.len(), m.nodes.len(), "mirror of {} vertices", base.len());
+    }
+}
+
+#[test]
 fn thesis_sized_leaves_give_the_same_axis() {
     // Leaves of at most 3 original parts (the thesis's termination rule)
     // and the default larger leaves must agree.

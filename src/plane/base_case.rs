@@ -538,10 +538,19 @@ impl Builder<'_> {
             w = 1.0;
         }
         if w == 1.0 && s.joined_next {
-            Key { site: (i + 1) % self.n(), w: 0.0 }
-        } else {
-            Key { site: i, w }
+            return Key { site: (i + 1) % self.n(), w: 0.0 };
         }
+        // Where a site meets an auxiliary arc only the dividing disk itself
+        // touches (a maximal disk tangent there lies on the same normal,
+        // so it is that disk or not maximal): any other disk's contact
+        // there is rounding of one just inside the site.
+        let n = self.n();
+        if w == 0.0 && !self.sites[(i + n - 1) % n].joined_next {
+            w = NUDGE;
+        } else if w == 1.0 && !s.joined_next {
+            w = 1.0 - NUDGE;
+        }
+        Key { site: i, w }
     }
 
     /// Every site the circle (`c`, `r`) touches within the tolerance.
@@ -753,8 +762,16 @@ impl Builder<'_> {
                 (Primitive::Vertex { .. }, Primitive::Vertex { .. }) => continue,
             };
             let (er, at_end) = grow_from;
-            let e = self.shape.loops()[er.loop_index].element(er.element);
-            let nrm = if at_end { e.end_tangent() } else { e.start_tangent() }.perp();
+            let elements = &self.shape.loops()[er.loop_index];
+            let e = elements.element(er.element);
+            let mut nrm = if at_end { e.end_tangent() } else { e.start_tangent() }.perp();
+            if let (Primitive::Element(ea), Primitive::Element(_)) = (a.prim, b.prim) {
+                // A smooth joint's two normals agree only within the angular
+                // tolerance: grow along their mean, so that a mirror image
+                // grows the mirrored disk and one disk met from two joints
+                // is found twice alike.
+                nrm = (elements.element(ea.element).end_tangent().perp() + nrm).unit();
+            }
             let (c, r) = self.grow(p, nrm, &[i, j]).ok_or(BaseCaseError::NoDisk(p))?;
             let (mut feet, whole) = self.touching(c, r);
             feet.push(key);

@@ -9,8 +9,8 @@
 
 use super::axis::{edge_kind, AxisEdge, AxisNode, MedialAxis2d, NodeKind, Primitive};
 use super::base_case::{self, BaseCaseError, EventKind, LocalAxis};
-use super::divide::{decompose_in, Decomposition};
-use super::subshape::Subshape;
+use super::divide::{decompose_in, divide_into, leaf_size, Decomposition};
+use super::subshape::{Cut, Subshape};
 use super::DiskFinder;
 use crate::kernel::Point;
 use crate::shape::Shape2d;
@@ -110,8 +110,12 @@ pub fn medial_axis(shape: &Shape2d, opts: &AxisOptions) -> Result<MedialAxis2d, 
     let mut first_error = None;
     for attempt in 0..RETRIES {
         let seed = opts.seed.wrapping_add(attempt.wrapping_mul(0x9e37_79b9_7f4a_7c15));
-        let d = decompose_in(&finder, seed, opts.leaf_parts.max(3));
-        match glue(&finder, &d).and_then(|axis| check_disks(&finder, &axis).map(|_| axis)) {
+        let mut d = decompose_in(&finder, seed, opts.leaf_parts.max(3));
+        let solved = solve_leaves(&finder, &mut d, seed);
+        match solved
+            .and_then(|locals| glue(&finder, &d.cuts, &locals))
+            .and_then(|axis| check_disks(&finder, &axis).map(|_| axis))
+        {
             Ok(axis) => return Ok(axis),
             Err(e) => {
                 first_error.get_or_insert(e);
@@ -153,22 +157,65 @@ fn check_disks(finder: &DiskFinder, axis: &MedialAxis2d) -> Result<(), AxisError
     }
 }
 
-/// Solves every leaf and stuck subshape (in parallel) and glues them;
-/// `finder` indexes the shape the decomposition `d` was made of.
-pub fn glue(finder: &DiskFinder, d: &Decomposition) -> Result<MedialAxis2d, AxisError> {
+/// Rounds of [`solve_leaves`] that divide a failed leaf further.
+const REFINES: usize = 3;
+
+/// Solves every leaf and stuck subshape of `d` (in parallel); `finder`
+/// indexes the shape `d` was made of. A leaf whose base case breaks down
+/// numerically (rare: near-degenerate configurations such as many disks
+/// alike to within a few tolerances) is divided again into leaves of half
+/// its size, with random choices of its own, and those are solved; after
+/// [`REFINES`] rounds the first breakdown is reported. New cuts are
+/// appended to `d.cuts`. The order of the result depends only on `d` and
+/// `seed`.
+pub fn solve_leaves(finder: &DiskFinder, d: &mut Decomposition, seed: u64) -> Result<Vec<LocalAxis>, AxisError> {
     let shape = finder.shape();
     let tol = shape.tolerance();
-    let all: Vec<&Subshape> = d.leaves.iter().chain(d.stuck.iter()).collect();
-    let locals: Vec<LocalAxis> =
-        all.par_iter().map(|s| base_case::solve(shape, s, &d.cuts, tol, finder)).collect::<Result<_, _>>()?;
+    let mut pending: Vec<Subshape> = std::mem::take(&mut d.leaves);
+    pending.append(&mut d.stuck);
+    let mut locals = Vec::with_capacity(pending.len());
+    for round in 0..=REFINES {
+        let results: Vec<Result<LocalAxis, BaseCaseError>> =
+            pending.par_iter().map(|s| base_case::solve(shape, s, &d.cuts, tol, finder)).collect();
+        let mut failed = Vec::new();
+        for (s, r) in pending.into_iter().zip(results) {
+            match r {
+                Ok(local) => locals.push(local),
+                Err(e) if round == REFINES => return Err(e.into()),
+                Err(_) => failed.push(s),
+            }
+        }
+        if failed.is_empty() {
+            break;
+        }
+        let mut more = Decomposition { cuts: std::mem::take(&mut d.cuts), ..Decomposition::default() };
+        for (i, s) in failed.into_iter().enumerate() {
+            let size = leaf_size(shape, &s);
+            let again = seed ^ ((round as u64) << 32 | i as u64).wrapping_mul(0x2545_f491_4f6c_dd1d);
+            // Forced to cut at least once: a failed leaf of three parts is
+            // retried as three-part leaves from other random disks.
+            divide_into(finder, &mut more, vec![s], again, (size / 2).max(3).min(size.saturating_sub(1)));
+        }
+        d.cuts = more.cuts;
+        pending = more.leaves;
+        pending.append(&mut more.stuck);
+    }
+    Ok(locals)
+}
+
+/// Glues the axes of the subshapes (`locals`) at the centres of the
+/// dividing disks `cuts`; `finder` indexes the shape they were made of.
+pub fn glue(finder: &DiskFinder, cuts: &[Cut], locals: &[LocalAxis]) -> Result<MedialAxis2d, AxisError> {
+    let shape = finder.shape();
+    let tol = shape.tolerance();
     let mut nodes: Vec<AxisNode> = Vec::new();
-    let mut port_node: Vec<Option<usize>> = vec![None; d.cuts.len()];
+    let mut port_node: Vec<Option<usize>> = vec![None; cuts.len()];
     // Dividing disks found by sliding (maxdisk*) agree to about 1e-8 of
     // the diagonal; disks closer than this are one node.
-    let same_as = coinciding_cuts(&d.cuts, SAME_DISK * tol);
+    let same_as = coinciding_cuts(cuts, SAME_DISK * tol);
     let mut edges: Vec<AxisEdge> = Vec::new();
     let mut is_port: Vec<bool> = Vec::new();
-    for local in &locals {
+    for local in locals {
         let ids: Vec<usize> = local
             .nodes
             .iter()
@@ -207,9 +254,20 @@ pub fn glue(finder: &DiskFinder, d: &Decomposition) -> Result<MedialAxis2d, Axis
     let mut axis = MedialAxis2d { nodes, edges };
     merge_pass_through(&mut axis, &is_port);
     classify(&mut axis);
+    merge_coinciding_branches(&mut axis, SAME_DISK * tol);
+    classify(&mut axis);
     polish_branches(shape, &mut axis);
     check_tree(&axis)?;
     Ok(axis)
+}
+
+/// The representative of `x` in a union-find forest (with path halving).
+fn root(parent: &mut [usize], mut x: usize) -> usize {
+    while parent[x] != x {
+        parent[x] = parent[parent[x]];
+        x = parent[x];
+    }
+    x
 }
 
 /// The axis of a shape without holes is a tree; anything else means the
@@ -218,13 +276,6 @@ pub fn glue(finder: &DiskFinder, d: &Decomposition) -> Result<MedialAxis2d, Axis
 fn check_tree(axis: &MedialAxis2d) -> Result<(), AxisError> {
     let n = axis.nodes.len();
     let mut parent: Vec<usize> = (0..n).collect();
-    fn root(parent: &mut [usize], mut x: usize) -> usize {
-        while parent[x] != x {
-            parent[x] = parent[parent[x]];
-            x = parent[x];
-        }
-        x
-    }
     for e in &axis.edges {
         let (a, b) = (root(&mut parent, e.from), root(&mut parent, e.to));
         if a == b {
@@ -344,6 +395,52 @@ fn merge_pass_through(axis: &mut MedialAxis2d, is_port: &[bool]) {
     axis.edges = edges;
 }
 
+/// Multi-branching (thesis 2.2.2.2): a disk touching m ≥ 4 primitives is
+/// one node of valency m. Where the m contacts are cocircular only within
+/// rounding (the centre of a shape with m-fold symmetry), the base cases
+/// find several branch points a few tolerances apart, joined by edges of
+/// that length: branch nodes joined by an edge whose disks agree within
+/// `tol` (centre and radius) are one node, the first of them (a disk
+/// that was constructed, not an average that would touch nothing).
+fn merge_coinciding_branches(axis: &mut MedialAxis2d, tol: f64) {
+    let n = axis.nodes.len();
+    let mut parent: Vec<usize> = (0..n).collect();
+    let nodes = &axis.nodes;
+    let close = |a: usize, b: usize| {
+        let (p, q) = (&nodes[a], &nodes[b]);
+        p.kind == NodeKind::Branch
+            && q.kind == NodeKind::Branch
+            && p.point.dist(q.point) <= tol
+            && (p.radius - q.radius).abs() <= tol
+    };
+    let mut merged = false;
+    axis.edges.retain(|e| {
+        if !close(e.from, e.to) {
+            return true;
+        }
+        let (a, b) = (root(&mut parent, e.from), root(&mut parent, e.to));
+        parent[a.max(b)] = a.min(b);
+        merged = true;
+        false
+    });
+    if !merged {
+        return;
+    }
+    let mut new_id = vec![usize::MAX; n];
+    let mut kept = Vec::new();
+    for (v, id) in new_id.iter_mut().enumerate() {
+        if root(&mut parent, v) == v {
+            *id = kept.len();
+            kept.push(axis.nodes[v]);
+        }
+    }
+    for e in &mut axis.edges {
+        e.from = new_id[root(&mut parent, e.from)];
+        e.to = new_id[root(&mut parent, e.to)];
+    }
+    axis.nodes = kept;
+}
+
 /// The edge walked the other way.
 fn reversed(e: AxisEdge) -> AxisEdge {
     AxisEdge {
@@ -358,8 +455,9 @@ fn reversed(e: AxisEdge) -> AxisEdge {
 /// Branch points that are dividing disks come from `maxdisk*`'s slide,
 /// accurate to about 1e-8 of the diagonal; the disk tangent to three of
 /// the node's primitives (Apollonius) is accurate to rounding. Replaced
-/// when the two agree to within 1e-6 of the disk's radius (otherwise the
-/// triple is ill-conditioned and the slide's disk stays).
+/// when the two agree to within 1e-6 of the disk's radius and the new disk
+/// fits every primitive of the node (otherwise the triples are
+/// ill-conditioned and the slide's disk stays).
 fn polish_branches(shape: &Shape2d, axis: &mut MedialAxis2d) {
     use crate::kernel::apollonius::tangent_disks;
     let mut prims: Vec<Vec<Primitive>> = vec![Vec::new(); axis.nodes.len()];
@@ -376,14 +474,31 @@ fn polish_branches(shape: &Shape2d, axis: &mut MedialAxis2d) {
         if node.kind != NodeKind::Branch || ps.len() < 3 {
             continue;
         }
-        let sites = [ps[0].site(shape), ps[1].site(shape), ps[2].site(shape)];
-        let best =
-            tangent_disks(sites).into_iter().min_by(|a, b| a.0.dist(node.point).total_cmp(&b.0.dist(node.point)));
-        if let Some((c, r)) = best {
-            // All of the node's primitives must fit the new disk (a node of
-            // four or more nearly cocircular primitives keeps its own).
-            let fits = ps.iter().all(|p| p.site(shape).defect(c, r).abs() <= shape.tolerance());
-            if fits && c.dist(node.point) <= 1e-6 * node.radius && (r - node.radius).abs() <= 1e-6 * node.radius {
+        // Of the disks tangent to three of the node's primitives (every
+        // triple of the first eight), the one nearest to fitting them all.
+        let sites: Vec<_> = ps.iter().take(8).map(|p| p.site(shape)).collect();
+        let misfit = |c: Point, r: f64| ps.iter().map(|p| p.site(shape).defect(c, r).abs()).fold(0.0, f64::max);
+        let near = |c: Point, r: f64| {
+            c.dist(node.point) <= 1e-6 * node.radius && (r - node.radius).abs() <= 1e-6 * node.radius
+        };
+        let mut best: Option<(f64, Point, f64)> = None;
+        for i in 0..sites.len() {
+            for j in i + 1..sites.len() {
+                for k in j + 1..sites.len() {
+                    for (c, r) in tangent_disks([sites[i], sites[j], sites[k]]) {
+                        let m = misfit(c, r);
+                        if near(c, r) && best.is_none_or(|b| m < b.0) {
+                            best = Some((m, c, r));
+                        }
+                    }
+                }
+            }
+        }
+        // All of the node's primitives must fit the new disk (a node of
+        // four or more primitives cocircular only within the tolerance
+        // keeps its own).
+        if let Some((m, c, r)) = best {
+            if m <= shape.tolerance() {
                 node.point = c;
                 node.radius = r;
             }

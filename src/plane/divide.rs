@@ -249,9 +249,18 @@ pub fn decompose_with(shape: &Shape2d, seed: u64, leaf_parts: usize) -> Decompos
 /// [`decompose_with`] on the maximal disks of an existing `finder` (its
 /// index is built once for every decomposition of the same shape).
 pub fn decompose_in(finder: &DiskFinder, seed: u64, leaf_parts: usize) -> Decomposition {
-    let shape = finder.shape();
     let mut out = Decomposition::default();
-    let mut todo = vec![Subshape::whole_loop(shape, 0)];
+    divide_into(finder, &mut out, vec![Subshape::whole_loop(finder.shape(), 0)], seed, leaf_parts);
+    out
+}
+
+/// Divides each of `roots` (subshapes bounded by `out`'s cuts, or the
+/// whole loop) until every piece is a leaf of up to `leaf_parts` original
+/// parts or stuck, appending the new cuts, leaves and stuck subshapes to
+/// `out`. A root that is already small enough is a leaf as it is.
+pub fn divide_into(finder: &DiskFinder, out: &mut Decomposition, roots: Vec<Subshape>, seed: u64, leaf_parts: usize) {
+    let shape = finder.shape();
+    let mut todo = roots;
     // Depth-first with an explicit stack: cut ids depend only on the order
     // of cuts, which is fixed by the seed.
     while let Some(s) = todo.pop() {
@@ -285,7 +294,12 @@ pub fn decompose_in(finder: &DiskFinder, seed: u64, leaf_parts: usize) -> Decomp
             None => out.stuck.push(s),
         }
     }
-    out
+}
+
+/// Size of a subshape as the leaf rule counts it: original parts plus
+/// reflex vertices between auxiliary arcs.
+pub fn leaf_size(shape: &Shape2d, s: &Subshape) -> usize {
+    original_parts(shape, s) + reflex_points(shape, s).len()
 }
 
 #[cfg(test)]

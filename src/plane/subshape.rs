@@ -15,7 +15,7 @@
 //! auxiliary arcs (the thesis's zero-length arcs).
 
 use crate::kernel::Point;
-use crate::shape::{Element, Shape2d, Vertex};
+use crate::shape::{Element, JointKind, Shape2d, Vertex};
 
 /// A position on the original boundary: element `element` of loop
 /// `loop_index` (as in [`Shape2d::loops`]) at arc-length fraction `t` ∈ [0, 1].
@@ -159,8 +159,8 @@ impl ChainParts {
 pub(crate) const HUGGED_TIP: f64 = 16.0;
 
 /// The dividing disk (an index into `cuts`) of a subshape cut off by that
-/// one disk alone whose boundary stays within `slack` (model units) of the
-/// disk's circle: the tip of a smooth lobe cut at nearly its osculating
+/// one disk alone whose boundary has smooth joints only and stays within
+/// `slack` (model units) of the disk's circle: the tip of a smooth lobe cut at nearly its osculating
 /// circle. `None` for any other subshape. Stops at the first part that
 /// strays, so it costs little on ordinary subshapes.
 pub fn hugged_disk(shape: &Shape2d, s: &Subshape, cuts: &[Cut], slack: f64) -> Option<usize> {
@@ -170,11 +170,14 @@ pub fn hugged_disk(shape: &Shape2d, s: &Subshape, cuts: &[Cut], slack: f64) -> O
     });
     let (Some(disk), None) = (disks.next(), disks.next()) else { return None };
     let c = cuts[disk];
+    // Corners are features however close to the circle: the axis must
+    // reach a convex corner and bend around a reflex one.
     let hugs = s.chains().all(|(from, to)| {
         let lp = &shape.loops()[from.loop_index];
-        ChainParts::new(shape, from, to)
-            .iter()
-            .all(|(e, lo, hi)| lp.element(e).circle_deviation(lo, hi, c.center, c.radius) <= slack)
+        ChainParts::new(shape, from, to).iter().enumerate().all(|(k, (e, lo, hi))| {
+            (k == 0 || shape.joint(from.loop_index, e) == JointKind::Smooth)
+                && lp.element(e).circle_deviation(lo, hi, c.center, c.radius) <= slack
+        })
     });
     hugs.then_some(disk)
 }
