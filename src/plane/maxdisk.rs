@@ -13,7 +13,7 @@
 
 use crate::kernel::growing_disk::GrowingDisk;
 use crate::kernel::Point;
-use crate::shape::{Element, ElementIndex, ElementRef, JointKind, Shape2d};
+use crate::shape::{ChainTree, Element, ElementIndex, ElementRef, JointKind, Shape2d};
 
 /// Where a maximal disk touches the boundary.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -51,12 +51,24 @@ pub struct MaxDisk {
 pub struct DiskFinder<'s> {
     shape: &'s Shape2d,
     index: ElementIndex,
+    /// Runs of consecutive elements, for nearest-element queries (whose
+    /// points are mostly centres of maximal disks, where boxes prune badly
+    /// on smooth boundaries); `None` where the boundary zigzags and the
+    /// element boxes do better.
+    chains: Option<ChainTree>,
 }
+
+/// [`ChainTree::zigzag`] below which nearest-element queries use the chain
+/// tree. Measured (`examples/profile_one`): smooth flowers 0.002 (3× faster
+/// axes at 10^5 arcs with the chain tree), random star polygons 1.0 and
+/// slanted combs 1.3 (30–50 % slower with it).
+const CHAIN_TREE_ZIGZAG: f64 = 0.25;
 
 impl<'s> DiskFinder<'s> {
     /// Indexes the elements of `shape`.
     pub fn new(shape: &'s Shape2d) -> DiskFinder<'s> {
-        DiskFinder { shape, index: ElementIndex::new(shape.loops()) }
+        let chains = Some(ChainTree::new(shape.loops())).filter(|t| t.zigzag() < CHAIN_TREE_ZIGZAG);
+        DiskFinder { shape, index: ElementIndex::new(shape.loops()), chains }
     }
 
     /// Contacts closer than this to the disk's circle count as footpoints:
@@ -72,6 +84,9 @@ impl<'s> DiskFinder<'s> {
 
     /// The element nearest to `p` and its distance.
     pub fn nearest(&self, p: Point) -> Option<(ElementRef, f64)> {
+        if let Some(chains) = &self.chains {
+            return chains.nearest(self.shape.loops(), p);
+        }
         let found = self
             .index
             .tree

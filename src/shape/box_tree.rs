@@ -183,9 +183,9 @@ impl BoxTree {
     /// Branch and bound: the item with the smallest key, where `bound(box)`
     /// is a lower bound on the keys of all items inside the node box `box`
     /// (`None`: none of them can have a key) and `key(item, item_box)` is
-    /// the item's key (`None`: no key); item boxes are not bounded
-    /// separately, the key can look at the box itself when that is cheaper
-    /// than computing the key. Nodes are expanded best-first (smallest bound first, from a
+    /// the item's key (`None`: no key); an item's own box is bounded first
+    /// and the key computed only when that bound is below the best so far.
+    /// Nodes are expanded best-first (smallest bound first, from a
     /// heap) and the search stops once the smallest pending bound is not
     /// below the best key found, so the answer is exact when the bounds are,
     /// and only nodes whose bound is below the answer are expanded. Ties
@@ -210,6 +210,11 @@ impl BoxTree {
             let node = self.nodes[id as usize];
             if node.leaf {
                 for k in node.start as usize..node.end as usize {
+                    // An item lies in its own box: the bound holds for it
+                    // too, and is much cheaper than most keys.
+                    if bound(&self.boxes[k]).is_none_or(|b| beaten(&b, &best)) {
+                        continue;
+                    }
                     let i = self.ids[k] as usize;
                     if let Some(v) = key(i, &self.boxes[k]) {
                         if best.as_ref().is_none_or(|(_, k)| v < *k) {
