@@ -1,6 +1,7 @@
 //! Validates one sample shape once, and optionally computes its medial
 //! axis (for profilers):
-//! `cargo run --release --example profile_one -- star|flower|comb N [axis [LEAF_PARTS]]`.
+//! `cargo run --release --example profile_one -- star|flower|comb N [axis [LEAF_PARTS]]`
+//! (`MEDAX_SEED` picks the random star).
 use medax::plane::{medial_axis, AxisOptions};
 use medax::shape::{samples, Shape2d, ShapeOptions};
 
@@ -10,7 +11,7 @@ fn main() {
     let loops = match args.get(1).map(String::as_str) {
         Some("flower") => samples::flower_arcs(n),
         Some("comb") => samples::slanted_comb(n / 4, (n / 8) as f64),
-        _ => samples::star_polygon(n, 1),
+        _ => samples::star_polygon(n, std::env::var("MEDAX_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(1)),
     };
     let t = std::time::Instant::now();
     let s = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).expect("valid sample");
