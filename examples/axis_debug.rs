@@ -26,7 +26,9 @@ fn main() {
     for (i, s) in d.leaves.iter().chain(d.stuck.iter()).enumerate() {
         if let Err(e) = base_case::solve(&shape, s, &d.cuts, shape.tolerance(), &finder) {
             println!("leaf {i} ({} pieces): {e:?}", s.pieces.len());
-            if let (Some(Piece::Chain { from, to }), Some(Piece::Aux { disk })) = (s.pieces.first(), s.pieces.get(1)) {
+            if let (true, Some(Piece::Chain { from, to }), Some(Piece::Aux { disk })) =
+                (s.pieces.len() == 2, s.pieces.first(), s.pieces.get(1))
+            {
                 dump_chain(&shape, from.element, to.element, d.cuts[*disk].center, d.cuts[*disk].radius);
             }
             for p in &s.pieces {

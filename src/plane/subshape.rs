@@ -159,7 +159,7 @@ impl ChainParts {
 pub(crate) const HUGGED_TIP: f64 = 16.0;
 
 /// The dividing disk (an index into `cuts`) of a subshape cut off by that
-/// one disk alone whose boundary has smooth joints only and stays within
+/// one disk alone whose boundary has no convex corner and stays within
 /// `slack` (model units) of the disk's circle: the tip of a smooth lobe cut at nearly its osculating
 /// circle. `None` for any other subshape. Stops at the first part that
 /// strays, so it costs little on ordinary subshapes.
@@ -170,12 +170,14 @@ pub fn hugged_disk(shape: &Shape2d, s: &Subshape, cuts: &[Cut], slack: f64) -> O
     });
     let (Some(disk), None) = (disks.next(), disks.next()) else { return None };
     let c = cuts[disk];
-    // Corners are features however close to the circle: the axis must
-    // reach a convex corner and bend around a reflex one.
+    // A convex corner is a feature however close to the circle: the axis
+    // reaches it. A reflex vertex that close is touched by the disk within
+    // the tolerance (with a fan of rounding width, or the disk would have
+    // cut there).
     let hugs = s.chains().all(|(from, to)| {
         let lp = &shape.loops()[from.loop_index];
         ChainParts::new(shape, from, to).iter().enumerate().all(|(k, (e, lo, hi))| {
-            (k == 0 || shape.joint(from.loop_index, e) == JointKind::Smooth)
+            (k == 0 || shape.joint(from.loop_index, e) != JointKind::Convex)
                 && lp.element(e).circle_deviation(lo, hi, c.center, c.radius) <= slack
         })
     });
