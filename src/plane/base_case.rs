@@ -192,6 +192,37 @@ fn same_position(shape: &Shape2d, a: BoundaryPos, b: BoundaryPos) -> bool {
     a.loop_index == b.loop_index && (a == b || (a.t == 1.0 && b.t == 0.0 && b.element == (a.element + 1) % n))
 }
 
+/// A chain that ends this many tolerances (in length) past a vertex ends
+/// at the vertex.
+const SLIVER_END: f64 = 4.0;
+
+/// `s` with every chain end that lies within `len` (model units, along the
+/// boundary) past a vertex moved back to the vertex. A cut a hair past a
+/// reflex vertex leaves such a sliver of the next element; its disks are
+/// the cut's own within the tolerance, and as separate events they send
+/// the walk round in circles.
+fn drop_sliver_ends(shape: &Shape2d, s: &Subshape, len: f64) -> Subshape {
+    let pieces = s
+        .pieces
+        .iter()
+        .map(|p| match *p {
+            Piece::Chain { mut from, mut to } if from.element != to.element || from.loop_index != to.loop_index => {
+                let lp = &shape.loops()[to.loop_index];
+                if to.t > 0.0 && to.t * lp.element(to.element).length() <= len {
+                    to.t = 0.0;
+                }
+                let lp = &shape.loops()[from.loop_index];
+                if from.t < 1.0 && (1.0 - from.t) * lp.element(from.element).length() <= len {
+                    from.t = 1.0;
+                }
+                Piece::Chain { from, to }
+            }
+            other => other,
+        })
+        .collect();
+    Subshape { pieces }
+}
+
 /// Consecutive chains that meet (a cut exactly at a vertex leaves two) as
 /// one chain, so that the joint between them is seen.
 fn merge_touching_chains(shape: &Shape2d, pieces: Vec<Piece>) -> Vec<Piece> {
@@ -360,6 +391,7 @@ impl Builder<'_> {
 
     fn collect_sites(&mut self, s: &Subshape, cuts: &[Cut]) {
         let shape = self.shape;
+        let s = &drop_sliver_ends(shape, s, SLIVER_END * self.tol);
         // A chain with no parts next to another chain is the other chain's
         // end point (a cut at an element's very end leaves one): drop it.
         let is_point =

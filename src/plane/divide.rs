@@ -95,25 +95,10 @@ fn pick_point(shape: &Shape2d, s: &Subshape, rng: &mut Mix) -> Option<(BoundaryP
     Some((BoundaryPos { loop_index: l, element, t }, (lo, hi)))
 }
 
-/// Footpoints this many tolerances from an end of their element are at
-/// that end: the base cases merge disks this close into one event.
-const SNAP: f64 = 4.0;
-
-/// The boundary position of a footpoint; within [`SNAP`] tolerances of an
-/// end of its element, that end (a cut a hair past a reflex vertex would
-/// leave a sliver of the next element whose disks the base case cannot
-/// tell from the cut's own).
+/// The boundary position of a footpoint.
 fn position(shape: &Shape2d, f: &Footpoint) -> BoundaryPos {
     let e = shape.loops()[f.element.loop_index].element(f.element.element);
-    let tol = SNAP * shape.tolerance();
-    let t = if f.point.dist(e.start()) <= tol {
-        0.0
-    } else if f.point.dist(e.end()) <= tol {
-        1.0
-    } else {
-        e.param_of(f.point)
-    };
-    BoundaryPos { loop_index: f.element.loop_index, element: f.element.element, t }
+    BoundaryPos { loop_index: f.element.loop_index, element: f.element.element, t: e.param_of(f.point) }
 }
 
 /// The subshapes of `s` cut at `feet` by a disk that will get id `disk`,
