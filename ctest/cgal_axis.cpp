@@ -68,7 +68,8 @@
 //
 // Usage: cgal_axis [seed] [polygons] [max-vertices]
 //        (also MEDAX_CGAL_SEED, MEDAX_CGAL_AXIS_CASES, MEDAX_CGAL_AXIS_MAX_N;
-//         defaults 20240611, 50, 1000)
+//         defaults 20240611, 50, 1000). MEDAX_CGAL_AXIS_DUMP=i writes polygon
+//         i as medax shape JSON to cgal_axis_star_i.json.
 
 #include "sdg_support.hpp"
 
@@ -78,6 +79,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -374,6 +376,14 @@ int main(int argc, char** argv) {
         const double R = std::exp(std::uniform_real_distribution<double>(std::log(0.5), std::log(500.0))(rng));
         const bool cw = i % 2 == 1;
         const Polygon p = mt::star(rng, n, R, cw);
+        if (const char* dump = std::getenv("MEDAX_CGAL_AXIS_DUMP"); dump && std::to_string(i) == dump) {
+            // The polygon as medax shape JSON, to look at a mismatch with the CLI.
+            std::ofstream out("cgal_axis_star_" + std::to_string(i) + ".json");
+            out.precision(17);
+            out << "{\"loops\": [[";
+            for (size_t k = 0; k < p.size(); ++k) out << (k ? ", [" : "[") << p[k].first << ", " << p[k].second << "]";
+            out << "]]}\n";
+        }
         check_polygon(p, "star #" + std::to_string(i) + " n=" + std::to_string(n) + (cw ? " cw" : " ccw") +
                              " (seed " + std::to_string(seed) + ")",
                       tally);

@@ -28,6 +28,16 @@ pub enum Primitive {
 }
 
 impl Primitive {
+    /// Distance (model units) from `p` to the primitive itself: to the
+    /// vertex, or to the closest point of the element (not of its line or
+    /// circle).
+    pub fn distance(&self, shape: &Shape2d, p: Point) -> f64 {
+        match *self {
+            Primitive::Vertex { loop_index, vertex } => p.dist(shape.loops()[loop_index].vertices()[vertex].p),
+            Primitive::Element(r) => shape.loops()[r.loop_index].element(r.element).closest_point(p).0,
+        }
+    }
+
     /// What a disk touching this primitive sees: a sided line, a circle with
     /// its kind of tangency, or a point.
     pub fn site(&self, shape: &Shape2d) -> Site {

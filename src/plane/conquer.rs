@@ -135,8 +135,10 @@ const EDGE_CHECKS: [f64; 3] = [1.0 / 64.0, 0.5, 63.0 / 64.0];
 
 /// Every node's disk and the disks at interior points of every edge must touch
 /// the boundary and hold none of it (nearest-element queries on the shared
-/// index, independent of how the axis was built): a wrong pair of
-/// primitives on an edge shows up here and is reported, not returned.
+/// index, independent of how the axis was built), and touch both
+/// primitives of the edge (distance to the primitive itself): a wrong
+/// pair of primitives on an edge, or a node placed off its edges, shows up
+/// here and is reported, not returned.
 fn check_disks(finder: &DiskFinder, axis: &MedialAxis2d) -> Result<(), AxisError> {
     let shape = finder.shape();
     let slack = 64.0 * shape.tolerance();
@@ -144,9 +146,19 @@ fn check_disks(finder: &DiskFinder, axis: &MedialAxis2d) -> Result<(), AxisError
     if let Some(n) = axis.nodes.par_iter().find_any(|n| bad(n.point, n.radius)) {
         return Err(AxisError::Numerical(n.point, "a node's disk is not maximal"));
     }
+    // Every disk of an edge, its end nodes' included, touches both of the
+    // edge's primitives (a node placed where only two of a branch's three
+    // primitives are touched is a maximal disk, but not that branch).
+    let apart = |e: &AxisEdge, c: Point, r: f64| e.sites.iter().any(|p| (p.distance(shape, c) - r).abs() > slack);
+    let astray = axis.edges.par_iter().find_map_any(|e| {
+        [e.from, e.to].into_iter().map(|v| &axis.nodes[v]).find(|n| apart(e, n.point, n.radius)).map(|n| n.point)
+    });
+    if let Some(p) = astray {
+        return Err(AxisError::Numerical(p, "a node's disk misses a primitive of its edge"));
+    }
     let wrong = axis.edges.par_iter().find_map_any(|e| {
         EDGE_CHECKS.iter().find_map(|&s| match e.eval(shape, &axis.nodes, s) {
-            Some((c, r)) if !bad(c, r) => None,
+            Some((c, r)) if !bad(c, r) && !apart(e, c, r) => None,
             Some((c, _)) => Some(c),
             None => Some(axis.nodes[e.from].point),
         })
@@ -254,7 +266,7 @@ pub fn glue(finder: &DiskFinder, cuts: &[Cut], locals: &[LocalAxis]) -> Result<M
     let mut axis = MedialAxis2d { nodes, edges };
     merge_pass_through(&mut axis, &is_port);
     classify(&mut axis);
-    merge_coinciding_branches(&mut axis, SAME_DISK * tol);
+    merge_coinciding_branches(shape, &mut axis, SAME_DISK * tol);
     classify(&mut axis);
     polish_branches(shape, &mut axis);
     check_tree(&axis)?;
@@ -400,9 +412,10 @@ fn merge_pass_through(axis: &mut MedialAxis2d, is_port: &[bool]) {
 /// rounding (the centre of a shape with m-fold symmetry), the base cases
 /// find several branch points a few tolerances apart, joined by edges of
 /// that length: branch nodes joined by an edge whose disks agree within
-/// `tol` (centre and radius) are one node, the first of them (a disk
-/// that was constructed, not an average that would touch nothing).
-fn merge_coinciding_branches(axis: &mut MedialAxis2d, tol: f64) {
+/// `tol` (centre and radius) are one node, the one of them (a disk that
+/// was constructed, not an average that would touch nothing) that best
+/// touches all the primitives of their other edges.
+fn merge_coinciding_branches(shape: &Shape2d, axis: &mut MedialAxis2d, tol: f64) {
     let n = axis.nodes.len();
     let mut parent: Vec<usize> = (0..n).collect();
     let nodes = &axis.nodes;
@@ -413,31 +426,57 @@ fn merge_coinciding_branches(axis: &mut MedialAxis2d, tol: f64) {
             && p.point.dist(q.point) <= tol
             && (p.radius - q.radius).abs() <= tol
     };
-    let mut merged = false;
-    axis.edges.retain(|e| {
-        if !close(e.from, e.to) {
-            return true;
-        }
-        let (a, b) = (root(&mut parent, e.from), root(&mut parent, e.to));
-        parent[a.max(b)] = a.min(b);
-        merged = true;
-        false
-    });
-    if !merged {
+    let inner: Vec<bool> = axis.edges.iter().map(|e| close(e.from, e.to)).collect();
+    if !inner.contains(&true) {
         return;
     }
+    for (e, _) in axis.edges.iter().zip(&inner).filter(|(_, &i)| i) {
+        let (a, b) = (root(&mut parent, e.from), root(&mut parent, e.to));
+        parent[a.max(b)] = a.min(b);
+    }
+    // The group's node is the member whose disk fits every primitive of
+    // the group's outer edges best; a group that no member fits within
+    // half the final check's slack stays apart.
+    let mut prims: Vec<Vec<Primitive>> = vec![Vec::new(); n];
+    for (e, _) in axis.edges.iter().zip(&inner).filter(|(_, &i)| !i) {
+        for v in [e.from, e.to] {
+            let g = root(&mut parent, v);
+            prims[g].extend(e.sites);
+        }
+    }
+    let misfit = |v: usize, ps: &[Primitive]| {
+        let node = &axis.nodes[v];
+        ps.iter().map(|p| (p.distance(shape, node.point) - node.radius).abs()).fold(0.0, f64::max)
+    };
+    let mut best: Vec<Option<(f64, usize)>> = vec![None; n];
+    for v in 0..n {
+        let g = root(&mut parent, v);
+        let m = misfit(v, &prims[g]);
+        if best[g].is_none_or(|(bm, _)| m < bm) {
+            best[g] = Some((m, v));
+        }
+    }
+    let fits = |g: usize| best[g].is_some_and(|(m, _)| m <= 0.5 * tol);
     let mut new_id = vec![usize::MAX; n];
     let mut kept = Vec::new();
     for (v, id) in new_id.iter_mut().enumerate() {
-        if root(&mut parent, v) == v {
+        let g = root(&mut parent, v);
+        let alone = !fits(g);
+        if alone || g == v {
             *id = kept.len();
-            kept.push(axis.nodes[v]);
+            kept.push(axis.nodes[if alone { v } else { best[g].map_or(v, |b| b.1) }]);
         }
     }
-    for e in &mut axis.edges {
-        e.from = new_id[root(&mut parent, e.from)];
-        e.to = new_id[root(&mut parent, e.to)];
+    let mut edges = Vec::with_capacity(axis.edges.len());
+    for (e, &i) in axis.edges.iter().zip(&inner) {
+        let (ga, gb) = (root(&mut parent, e.from), root(&mut parent, e.to));
+        if i && fits(ga) {
+            continue;
+        }
+        let id = |v: usize, g: usize| if fits(g) { new_id[g] } else { new_id[v] };
+        edges.push(AxisEdge { from: id(e.from, ga), to: id(e.to, gb), ..*e });
     }
+    axis.edges = edges;
     axis.nodes = kept;
 }
 
