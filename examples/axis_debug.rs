@@ -2,7 +2,8 @@
 //! `medial_axis` does and solves every leaf on its own, printing each
 //! leaf that fails with its pieces and dividing disks (and, for a chain
 //! cut off by one disk, how far each element strays from that disk).
-//! `cargo run --release --example axis_debug -- star|flower N [SEED]`.
+//! `cargo run --release --example axis_debug -- star|flower N [SEED]` or
+//! `-- SHAPE.json 0 [SEED]`; `MEDAX_NEAR=x,y` lists the dividing disks near a point.
 use medax::plane::base_case;
 use medax::plane::divide::decompose_in;
 use medax::plane::maxdisk::DiskFinder;
@@ -13,18 +14,55 @@ use medax::shape::{samples, Shape2d, ShapeOptions};
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let n: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(1000);
-    let loops = match args.get(1).map(String::as_str) {
-        Some("flower") => samples::flower_arcs(n),
-        _ => samples::star_polygon(n, 1),
+    let shape = match args.get(1).map(String::as_str) {
+        Some(path) if path.ends_with(".json") => {
+            let text = std::fs::read_to_string(path).expect("readable shape file");
+            Shape2d::from_json_str(&text, &ShapeOptions::default()).expect("valid shape file")
+        }
+        kind => {
+            let loops = if kind == Some("flower") { samples::flower_arcs(n) } else { samples::star_polygon(n, 1) };
+            Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).expect("valid sample")
+        }
     };
-    let shape = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).expect("valid sample");
     let finder = DiskFinder::new(&shape);
     let opts = AxisOptions::default();
     let seed: u64 = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(opts.seed);
     let d = decompose_in(&finder, seed, opts.leaf_parts);
     println!("{} cuts, {} leaves, {} stuck", d.cuts.len(), d.leaves.len(), d.stuck.len());
+    if std::env::var("MEDAX_CORNERS").is_ok() {
+        glued_corners(&shape, &finder, seed);
+    }
+    // MEDAX_NEAR=x,y: the dividing disks near a point of interest.
+    if let Some((x, y)) = std::env::var("MEDAX_NEAR").ok().and_then(|v| {
+        let (a, b) = v.split_once(',')?;
+        Some((a.parse::<f64>().ok()?, b.parse::<f64>().ok()?))
+    }) {
+        let p = medax::kernel::Point::new(x, y);
+        for (i, c) in d.cuts.iter().enumerate().filter(|(_, c)| c.center.dist(p) < 1e-2) {
+            println!("cut {i}: {c:?}, {:e} from the point", c.center.dist(p));
+        }
+    }
     for (i, s) in d.leaves.iter().chain(d.stuck.iter()).enumerate() {
-        if let Err(e) = base_case::solve(&shape, s, &d.cuts, shape.tolerance(), &finder) {
+        let solved = base_case::solve(&shape, s, &d.cuts, shape.tolerance(), &finder);
+        if let Ok(local) = &solved {
+            // Convex corners inside the leaf's chains must be corner nodes.
+            let mut convex = 0;
+            for (from, to) in s.chains() {
+                let parts: Vec<_> = medax::plane::subshape::ChainParts::new(&shape, from, to).iter().collect();
+                convex += parts
+                    .windows(2)
+                    .filter(|w| shape.joint(from.loop_index, w[1].0) == medax::shape::JointKind::Convex)
+                    .count();
+            }
+            let corners = local.nodes.iter().filter(|n| n.kind == base_case::EventKind::Corner).count();
+            if corners != convex {
+                println!("leaf {i} ({} pieces): {corners} corner nodes for {convex} convex vertices", s.pieces.len());
+                for p in &s.pieces {
+                    println!("   {p:?}");
+                }
+            }
+        }
+        if let Err(e) = solved {
             println!("leaf {i} ({} pieces): {e:?}", s.pieces.len());
             if let (true, Some(Piece::Chain { from, to }), Some(Piece::Aux { disk })) =
                 (s.pieces.len() == 2, s.pieces.first(), s.pieces.get(1))
@@ -44,6 +82,50 @@ fn main() {
 }
 
 /// Prints the elements of a chain with their circles, against a disk.
+/// Solves and glues like `medial_axis` (one decomposition) and prints the
+/// convex vertices that got no corner node, with the nodes near them.
+fn glued_corners(shape: &Shape2d, finder: &DiskFinder, seed: u64) {
+    let mut d = decompose_in(finder, seed, AxisOptions::default().leaf_parts);
+    let locals = match medax::plane::conquer::solve_leaves(finder, &mut d, seed) {
+        Ok(l) => l,
+        Err(e) => return println!("solve_leaves: {e}"),
+    };
+    for (k, local) in locals.iter().enumerate() {
+        for n in &local.nodes {
+            if n.radius <= shape.tolerance() && n.kind != base_case::EventKind::Corner {
+                println!("local {k}: tiny non-corner node {n:?}");
+            }
+        }
+    }
+    let axis = match medax::plane::conquer::glue(finder, &d.cuts, &locals) {
+        Ok(a) => a,
+        Err(e) => return println!("glue: {e}"),
+    };
+    let lp = &shape.loops()[0];
+    for v in 0..lp.len() {
+        let p = lp.vertices()[v].p;
+        if shape.joint(0, v) != medax::shape::JointKind::Convex {
+            continue;
+        }
+        let near: Vec<_> = axis.nodes.iter().filter(|n| n.point.dist(p) < 1e-6).collect();
+        if !near.iter().any(|n| n.kind == medax::plane::NodeKind::Corner) {
+            println!("vertex {v} at {p:?}: nodes near {near:?}");
+            for (k, sub) in d.leaves.iter().chain(d.stuck.iter()).enumerate() {
+                let touches = sub.chains().any(|(a, b)| [a, b].iter().any(|q| q.point(shape).dist(p) < 1e-6));
+                if touches {
+                    println!("   leaf {k}: {:?}", sub.pieces);
+                    println!("      nodes {:?}", locals[k].nodes);
+                }
+            }
+            for (k, local) in locals.iter().enumerate() {
+                for n in local.nodes.iter().filter(|n| n.center.dist(p) < 1e-6) {
+                    println!("   local {k}: {n:?}");
+                }
+            }
+        }
+    }
+}
+
 fn dump_chain(shape: &Shape2d, from: usize, to: usize, c: medax::kernel::Point, r: f64) {
     let lp = &shape.loops()[0];
     for i in from..=to {

@@ -197,7 +197,8 @@ fn same_position(shape: &Shape2d, a: BoundaryPos, b: BoundaryPos) -> bool {
 const SLIVER_END: f64 = 4.0;
 
 /// `s` with every chain end that lies within `len` (model units, along the
-/// boundary) past a vertex moved back to the vertex. A cut a hair past a
+/// boundary) past a vertex that is not a convex corner moved back to the
+/// vertex. A cut a hair past a
 /// reflex vertex leaves such a sliver of the next element; its disks are
 /// the cut's own within the tolerance, and as separate events they send
 /// the walk round in circles.
@@ -207,12 +208,20 @@ fn drop_sliver_ends(shape: &Shape2d, s: &Subshape, len: f64) -> Subshape {
         .iter()
         .map(|p| match *p {
             Piece::Chain { mut from, mut to } if from.element != to.element || from.loop_index != to.loop_index => {
+                // Never past a convex corner: the axis must reach it.
                 let lp = &shape.loops()[to.loop_index];
-                if to.t > 0.0 && to.t * lp.element(to.element).length() <= len {
+                if to.t > 0.0
+                    && to.t * lp.element(to.element).length() <= len
+                    && shape.joint(to.loop_index, to.element) != JointKind::Convex
+                {
                     to.t = 0.0;
                 }
                 let lp = &shape.loops()[from.loop_index];
-                if from.t < 1.0 && (1.0 - from.t) * lp.element(from.element).length() <= len {
+                let next = (from.element + 1) % lp.len();
+                if from.t < 1.0
+                    && (1.0 - from.t) * lp.element(from.element).length() <= len
+                    && shape.joint(from.loop_index, next) != JointKind::Convex
+                {
                     from.t = 1.0;
                 }
                 Piece::Chain { from, to }
@@ -471,9 +480,15 @@ impl Builder<'_> {
                     }
                 }
                 // A sliver at a chain's end (a cut within the tolerance of
-                // a vertex) is that vertex.
+                // a vertex) is that vertex, unless the vertex is a convex
+                // corner, whose corner event needs the sliver's site.
                 let sliver = (hi - lo) * lp.element(e).length() <= self.tol;
-                if !(sliver && (i == 0 || i + 1 == parts.len())) {
+                let inner = if i == 0 {
+                    parts.len() > 1 && shape.joint(l, parts.get(1).0) == JointKind::Convex
+                } else {
+                    shape.joint(l, e) == JointKind::Convex
+                };
+                if !(sliver && !inner && (i == 0 || i + 1 == parts.len())) {
                     self.element_site(l, e, lo, hi);
                 }
             }

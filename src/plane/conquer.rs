@@ -13,7 +13,7 @@ use super::divide::{decompose_in, divide_into, leaf_size, Decomposition};
 use super::subshape::{Cut, Subshape};
 use super::DiskFinder;
 use crate::kernel::Point;
-use crate::shape::Shape2d;
+use crate::shape::{JointKind, Shape2d};
 use rayon::prelude::*;
 
 /// Dividing disks whose centres and radii agree within this many
@@ -114,7 +114,7 @@ pub fn medial_axis(shape: &Shape2d, opts: &AxisOptions) -> Result<MedialAxis2d, 
         let solved = solve_leaves(&finder, &mut d, seed);
         match solved
             .and_then(|locals| glue(&finder, &d.cuts, &locals))
-            .and_then(|axis| check_disks(&finder, &axis).map(|_| axis))
+            .and_then(|axis| check_corners(shape, &axis).and_then(|_| check_disks(&finder, &axis)).map(|_| axis))
         {
             Ok(axis) => return Ok(axis),
             Err(e) => {
@@ -265,9 +265,9 @@ pub fn glue(finder: &DiskFinder, cuts: &[Cut], locals: &[LocalAxis]) -> Result<M
     });
     let mut axis = MedialAxis2d { nodes, edges };
     merge_pass_through(&mut axis, &is_port);
-    classify(&mut axis);
+    classify(&mut axis, tol);
     merge_coinciding_branches(shape, &mut axis, SAME_DISK * tol);
-    classify(&mut axis);
+    classify(&mut axis, tol);
     polish_branches(shape, &mut axis);
     check_tree(&axis)?;
     Ok(axis)
@@ -300,6 +300,33 @@ fn check_tree(axis: &MedialAxis2d) -> Result<(), AxisError> {
         return Err(AxisError::Numerical(axis.nodes[lonely].point, "the axis fell apart into pieces"));
     }
     Ok(())
+}
+
+/// Every subtree of the axis ends in leaves, and on a polygon every leaf
+/// is a convex corner: one corner node per convex vertex, each at its
+/// vertex, is what shows that no piece of the axis went missing between
+/// subshapes (the tree check cannot: the rest of a tree is a tree).
+fn check_corners(shape: &Shape2d, axis: &MedialAxis2d) -> Result<(), AxisError> {
+    let convex = shape.joint_counts()[JointKind::Convex as usize];
+    let corners = axis.nodes.iter().filter(|n| n.kind == NodeKind::Corner).count();
+    if corners == convex {
+        return Ok(());
+    }
+    // Report a convex vertex without its corner node (corners sorted by x).
+    let tol = shape.tolerance();
+    let mut at: Vec<Point> = axis.nodes.iter().filter(|n| n.kind == NodeKind::Corner).map(|n| n.point).collect();
+    at.sort_by(|a, b| a.x.total_cmp(&b.x));
+    let has_corner = |p: Point| {
+        let first = at.partition_point(|q| q.x < p.x - tol);
+        at[first..].iter().take_while(|q| q.x <= p.x + tol).any(|q| q.dist(p) <= tol)
+    };
+    let missing = shape.loops().iter().enumerate().find_map(|(l, lp)| {
+        (0..lp.len())
+            .map(|v| lp.vertices()[v].p)
+            .enumerate()
+            .find_map(|(v, p)| (shape.joint(l, v) == JointKind::Convex && !has_corner(p)).then_some(p))
+    });
+    Err(AxisError::Numerical(missing.unwrap_or_default(), "a convex corner has no axis"))
 }
 
 /// For each dividing disk, the first one that is the same disk (centre and
@@ -545,11 +572,13 @@ fn polish_branches(shape: &Shape2d, axis: &mut MedialAxis2d) {
     }
 }
 
-/// Node kinds from the final degrees.
-fn classify(axis: &mut MedialAxis2d) {
+/// Node kinds from the final degrees. An end whose disk is within the
+/// tolerance `tol` of radius 0 is a convex corner (a dividing disk that
+/// small, in a needle's tip, is that corner's node).
+fn classify(axis: &mut MedialAxis2d, tol: f64) {
     let deg = axis.degrees();
     for (v, node) in axis.nodes.iter_mut().enumerate() {
-        node.kind = if node.radius == 0.0 {
+        node.kind = if node.radius == 0.0 || (deg[v] <= 1 && node.radius <= tol) {
             NodeKind::Corner
         } else if deg[v] >= 3 {
             NodeKind::Branch
