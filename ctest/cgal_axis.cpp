@@ -61,6 +61,11 @@
 //       |dist(J, line e) - r_J| <= eps, ||J - v| - r_J| <= eps, its foot on
 //       e's line between tol + eps beyond v and eps into e, and
 //       |r_J - clearance(J)| <= eps (brute force).
+//   narrow fans: a reflex vertex whose fan of normals spans less than 4
+//       touching tolerances at the disk's radius has no fan in medax (its
+//       base cases drop it): both SDG joints at the fan's ends match the one
+//       medax JOINT through v within 4 tol + eps of them, radii within the
+//       same.
 //
 // mx_axis_compute currently fails with MX_ERR_NUMERICAL on a few random
 // stars: those are printed and skipped; the test fails when more than 10 %
@@ -174,7 +179,7 @@ std::vector<size_t> near(const std::vector<Disk>& pool, double x, double y, doub
 struct Tally {
     size_t polygons = 0, compared = 0, skipped = 0;
     size_t sdg_branches = 0, sdg_joints = 0, medax_branches = 0, medax_joints = 0, pass_through = 0;
-    size_t matched_branches = 0, conditioned_branches = 0, exact_joints = 0, shifted_joints = 0;
+    size_t matched_branches = 0, conditioned_branches = 0, exact_joints = 0, shifted_joints = 0, narrow_fan_joints = 0;
     // All / diagonal. Matched branches and exact joints: position and
     // radius; shifted joints: distance from the SDG vertex; all joints:
     // |radius - brute-force clearance|.
@@ -350,6 +355,26 @@ void check_polygon(const Polygon& poly, const std::string& name, Tally& tally) {
             tally.max_joint_clearance = std::max(tally.max_joint_clearance, clearance_error / diag);
             break;
         }
+        if (!found) {
+            // A reflex vertex whose fan of normals spans less than 4
+            // touching tolerances at the disk's radius is one medax joint
+            // for both of the fan's ends (the base cases drop such a fan).
+            const Pt a = poly[(s.v + n - 1) % n], c2 = poly[(s.v + 1) % n];
+            const double ux = v.first - a.first, uy = v.second - a.second;
+            const double wx = c2.first - v.first, wy = c2.second - v.second;
+            const double fan = std::fabs(std::atan2(ux * wy - uy * wx, ux * wx + uy * wy));
+            const double reach = 4.0 * touch + eps;
+            if (fan * s.r <= reach) {
+                for (size_t j : near(joints, s.x, s.y, reach)) {
+                    Disk& J = joints[j];
+                    const double through = std::hypot(J.x - v.first, J.y - v.second) - J.r;
+                    if (std::fabs(J.r - s.r) > reach || std::fabs(through) > eps) continue;
+                    J.used = found = true;
+                    ++tally.narrow_fan_joints;
+                    break;
+                }
+            }
+        }
         if (!found) b_joint.add(where(s) + " (vertex " + std::to_string(s.v) + ", edge " + std::to_string(s.e) + ")");
     }
     for (const Disk& J : joints)
@@ -394,7 +419,8 @@ int main(int argc, char** argv) {
               << " joint; medax nodes " << t.medax_branches << " branch + " << t.medax_joints << " joint ("
               << t.pass_through << " pass-through, not compared); matched " << t.matched_branches << " branch (" << t.conditioned_branches
               << " ill-conditioned) + "
-              << t.exact_joints + t.shifted_joints << " joint (" << t.shifted_joints << " shifted by the tolerance)\n"
+              << t.exact_joints + t.shifted_joints + t.narrow_fan_joints << " joint (" << t.shifted_joints
+              << " shifted by the tolerance, " << t.narrow_fan_joints << " ends of fans narrower than 4 tolerances)\n"
               << "cgal_axis: max error / diagonal: branch position " << t.max_pos << ", radius " << t.max_rad
               << ", ill-conditioned branch position " << t.max_conditioned
               << "; exact joint position " << t.max_joint_pos << ", radius " << t.max_joint_rad

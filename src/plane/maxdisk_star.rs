@@ -202,13 +202,14 @@ fn jump_to_third(
         let (cb, rb) = bisector_point(sa, sb, u)?;
         (cb.dist(c) <= 16.0 * tol && (rb - r).abs() <= 16.0 * tol).then_some(u)
     };
-    // Keeps the disk (c, r) in `best` if it comes first, before `bound`.
-    let offer = |best: &mut Option<(f64, Point, f64)>, c: Point, r: f64, bound: f64| -> bool {
+    // Keeps the disk (c, r) in `best` if it comes first, before `bound`
+    // (`best.0` is how far ahead it lies; infinite while there is none).
+    let offer = |best: &mut (f64, Point, f64), c: Point, r: f64, bound: f64| -> bool {
         let Some(u) = on_branch(c, r) else { return false };
         let d = ahead(u);
-        let better = d > min_ahead && d < bound && best.is_none_or(|(b, _, _)| d < b);
+        let better = d > min_ahead && d < bound && d < best.0;
         if better {
-            *best = Some((d, c, r));
+            *best = (d, c, r);
         }
         better
     };
@@ -219,7 +220,7 @@ fn jump_to_third(
     // fan) ends the slide where it starts: the defining pair changes there.
     let scale = if angular { 1.0 } else { r0 };
     let (c1, r1) = bisector_point(sa, sb, u0 + dir * 1e-6 * scale)?;
-    let mut best = None;
+    let mut best = (f64::INFINITY, Point::default(), 0.0);
     for (f, s, other) in [(fa, sa, sb), (fb, sb, sa)] {
         let turns = !matches!(s, Site::Line { .. });
         let signed = |d: f64| if turns { (d + PI).rem_euclid(TAU) - PI } else { d };
@@ -240,7 +241,10 @@ fn jump_to_third(
         }
     }
     for _ in 0..JUMPS {
-        let (bound, c, r) = best?;
+        let (bound, c, r) = best;
+        if !bound.is_finite() {
+            return None;
+        }
         let (hit, d) = finder.nearest(c)?;
         if d >= r - tol {
             // Empty; the contacts stay on their elements by construction,
@@ -254,8 +258,10 @@ fn jump_to_third(
         };
         let mut moved = false;
         for s3 in [interior, Site::Point(e.start()), Site::Point(e.end())] {
-            for (c3, r3) in tangent_disks([*sa, *sb, s3]) {
-                if matches!(s3, Site::Point(_)) || on(&e, s3.contact(c3, r3)) {
+            let point = matches!(s3, Site::Point(_));
+            let solutions = tangent_disks([*sa, *sb, s3]);
+            for &(c3, r3) in solutions.iter() {
+                if point || on(&e, s3.contact(c3, r3)) {
                     moved |= offer(&mut best, c3, r3, bound);
                 }
             }
@@ -270,25 +276,22 @@ fn jump_to_third(
 /// The footpoint parameters on `s` (see [`param_on`]) where a contact at
 /// `f` leaves its element: the element's ends, or for a reflex vertex the
 /// normals of its two elements, which bound the vertex's fan.
-fn contact_range(finder: &DiskFinder, f: &Footpoint, s: &Site) -> Vec<f64> {
+fn contact_range(finder: &DiskFinder, f: &Footpoint, s: &Site) -> [f64; 2] {
     let shape = finder.shape();
     let lp = &shape.loops()[f.element.loop_index];
     let e = lp.element(f.element.element);
     match *s {
-        Site::Line { a, n } => [e.start(), e.end()].iter().map(|&q| (q - a).dot(-n.perp())).collect(),
-        Site::Circle { o, .. } => [e.start(), e.end()]
-            .iter()
-            .map(|&q| {
-                let d = q - o;
-                d.y.atan2(d.x)
-            })
-            .collect(),
+        Site::Line { a, n } => [e.start(), e.end()].map(|q| (q - a).dot(-n.perp())),
+        Site::Circle { o, .. } => [e.start(), e.end()].map(|q| {
+            let d = q - o;
+            d.y.atan2(d.x)
+        }),
         Site::Point(q) => {
             let n = lp.len();
             // The vertex is the start or the end of the footpoint's element.
             let v = if q.dist(e.start()) <= q.dist(e.end()) { f.element.element } else { (f.element.element + 1) % n };
             let (before, after) = (lp.element((v + n - 1) % n), lp.element(v));
-            [before.end_tangent().perp(), after.start_tangent().perp()].iter().map(|d| d.y.atan2(d.x)).collect()
+            [before.end_tangent().perp(), after.start_tangent().perp()].map(|d| d.y.atan2(d.x))
         }
     }
 }
