@@ -73,7 +73,7 @@
 //
 // Usage: cgal_axis [seed] [polygons] [max-vertices]
 //        (also MEDAX_CGAL_SEED, MEDAX_CGAL_AXIS_CASES, MEDAX_CGAL_AXIS_MAX_N;
-//         defaults 20240611, 50, 1000). MEDAX_CGAL_AXIS_DUMP=i writes polygon
+//         defaults 20240611, 50, 10000). MEDAX_CGAL_AXIS_DUMP=i writes polygon
 //         i as medax shape JSON to cgal_axis_star_i.json.
 
 #include "sdg_support.hpp"
@@ -388,7 +388,7 @@ void check_polygon(const Polygon& poly, const std::string& name, Tally& tally) {
 int main(int argc, char** argv) {
     const uint64_t seed = mt::from_env_or_arg(argc, argv, 1, "MEDAX_CGAL_SEED", 20240611);
     const size_t cases = std::max<uint64_t>(2, mt::from_env_or_arg(argc, argv, 2, "MEDAX_CGAL_AXIS_CASES", 50));
-    const size_t max_n = std::max<uint64_t>(10, mt::from_env_or_arg(argc, argv, 3, "MEDAX_CGAL_AXIS_MAX_N", 1000));
+    const size_t max_n = std::max<uint64_t>(10, mt::from_env_or_arg(argc, argv, 3, "MEDAX_CGAL_AXIS_MAX_N", 10000));
     std::cout << "cgal_axis: CGAL " << CGAL_VERSION_STR << ", medax " << mx_version() << ", seed " << seed << ", "
               << cases << " star polygons of 10.." << max_n << " vertices\n";
 
