@@ -46,19 +46,37 @@ fn main() {
         let solved = base_case::solve(&shape, s, &d.cuts, shape.tolerance(), &finder);
         if let Ok(local) = &solved {
             // Convex corners inside the leaf's chains must be corner nodes.
-            let mut convex = 0;
-            for (from, to) in s.chains() {
-                let parts: Vec<_> = medax::plane::subshape::ChainParts::new(&shape, from, to).iter().collect();
-                convex += parts
-                    .windows(2)
-                    .filter(|w| shape.joint(from.loop_index, w[1].0) == medax::shape::JointKind::Convex)
-                    .count();
-            }
+            let convex = convex_inside(&shape, s);
             let corners = local.nodes.iter().filter(|n| n.kind == base_case::EventKind::Corner).count();
             if corners != convex {
                 println!("leaf {i} ({} pieces): {corners} corner nodes for {convex} convex vertices", s.pieces.len());
                 for p in &s.pieces {
                     println!("   {p:?}");
+                }
+            }
+        }
+        if let (Err(_), true) = (&solved, std::env::var("MEDAX_REFINE").is_ok()) {
+            // Divide the failed leaf again as `solve_leaves` does and check
+            // the corners of the new leaves.
+            let mut more = medax::plane::divide::Decomposition { cuts: d.cuts.clone(), ..Default::default() };
+            let size = medax::plane::divide::leaf_size(&shape, s);
+            medax::plane::divide::divide_into(
+                &finder,
+                &mut more,
+                vec![s.clone()],
+                seed ^ 1,
+                (size / 2).max(3).min(size.saturating_sub(1)),
+            );
+            for (k, t) in more.leaves.iter().chain(more.stuck.iter()).enumerate() {
+                let convex = convex_inside(&shape, t);
+                match base_case::solve(&shape, t, &more.cuts, shape.tolerance(), &finder) {
+                    Ok(local) => {
+                        let corners = local.nodes.iter().filter(|n| n.kind == base_case::EventKind::Corner).count();
+                        if corners != convex {
+                            println!("  refined {k}: {corners} corners for {convex} convex: {:?}", t.pieces);
+                        }
+                    }
+                    Err(e) => println!("  refined {k}: {e:?}"),
                 }
             }
         }
@@ -82,6 +100,19 @@ fn main() {
 }
 
 /// Prints the elements of a chain with their circles, against a disk.
+/// Convex vertices strictly inside the chains of a subshape.
+fn convex_inside(shape: &Shape2d, s: &medax::plane::subshape::Subshape) -> usize {
+    let mut convex = 0;
+    for (from, to) in s.chains() {
+        let parts: Vec<_> = medax::plane::subshape::ChainParts::new(shape, from, to).iter().collect();
+        convex += parts
+            .windows(2)
+            .filter(|w| shape.joint(from.loop_index, w[1].0) == medax::shape::JointKind::Convex)
+            .count();
+    }
+    convex
+}
+
 /// Solves and glues like `medial_axis` (one decomposition) and prints the
 /// convex vertices that got no corner node, with the nodes near them.
 fn glued_corners(shape: &Shape2d, finder: &DiskFinder, seed: u64) {

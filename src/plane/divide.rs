@@ -108,6 +108,24 @@ fn dividing(shape: &Shape2d, s: &Subshape, parts: usize, disk: usize, feet: &[Bo
     children.iter().all(|c| original_parts(shape, c) < parts).then_some(children)
 }
 
+/// True when a footpoint of a disk of radius `r` lies within the tolerance
+/// of a convex corner. Only a disk of radius 0 touches a convex corner; a
+/// larger one does so within the tolerance at a nearly flat corner, where
+/// its contacts on the two elements merge into one footpoint at the
+/// vertex, and a cut there would leave the corner's branch of the axis in
+/// neither subshape.
+fn foot_at_convex_corner(shape: &Shape2d, feet: &[BoundaryPos], r: f64) -> bool {
+    let tol = shape.tolerance();
+    r > tol
+        && feet.iter().any(|f| {
+            let lp = &shape.loops()[f.loop_index];
+            let p = f.point(shape);
+            [f.element, (f.element + 1) % lp.len()]
+                .into_iter()
+                .any(|v| shape.joint(f.loop_index, v) == JointKind::Convex && lp.vertices()[v].p.dist(p) <= tol)
+        })
+}
+
 /// Cuts `s` with the maximal disk `d` grown at `pos` (fraction range
 /// `lo..hi` of its part), or with what replaces it: the leaf arc's circle,
 /// or `maxdisk*` after a redundant cut. `None` when the disk does not divide.
@@ -145,6 +163,9 @@ fn cut_with(
     }
     let feet: Vec<BoundaryPos> =
         d.footpoints.iter().enumerate().map(|(i, f)| if i == 0 { pos } else { position(shape, f) }).collect();
+    if foot_at_convex_corner(shape, &feet, d.radius) {
+        return None;
+    }
     let children = s.split(shape, disk, &feet)?;
     let counts: Vec<usize> = children.iter().map(|c| original_parts(shape, c)).collect();
     if counts.iter().all(|&c| c < parts) {
@@ -167,6 +188,9 @@ fn cut_with(
         return None;
     }
     let feet: Vec<BoundaryPos> = touch.iter().map(|f| position(shape, f)).collect();
+    if foot_at_convex_corner(shape, &feet, r) {
+        return None;
+    }
     let children = dividing(shape, s, parts, disk, &feet)?;
     Some((Cut { center: c, radius: r }, children))
 }
