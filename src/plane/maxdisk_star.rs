@@ -170,6 +170,11 @@ const JUMPS: usize = 24;
 /// returned, usually after one to three constructions, whatever the
 /// distance travelled. `None` (then the caller marches) when a
 /// construction fails numerically.
+// Not inlined: inlined into `slide_to_third`, the optimised code reads
+// spare bytes of the caller's frame in a branch whose outcome does not
+// depend on them, and valgrind (CTest's memcheck runs) reports every such
+// read; a separate frame passes the sites by reference and reads none.
+#[inline(never)]
 fn jump_to_third(
     finder: &DiskFinder,
     [fa, fb]: [&Footpoint; 2],
@@ -221,13 +226,13 @@ fn jump_to_third(
     let scale = if angular { 1.0 } else { r0 };
     let (c1, r1) = bisector_point(sa, sb, u0 + dir * 1e-6 * scale)?;
     let mut best = (f64::INFINITY, Point::default(), 0.0);
-    for (f, s, other) in [(fa, sa, sb), (fb, sb, sa)] {
+    for &(f, s, other) in [(fa, sa, sb), (fb, sb, sa)].iter() {
         let turns = !matches!(s, Site::Line { .. });
         let signed = |d: f64| if turns { (d + PI).rem_euclid(TAU) - PI } else { d };
         let here = param_on(s, c0, s.contact(c0, r0));
         let forward = signed(param_on(s, c1, s.contact(c1, r1)) - here).signum();
         let mut open = false;
-        for u in contact_range(finder, f, s) {
+        for &u in contact_range(finder, f, s).iter() {
             if signed(u - here) * forward <= if turns { 1e-12 } else { tol } {
                 continue;
             }
@@ -257,9 +262,9 @@ fn jump_to_third(
             Element::Arc(a) => Site::Circle { o: a.center, r: a.radius, outside: !a.is_ccw() },
         };
         let mut moved = false;
-        for s3 in [interior, Site::Point(e.start()), Site::Point(e.end())] {
+        for s3 in [interior, Site::Point(e.start()), Site::Point(e.end())].iter() {
             let point = matches!(s3, Site::Point(_));
-            let solutions = tangent_disks([*sa, *sb, s3]);
+            let solutions = tangent_disks([*sa, *sb, *s3]);
             for &(c3, r3) in solutions.iter() {
                 if point || on(&e, s3.contact(c3, r3)) {
                     moved |= offer(&mut best, c3, r3, bound);
