@@ -288,7 +288,8 @@ fn mirror_images_have_mirrored_axes() {
         let back: Vec<(f64, f64, f64)> = branches(&m).into_iter().map(|(x, y, r)| (-x, y, r)).collect();
         // A many-fold centre is one node, the mean of branch points found
         // within 64 tolerances of each other; the mirror finds others.
-        let tol = if base.len() > 100 { 64e-9 * 4.0 } else { 1e-9 };
+        let diag = shape(vec![base.clone()]).bbox().diagonal();
+        let tol = if base.len() > 100 { 64.0 * 1e-9 * diag } else { 1e-9 };
         same_branches(&branches(&a), &back, tol, &format!("mirror of {} vertices", base.len()));
         assert_eq!(a.nodes.len(), m.nodes.len(), "mirror of {} vertices", base.len());
     }

@@ -70,6 +70,11 @@ pub fn circle_circle(c1: Point, r1: f64, c2: Point, r2: f64) -> Vec<Point> {
     vec![base + u.perp() * h, base - u.perp() * h]
 }
 
+/// The angle `x` (radians) shifted by whole turns to within π of `mid`.
+pub fn unwrap_near(x: f64, mid: f64) -> f64 {
+    mid + (x - mid + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU) - std::f64::consts::PI
+}
+
 /// Orthogonal projection parameter of `p` on the line `a + s·(b − a)`.
 pub fn project_param(a: Point, b: Point, p: Point) -> f64 {
     let d = b - a;

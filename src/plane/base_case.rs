@@ -32,10 +32,11 @@ use super::axis::Primitive;
 use super::maxdisk::DiskFinder;
 use super::subshape::{hugged_disk, BoundaryPos, ChainParts, Cut, Piece, Subshape, HUGGED_TIP};
 use crate::kernel::apollonius::{tangent_disks, Site};
+use crate::kernel::construct::unwrap_near;
 use crate::kernel::growing_disk::GrowingDisk;
 use crate::kernel::Point;
 use crate::shape::{Element, ElementRef, JointKind, Shape2d};
-use std::f64::consts::{PI, TAU};
+use std::f64::consts::TAU;
 
 /// Pockets holding less boundary than this many tolerances are slivers
 /// left by cuts within rounding of a vertex; the axis in them is shorter
@@ -172,11 +173,6 @@ fn angle(v: Point) -> f64 {
     v.y.atan2(v.x)
 }
 
-/// `x` shifted by whole turns to within π of `mid`.
-fn unwrap_near(x: f64, mid: f64) -> f64 {
-    mid + (x - mid + PI).rem_euclid(TAU) - PI
-}
-
 /// Global footpoint parameter of element fraction `t`.
 fn element_param(e: &Element, t: f64) -> f64 {
     match e {
@@ -207,7 +203,7 @@ fn drop_sliver_ends(shape: &Shape2d, s: &Subshape, len: f64) -> Subshape {
         .pieces
         .iter()
         .map(|p| match *p {
-            Piece::Chain { mut from, mut to } if from.element != to.element || from.loop_index != to.loop_index => {
+            Piece::Chain { mut from, mut to } if ChainParts::new(shape, from, to).len() > 1 => {
                 // Never past a convex corner: the axis must reach it.
                 let lp = &shape.loops()[to.loop_index];
                 if to.t > 0.0
@@ -479,16 +475,12 @@ impl Builder<'_> {
                         self.push_fan(l, e, np, np, lp.element(e).start_tangent().perp(), f64::INFINITY);
                     }
                 }
-                // A sliver at a chain's end (a cut within the tolerance of
-                // a vertex) is that vertex, unless the vertex is a convex
-                // corner, whose corner event needs the sliver's site.
-                let sliver = (hi - lo) * lp.element(e).length() <= self.tol;
-                let inner = if i == 0 {
-                    parts.len() > 1 && shape.joint(l, parts.get(1).0) == JointKind::Convex
-                } else {
-                    shape.joint(l, e) == JointKind::Convex
-                };
-                if !(sliver && !inner && (i == 0 || i + 1 == parts.len())) {
+                // A chain that is one sliver (a cut within the tolerance of
+                // a vertex) is that vertex; slivers at the ends of longer
+                // chains went in `drop_sliver_ends`, except next to a
+                // convex corner, whose corner event needs the sliver's site.
+                let sliver = parts.len() == 1 && (hi - lo) * lp.element(e).length() <= self.tol;
+                if !sliver {
                     self.element_site(l, e, lo, hi);
                 }
             }

@@ -307,14 +307,12 @@ fn check_tree(axis: &MedialAxis2d) -> Result<(), AxisError> {
 /// vertex, is what shows that no piece of the axis went missing between
 /// subshapes (the tree check cannot: the rest of a tree is a tree).
 fn check_corners(shape: &Shape2d, axis: &MedialAxis2d) -> Result<(), AxisError> {
-    let convex = shape.joint_counts()[JointKind::Convex as usize];
-    let corners = axis.nodes.iter().filter(|n| n.kind == NodeKind::Corner).count();
-    if corners == convex {
+    let mut at: Vec<Point> = axis.nodes.iter().filter(|n| n.kind == NodeKind::Corner).map(|n| n.point).collect();
+    if at.len() == shape.joint_counts()[JointKind::Convex as usize] {
         return Ok(());
     }
     // Report a convex vertex without its corner node (corners sorted by x).
     let tol = shape.tolerance();
-    let mut at: Vec<Point> = axis.nodes.iter().filter(|n| n.kind == NodeKind::Corner).map(|n| n.point).collect();
     at.sort_by(|a, b| a.x.total_cmp(&b.x));
     let has_corner = |p: Point| {
         let first = at.partition_point(|q| q.x < p.x - tol);
@@ -332,7 +330,7 @@ fn check_corners(shape: &Shape2d, axis: &MedialAxis2d) -> Result<(), AxisError> 
 /// For each dividing disk, the first one that is the same disk (centre and
 /// radius within `tol`): the divide step can meet one disk twice, from two
 /// sides, and both must be one node.
-fn coinciding_cuts(cuts: &[super::subshape::Cut], tol: f64) -> Vec<usize> {
+fn coinciding_cuts(cuts: &[Cut], tol: f64) -> Vec<usize> {
     use std::collections::HashMap;
     let cell = |x: f64| (x / (4.0 * tol)).floor() as i64;
     let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();

@@ -243,9 +243,8 @@ fn cluster_cut(finder: &DiskFinder, s: &Subshape, points: &[BoundaryPos], disk: 
             let feet: Vec<BoundaryPos> = finder.touching(c, rad).iter().map(|f| position(shape, f)).collect();
             let Some(children) = s.split(shape, disk, &feet) else { continue };
             // Progress: every piece has fewer parts and zero-length arcs.
-            let size = |x: &Subshape| original_parts(shape, x) + reflex_points(shape, x).len();
-            let whole = size(s);
-            if children.len() >= 2 && children.iter().all(|ch| size(ch) < whole) {
+            let whole = leaf_size(shape, s);
+            if children.len() >= 2 && children.iter().all(|ch| leaf_size(shape, ch) < whole) {
                 return Some((Cut { center: c, radius: rad }, children));
             }
         }

@@ -18,12 +18,13 @@
 //! none of 351 slides on a random star polygon of 10^4 vertices, 1 in 60
 //! at 3·10^4).
 
+use super::axis::Primitive;
 use super::maxdisk::{DiskFinder, Footpoint};
 use crate::kernel::apollonius::{tangent_disks, Site};
 use crate::kernel::bisector::bisector_point;
+use crate::kernel::construct::unwrap_near;
 use crate::kernel::Point;
 use crate::shape::{Element, ElementRef, JointKind};
-use std::f64::consts::{PI, TAU};
 
 /// What a disk touching `f` sees there: the element's line or circle, or a
 /// point at a reflex vertex.
@@ -45,13 +46,7 @@ pub fn site_of(finder: &DiskFinder, f: &Footpoint) -> Site {
             return Site::Point(lp.vertices()[v].p);
         }
     }
-    match e {
-        // The interior is left of travel.
-        Element::Segment(s) => Site::Line { a: s.a, n: (s.b - s.a).unit().perp() },
-        // A counter-clockwise arc has its centre on the interior side:
-        // interior disks are nested in its circle.
-        Element::Arc(a) => Site::Circle { o: a.center, r: a.radius, outside: !a.is_ccw() },
-    }
+    Primitive::Element(f.element).site(shape)
 }
 
 /// The footpoint parameter of a disk centred `c` on site `a` (inverse of
@@ -193,14 +188,8 @@ fn jump_to_third(
     // signed, as a slide turns a footpoint around a vertex or an arc's
     // centre by less than half a turn (a reflex fan is narrower than π).
     let angular = !matches!(sa, Site::Line { .. });
-    let ahead = |u: f64| {
-        let d = (u - u0) * dir;
-        if angular {
-            (d + PI).rem_euclid(TAU) - PI
-        } else {
-            d
-        }
-    };
+    let wrap = |turns: bool, d: f64| if turns { unwrap_near(d, 0.0) } else { d };
+    let ahead = |u: f64| wrap(angular, (u - u0) * dir);
     let min_ahead = if angular { 1e-12 } else { tol };
     // A disk (c, r) counts if it lies on this branch of the bisector.
     let on_branch = |c: Point, r: f64| -> Option<f64> {
@@ -229,12 +218,11 @@ fn jump_to_third(
     let mut best = (f64::INFINITY, Point::default(), 0.0);
     for &(f, s, other) in [(fa, sa, sb), (fb, sb, sa)].iter() {
         let turns = !matches!(s, Site::Line { .. });
-        let signed = |d: f64| if turns { (d + PI).rem_euclid(TAU) - PI } else { d };
         let here = param_on(s, c0, s.contact(c0, r0));
-        let forward = signed(param_on(s, c1, s.contact(c1, r1)) - here).signum();
+        let forward = wrap(turns, param_on(s, c1, s.contact(c1, r1)) - here).signum();
         let mut open = false;
         for &u in contact_range(finder, f, s).iter() {
-            if signed(u - here) * forward <= if turns { 1e-12 } else { tol } {
+            if wrap(turns, u - here) * forward <= if turns { 1e-12 } else { tol } {
                 continue;
             }
             open = true;
@@ -258,10 +246,7 @@ fn jump_to_third(
             return (on(&ea, sa.contact(c, r)) && on(&eb, sb.contact(c, r))).then_some((c, r));
         }
         let e = element(hit);
-        let interior = match e {
-            Element::Segment(g) => Site::Line { a: g.a, n: (g.b - g.a).unit().perp() },
-            Element::Arc(a) => Site::Circle { o: a.center, r: a.radius, outside: !a.is_ccw() },
-        };
+        let interior = Primitive::Element(hit).site(shape);
         let mut moved = false;
         for s3 in [interior, Site::Point(e.start()), Site::Point(e.end())].iter() {
             let point = matches!(s3, Site::Point(_));
@@ -308,6 +293,11 @@ mod tests {
     use crate::kernel::bisector::footpoint as fp;
     use crate::shape::{ElementRef, Shape2d, ShapeOptions, Vertex};
 
+    fn polygon(pts: &[(f64, f64)]) -> Shape2d {
+        let loop0 = pts.iter().map(|&(x, y)| Vertex { p: Point::new(x, y), bulge: 0.0 }).collect();
+        Shape2d::from_bulge_loops(vec![loop0], &ShapeOptions::default()).unwrap()
+    }
+
     #[test]
     fn param_on_inverts_footpoint() {
         let sites = [
@@ -331,12 +321,7 @@ mod tests {
         // touches the bottom and the left side (a redundant cut); sliding
         // away from the corner reaches the disk touching the top: radius 1,
         // centre (1, 1).
-        let v = |x: f64, y: f64| Vertex { p: Point::new(x, y), bulge: 0.0 };
-        let shape = Shape2d::from_bulge_loops(
-            vec![vec![v(0.0, 0.0), v(4.0, 0.0), v(4.0, 2.0), v(0.0, 2.0)]],
-            &ShapeOptions::default(),
-        )
-        .unwrap();
+        let shape = polygon(&[(0.0, 0.0), (4.0, 0.0), (4.0, 2.0), (0.0, 2.0)]);
         let finder = DiskFinder::new(&shape);
         let d = finder.max_disk(ElementRef { loop_index: 0, element: 0 }, 0.1);
         assert_eq!(d.footpoints.len(), 2, "{d:?}");
@@ -353,10 +338,7 @@ mod tests {
         // travels ~99 units while the radius grows from 0.01 to 0.99 (a
         // march of steps of 20 % of the radius needs thousands of them); it
         // must stop at the incircle, the only disk touching all three sides.
-        let v = |x: f64, y: f64| Vertex { p: Point::new(x, y), bulge: 0.0 };
-        let shape =
-            Shape2d::from_bulge_loops(vec![vec![v(0.0, 0.0), v(100.0, -1.0), v(100.0, 1.0)]], &ShapeOptions::default())
-                .unwrap();
+        let shape = polygon(&[(0.0, 0.0), (100.0, -1.0), (100.0, 1.0)]);
         let finder = DiskFinder::new(&shape);
         let d = finder.max_disk(ElementRef { loop_index: 0, element: 0 }, 0.01);
         assert_eq!(d.footpoints.len(), 2, "{d:?}");

@@ -157,7 +157,7 @@ impl BoxTree {
 
 /// A node waiting in a best-first search, ordered by its bound with the
 /// smallest on top of a max-heap; incomparable bounds count as equal.
-struct Pending<K>(K, u32);
+pub(super) struct Pending<K>(pub(super) K, pub(super) u32);
 
 impl<K: PartialOrd> PartialEq for Pending<K> {
     fn eq(&self, o: &Self) -> bool {

@@ -11,6 +11,7 @@
 //! run's sagitta instead, which shrinks with the square of its length:
 //! near a footpoint only a few short runs need opening.
 
+use super::box_tree::Pending;
 use super::bulge_loop::Loop;
 use super::element::Element;
 use super::error::ElementRef;
@@ -165,26 +166,6 @@ impl ChainTree {
             }
         }
         best
-    }
-}
-
-/// A heap entry ordered by smallest bound first.
-struct Pending(f64, u32);
-
-impl PartialEq for Pending {
-    fn eq(&self, o: &Self) -> bool {
-        self.0 == o.0 && self.1 == o.1
-    }
-}
-impl Eq for Pending {}
-impl PartialOrd for Pending {
-    fn partial_cmp(&self, o: &Self) -> Option<std::cmp::Ordering> {
-        Some(self.cmp(o))
-    }
-}
-impl Ord for Pending {
-    fn cmp(&self, o: &Self) -> std::cmp::Ordering {
-        o.0.total_cmp(&self.0).then(o.1.cmp(&self.1))
     }
 }
 
