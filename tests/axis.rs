@@ -347,3 +347,34 @@ fn lobe_tips_of_a_fine_flower_end_at_a_leaf_disk() {
     }
     assert!(probes >= 20, "{probes} probes");
 }
+
+#[test]
+fn needle_spikes_of_a_dense_star() {
+    // 3·10^4 random spikes: inward needles whose sides come within the
+    // tolerance of each other near the tip, dividing disks that meet a
+    // reflex vertex from just outside its fan, nearly flat convex corners
+    // beside a cut. Each of these broke the axis down before.
+    let s = shape(samples::star_polygon(30_000, 1));
+    let a = axis_of(&s);
+    let diag = s.bbox().diagonal();
+    let tol = 1e-9 * diag;
+    let sample_tol = 1e-4 * diag;
+    assert_eq!(a.nodes.len(), a.edges.len() + 1, "a tree");
+    let convex = s.joint_counts()[JointKind::Convex as usize];
+    assert_eq!(a.nodes.iter().filter(|n| n.kind == NodeKind::Corner).count(), convex);
+    for n in a.nodes.iter().step_by(97) {
+        assert!((boundary_distance(&s, n.point) - n.radius).abs() <= tol, "node {n:?}");
+    }
+    let lines = a.sampled(&s, sample_tol);
+    let mut rng = rand::rngs::SmallRng::seed_from_u64(5);
+    let lp = &s.loops()[0];
+    for _ in 0..30 {
+        let e = lp.element(rng.gen_range(0..lp.len()));
+        let p = e.point_at(rng.gen_range(0.05..0.95));
+        let Element::Segment(g) = e else { unreachable!("a polygon") };
+        let n = (g.b - g.a).unit().perp();
+        let c = p + n * bisected_radius(&s, p, n, diag);
+        let d = axis_distance(&lines, c);
+        assert!(d <= sample_tol + tol, "probe at {p:?}: centre {c:?} is {d} from the axis");
+    }
+}

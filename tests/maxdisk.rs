@@ -183,3 +183,37 @@ fn reflex_vertices() {
     let mut t = Tally::default();
     check_shape(&l, 200, 8, &mut t);
 }
+
+#[test]
+fn a_needle_thinner_than_the_tolerance_is_touched_from_its_own_side() {
+    // A reflex needle 0.6 tall and 6e-6 wide at its base rises into a unit
+    // square; near its tip its two sides are closer than the tolerance. A
+    // disk tangent to the left side there lies within the tolerance of the
+    // right side's line too, but reaches it only through the needle: the
+    // right side is not a contact.
+    let w = 6e-6;
+    let s = shape(vec![poly(&[
+        (0.0, 0.0),
+        (0.5 - w / 2.0, 0.0),
+        (0.5, 0.6),
+        (0.5 + w / 2.0, 0.0),
+        (1.0, 0.0),
+        (1.0, 1.0),
+        (0.0, 1.0),
+    ])]);
+    let finder = DiskFinder::new(&s);
+    let lp = &s.loops()[0];
+    let left = lp.element(1);
+    let q = left.point_at(1.0 - 8e-5 / 0.6);
+    let n = (left.end() - left.start()).unit().perp();
+    let r = 0.05;
+    let c = q + n * r;
+    let tol = 1e-9 * s.bbox().diagonal();
+    // The oracle sees both sides within the tolerance of the circle.
+    let right = lp.element(2);
+    assert!((right.closest_point(c).0 - r).abs() <= tol, "the right side is within the tolerance");
+    assert!(right.closest_point(c).1.dist(q) > tol, "at a footpoint of its own");
+    let feet = finder.touching(c, r);
+    assert!(feet.iter().any(|f| f.element.element == 1), "{feet:?}");
+    assert!(feet.iter().all(|f| f.element.element != 2), "{feet:?}");
+}

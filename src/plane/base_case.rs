@@ -365,15 +365,27 @@ impl Builder<'_> {
     }
 
     /// A reflex vertex's fan between directions `from` and `to` (clockwise),
-    /// measured from the fan's start `n_prev` so that the parameter agrees
-    /// in every subshape; skipped when it is no wider than the tolerance.
-    fn push_fan(&mut self, l: usize, v: usize, n_prev: Point, from: Point, to: Point, r: f64) {
+    /// measured from the fan's start (the previous element's end normal)
+    /// so that the parameter agrees in every subshape; skipped when it is
+    /// no wider than the tolerance.
+    fn push_fan(&mut self, l: usize, v: usize, from: Point, to: Point, r: f64) {
+        let lp = &self.shape.loops()[l];
+        let n = lp.len();
+        let n_prev = lp.element((v + n - 1) % n).end_tangent().perp();
+        let n_next = lp.element(v).start_tangent().perp();
         let base = angle(n_prev);
+        let raw = |d: Point| (base - angle(d)).rem_euclid(TAU);
+        let width = raw(n_next);
+        // A dividing disk may meet the vertex from a direction just outside
+        // its fan: it touches the element beside the vertex within the
+        // tolerance there. Angles are cut in the middle of the gap between
+        // the fan's ends, so that such a direction stays on its own side
+        // of the end (a fan of this subshape a hair wider, or one of the
+        // neighbouring subshape a hair narrower), ordered as the disks are.
         let cw = |d: Point| {
-            let x = (base - angle(d)).rem_euclid(TAU);
-            // A direction a hair counter-clockwise of the start is the start.
-            if x > TAU - 1e-9 {
-                0.0
+            let x = raw(d);
+            if x > width && TAU - x < x - width {
+                x - TAU
             } else {
                 x
             }
@@ -384,7 +396,7 @@ impl Builder<'_> {
         if d1 - d0 <= FAN_MIN || (d1 - d0) * r <= 4.0 * self.tol {
             return;
         }
-        let q = self.shape.loops()[l].vertices()[v].p;
+        let q = lp.vertices()[v].p;
         self.push_site(Primitive::Vertex { loop_index: l, vertex: v }, Site::Point(q), base - d0, base - d1);
     }
 
@@ -449,8 +461,7 @@ impl Builder<'_> {
                 if let (Some(v), Some((c0, r0)), Some((c1, r1))) = (from.vertex(shape), before, after) {
                     if shape.joint(l, v) == JointKind::Reflex {
                         let q = lp.vertices()[v].p;
-                        let n_prev = lp.element((v + n - 1) % n).end_tangent().perp();
-                        self.push_fan(l, v, n_prev, c0 - q, c1 - q, r0.min(r1));
+                        self.push_fan(l, v, c0 - q, c1 - q, r0.min(r1));
                     }
                 }
                 continue;
@@ -460,9 +471,8 @@ impl Builder<'_> {
             if let (Some(v), Some((c, r))) = (start_vertex, before) {
                 if shape.joint(l, v) == JointKind::Reflex {
                     let q = lp.vertices()[v].p;
-                    let n_prev = lp.element((v + n - 1) % n).end_tangent().perp();
                     let n_next = lp.element(v).start_tangent().perp();
-                    self.push_fan(l, v, n_prev, c - q, n_next, r);
+                    self.push_fan(l, v, c - q, n_next, r);
                 }
             }
             for i in 0..parts.len() {
@@ -472,7 +482,7 @@ impl Builder<'_> {
                     if shape.joint(l, e) == JointKind::Reflex {
                         let prev = lp.element((e + n - 1) % n);
                         let np = prev.end_tangent().perp();
-                        self.push_fan(l, e, np, np, lp.element(e).start_tangent().perp(), f64::INFINITY);
+                        self.push_fan(l, e, np, lp.element(e).start_tangent().perp(), f64::INFINITY);
                     }
                 }
                 // A chain that is one sliver (a cut within the tolerance of
@@ -490,7 +500,7 @@ impl Builder<'_> {
                 if shape.joint(l, v) == JointKind::Reflex {
                     let q = lp.vertices()[v].p;
                     let n_prev = lp.element(el).end_tangent().perp();
-                    self.push_fan(l, v, n_prev, n_prev, c - q, r);
+                    self.push_fan(l, v, n_prev, c - q, r);
                 }
             }
         }

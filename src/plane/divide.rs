@@ -108,21 +108,28 @@ fn dividing(shape: &Shape2d, s: &Subshape, parts: usize, disk: usize, feet: &[Bo
     children.iter().all(|c| original_parts(shape, c) < parts).then_some(children)
 }
 
-/// True when a footpoint of a disk of radius `r` lies within the tolerance
-/// of a convex corner. Only a disk of radius 0 touches a convex corner; a
-/// larger one does so within the tolerance at a nearly flat corner, where
-/// its contacts on the two elements merge into one footpoint at the
-/// vertex, and a cut there would leave the corner's branch of the axis in
-/// neither subshape.
+/// Footpoints this many tolerances from a convex corner count as at the
+/// corner (the base cases drop chain ends this short, `SLIVER_END`).
+const CORNER_FOOT: f64 = 4.0;
+
+/// True when a footpoint of a disk of radius `r` lies within
+/// [`CORNER_FOOT`] tolerances of a convex corner. Only a disk of radius 0
+/// touches a convex corner; a larger one comes that close at a nearly flat
+/// corner, where its contacts on the two elements merge into one footpoint
+/// at the vertex (or leave a sliver of a few tolerances past it), and a
+/// cut there would leave the corner's branch of the axis in neither
+/// subshape, or a branch point and the cut's centre within rounding of
+/// each other.
 fn foot_at_convex_corner(shape: &Shape2d, feet: &[BoundaryPos], r: f64) -> bool {
     let tol = shape.tolerance();
+    let near = CORNER_FOOT * tol;
     r > tol
         && feet.iter().any(|f| {
             let lp = &shape.loops()[f.loop_index];
             let p = f.point(shape);
             [f.element, (f.element + 1) % lp.len()]
                 .into_iter()
-                .any(|v| shape.joint(f.loop_index, v) == JointKind::Convex && lp.vertices()[v].p.dist(p) <= tol)
+                .any(|v| shape.joint(f.loop_index, v) == JointKind::Convex && lp.vertices()[v].p.dist(p) <= near)
         })
 }
 

@@ -103,8 +103,9 @@ impl<'s> DiskFinder<'s> {
         let reach = Point::new(r + tol, r + tol);
         self.index.tree.visit_overlapping::<()>(&crate::kernel::BBox { min: c - reach, max: c + reach }, |gid| {
             if self.index.tree.item_box(gid).distance_to(c) <= r + tol {
-                let (d, q) = self.element(gid).1.closest_point(c);
-                if d <= r + tol {
+                let e = self.element(gid).1;
+                let (d, q) = e.closest_point(c);
+                if d <= r + tol && seen_from_inside(&e, q, c, r, tol) {
                     near.push((gid, q));
                 }
             }
@@ -117,15 +118,21 @@ impl<'s> DiskFinder<'s> {
                 out.push(Footpoint { element: self.element(gid).0, point: q });
             }
         }
-        self.drop_clamped_ends(out)
+        self.drop_clamped_ends(out, c)
     }
 
     /// Removes footpoints that are only an element's end point seen
     /// within the tolerance (the element's own closest point to the centre
     /// is clamped to its end) while the element beyond that smooth or
     /// convex vertex has the real tangency nearby: one contact, not two.
-    /// At a reflex vertex the vertex itself is the contact and stays.
-    fn drop_clamped_ends(&self, feet: Vec<Footpoint>) -> Vec<Footpoint> {
+    /// At a reflex vertex the vertex itself is the contact and stays,
+    /// unless the centre `c` lies outside the vertex's fan on the side of
+    /// a neighbour with a contact of its own: that disk is tangent to the
+    /// neighbour and passes the vertex within the tolerance, and a cut at
+    /// the vertex too would leave the neighbour's last piece (where the
+    /// axis changes from the neighbour to the vertex) in a sliver of its
+    /// own.
+    fn drop_clamped_ends(&self, feet: Vec<Footpoint>, c: Point) -> Vec<Footpoint> {
         let tol = self.contact_tolerance();
         let keep: Vec<bool> = feet
             .iter()
@@ -140,14 +147,22 @@ impl<'s> DiskFinder<'s> {
                 } else {
                     return true;
                 };
-                if self.shape.joint(f.element.loop_index, vertex) == JointKind::Reflex {
-                    return true;
-                }
                 // The neighbour touches too, at a point of its own inside.
                 let v = lp.vertices()[vertex].p;
-                !feet.iter().any(|g| {
+                let neighbour_touches = feet.iter().any(|g| {
                     g.element.loop_index == f.element.loop_index && g.element.element == other && g.point.dist(v) > tol
-                })
+                });
+                if self.shape.joint(f.element.loop_index, vertex) == JointKind::Reflex {
+                    let d = c - v;
+                    let outside = if other == vertex {
+                        // `f` ends its element; the neighbour starts at `v`.
+                        lp.element(other).start_tangent().perp().cross(d) < 0.0
+                    } else {
+                        lp.element(other).end_tangent().perp().cross(d) > 0.0
+                    };
+                    return !(neighbour_touches && outside);
+                }
+                !neighbour_touches
             })
             .collect();
         feet.into_iter().zip(keep).filter(|(_, k)| *k).map(|(f, _)| f).collect()
@@ -240,13 +255,16 @@ impl<'s> DiskFinder<'s> {
             }
             let (er, e) = self.element(gid);
             let q = e.closest_point(center).1;
+            if !seen_from_inside(&e, q, center, radius, tol) {
+                continue;
+            }
             if found.iter().all(|(_, f)| f.point.dist(q) > tol) {
                 found.push((gid, Footpoint { element: er, point: q }));
             }
         }
         found[1..].sort_by_key(|(gid, _)| *gid);
         let first = found[0].1;
-        let mut footpoints = self.drop_clamped_ends(found.into_iter().map(|f| f.1).collect());
+        let mut footpoints = self.drop_clamped_ends(found.into_iter().map(|f| f.1).collect(), center);
         // The point grown from stays first, whatever the filter said.
         if footpoints.first() != Some(&first) {
             footpoints.retain(|f| *f != first);
@@ -318,4 +336,13 @@ fn touches(g: &GrowingDisk, e: &Element, t_min: f64) -> impl Iterator<Item = (f6
         }
     }
     out.into_iter().flatten().filter(move |&(t, _)| t > t_min)
+}
+
+/// True when a disk centred at `c` (radius `r`) touches element `e` at its
+/// point `q` from the element's interior side, or at one of its ends. A
+/// contact inside an element from the other side reaches it through a
+/// needle thinner than the tolerance, past the needle's other side, which
+/// is the real contact.
+fn seen_from_inside(e: &Element, q: Point, c: Point, r: f64, tol: f64) -> bool {
+    r <= tol || q.dist(e.start()) <= tol || q.dist(e.end()) <= tol || (c - q).dot(e.left_normal_at(q)) > 0.0
 }

@@ -224,6 +224,23 @@ impl Element {
         }
     }
 
+    /// Unit normal to the left of the direction of travel (towards the
+    /// shape's interior) at the element's point `q`; for an arc, `q` only
+    /// gives the direction from the centre.
+    pub fn left_normal_at(&self, q: Point) -> Point {
+        match self {
+            Element::Segment(s) => (s.b - s.a).perp().unit(),
+            Element::Arc(a) => {
+                let out = (q - a.center).unit();
+                if a.is_ccw() {
+                    -out
+                } else {
+                    out
+                }
+            }
+        }
+    }
+
     /// Euclidean distance from `p` to the closest point of the element, and that point.
     pub fn closest_point(&self, p: Point) -> (f64, Point) {
         match self {
