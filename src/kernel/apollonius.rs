@@ -167,8 +167,12 @@ fn tangent_disks_at_origin(sites: [Site; 3]) -> Vec<(Point, f64)> {
     let qb = 2.0 * q(x0, v) - v[3];
     let qc = q(x0, x0) - x0[3];
     let mut lambdas = Vec::with_capacity(2);
-    let scale = qb.abs().max(qc.abs()).max(f64::MIN_POSITIVE);
-    if qa.abs() <= 1e-14 * scale {
+    // Linear only when the quadratic term moves the near root by less than
+    // rounding: its relative effect there is qa·qc / qb². (Comparing qa
+    // with the other coefficients alone dropped it for a point and two
+    // nearly parallel lines, where the pencil runs close to the quadric's
+    // cone, and placed the disk 2 % of its radius off the point.)
+    if qa == 0.0 || (qa * qc).abs() <= 1e-17 * qb * qb {
         if qb != 0.0 {
             lambdas.push(-qc / qb);
         }
@@ -215,6 +219,28 @@ mod tests {
             _ => {
                 let big = rng.gen_range(0.1..2.0 * r);
                 Site::Circle { o: q - u * big, r: big, outside: false }
+            }
+        }
+    }
+
+    #[test]
+    fn a_point_and_two_nearly_parallel_lines() {
+        // The disk beside a nearly flat convex corner (two lines meeting at
+        // an angle of π − 2.8e-3, the disk on the same side of both),
+        // through a point: the pencil of the two lines runs close to the
+        // quadric's cone, so the quadratic's leading coefficient is tiny
+        // and must not be dropped. Far from the origin, as in a real shape.
+        let x = Point::new(16.66, -163.84);
+        for (k, eps) in [1.4e-3f64, 1e-4, 1e-5].into_iter().enumerate() {
+            let n1 = Point::new(-eps.cos(), eps.sin());
+            let n2 = Point::new(-eps.cos(), -eps.sin());
+            let q = x + Point::new(-4.1, -0.5 + 0.1 * k as f64);
+            let sites = [Site::Point(q), Site::Line { a: x, n: n1 }, Site::Line { a: x, n: n2 }];
+            let disks = tangent_disks(sites);
+            let (c, r) = disks[0];
+            assert!(r > 1.0 && r < 10.0, "{eps}: {disks:?}");
+            for s in &sites {
+                assert!(s.defect(c, r).abs() < 1e-9, "{eps}: {s:?} misses {c:?} {r} by {}", s.defect(c, r));
             }
         }
     }

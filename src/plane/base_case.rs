@@ -148,6 +148,7 @@ pub enum BaseCaseError {
 /// A branch point found in a pocket: its disk, its three contacts as
 /// footpoints, and the same contacts before coinciding ones were pulled
 /// apart.
+#[derive(Debug)]
 struct Branch {
     center: Point,
     radius: f64,
@@ -1064,6 +1065,11 @@ impl Builder<'_> {
                 let o2 = if o2 == 0.0 { span } else { o2 };
                 let (sl1, sl2, slt) = (slack(s1), slack(s2), slack(t));
                 if o1 > x1 + sl1 || o2 < y2 - sl2 || ot < x1 - slt || ot > y2 + slt || o1 >= o2 {
+                    continue;
+                }
+                // Touching all three: the construction is ill-conditioned
+                // for nearly parallel lines, where a root can miss a site.
+                if [s1, s2, t].iter().any(|&i| (self.distance(i, c).0 - r).abs() > CONTACT_SLACK * self.tol) {
                     continue;
                 }
                 // Empty: no site closer than the radius, inside the subshape.
