@@ -12,5 +12,22 @@ fn main() {
     let axis = medial_axis(&shape, &AxisOptions::default()).expect("axis");
     for (i, n) in axis.nodes.iter().enumerate().filter(|(_, n)| n.point.dist(p) < within) {
         println!("node {i}: {:?} r {} {:?}, {:e} away", n.point, n.radius, n.kind, n.point.dist(p));
+        for e in axis.edges.iter().filter(|e| e.from == i || e.to == i) {
+            let defects: Vec<f64> = e.sites.iter().map(|s| s.distance(&shape, n.point) - n.radius).collect();
+            println!("   edge {} -> {} {:?} sites {:?} defects {defects:?}", e.from, e.to, e.kind, e.sites);
+            if std::env::var("MEDAX_SITES").is_ok() {
+                for s in &e.sites {
+                    match *s {
+                        medax::plane::Primitive::Vertex { loop_index, vertex } => {
+                            println!("      vertex {vertex}: {:?}", shape.loops()[loop_index].vertices()[vertex].p)
+                        }
+                        medax::plane::Primitive::Element(r) => {
+                            let el = shape.loops()[r.loop_index].element(r.element);
+                            println!("      element {}: {:?} -> {:?}", r.element, el.start(), el.end())
+                        }
+                    }
+                }
+            }
+        }
     }
 }

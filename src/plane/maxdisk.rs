@@ -52,23 +52,17 @@ pub struct DiskFinder<'s> {
     shape: &'s Shape2d,
     index: ElementIndex,
     /// Runs of consecutive elements, for nearest-element queries (whose
-    /// points are mostly centres of maximal disks, where boxes prune badly
-    /// on smooth boundaries); `None` where the boundary zigzags and the
-    /// element boxes do better.
-    chains: Option<ChainTree>,
+    /// points are mostly centres of maximal disks, where element boxes
+    /// prune badly: on smooth boundaries the circle runs tangent to them,
+    /// and among dense spikes a point lies in the boxes of a fiftieth of
+    /// all elements).
+    chains: ChainTree,
 }
-
-/// [`ChainTree::zigzag`] below which nearest-element queries use the chain
-/// tree. Measured (`examples/profile_one`): smooth flowers 0.002 (3× faster
-/// axes at 10^5 arcs with the chain tree), random star polygons 1.0 and
-/// slanted combs 1.3 (30–50 % slower with it).
-const CHAIN_TREE_ZIGZAG: f64 = 0.25;
 
 impl<'s> DiskFinder<'s> {
     /// Indexes the elements of `shape`.
     pub fn new(shape: &'s Shape2d) -> DiskFinder<'s> {
-        let chains = Some(ChainTree::new(shape.loops())).filter(|t| t.zigzag() < CHAIN_TREE_ZIGZAG);
-        DiskFinder { shape, index: ElementIndex::new(shape.loops()), chains }
+        DiskFinder { shape, index: ElementIndex::new(shape.loops()), chains: ChainTree::new(shape.loops()) }
     }
 
     /// Contacts closer than this to the disk's circle count as footpoints:
@@ -84,14 +78,7 @@ impl<'s> DiskFinder<'s> {
 
     /// The element nearest to `p` and its distance.
     pub fn nearest(&self, p: Point) -> Option<(ElementRef, f64)> {
-        if let Some(chains) = &self.chains {
-            return chains.nearest(self.shape.loops(), p);
-        }
-        let found = self
-            .index
-            .tree
-            .min_by_bound(|b| Some(b.distance_to(p)), |gid, _| Some(self.element(gid).1.closest_point(p).0));
-        found.map(|(gid, d)| (self.element(gid).0, d))
+        self.chains.nearest(self.shape.loops(), p)
     }
 
     /// Where the circle (`c`, `r`) of an empty disk touches the boundary:
@@ -238,7 +225,12 @@ impl<'s> DiskFinder<'s> {
         // Footpoints: every element whose own first contact comes within the
         // tolerance of the disk's. (Elements merely near the circle, like
         // the boundary running on from a smooth footpoint, are not contacts.)
-        let near = self.index.tree.smallest_keys(tol, |b, cutoff| g.box_bound_below(b.min, b.max, cutoff), contact);
+        let near: Vec<(usize, f64)> = self
+            .chains
+            .first_contacts(&g, tol, |r| contact(self.index.global(r)))
+            .into_iter()
+            .map(|(r, t)| (self.index.global(r), t))
+            .collect();
         let Some(&(_, radius)) = near.first() else {
             // Cannot happen inside a bounded shape; an infinite radius keeps
             // the answer honest rather than inventing one.

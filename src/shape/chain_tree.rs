@@ -1,6 +1,7 @@
 //! Nearest-element queries along a boundary: a hierarchy over runs of
 //! consecutive elements, each run bounded by a capsule (its chord, widened
-//! by how far the run strays from it) and by its box.
+//! by how far the run strays from it), by its box, and by a box along its
+//! principal direction.
 //!
 //! Why not boxes: the questions medax asks most are about maximal disks,
 //! whose circles run tangent to the boundary at their footpoints. There
@@ -9,12 +10,18 @@
 //! the disk and none can be pruned (measured: hundreds of elements per
 //! query on smooth shapes of 10^5 arcs). A run's capsule comes within the
 //! run's sagitta instead, which shrinks with the square of its length:
-//! near a footpoint only a few short runs need opening.
+//! near a footpoint only a few short runs need opening. Among dense narrow
+//! spikes (random star polygons, combs) a point lies in the boxes of a
+//! fiftieth of all elements, and a run's capsule is as wide as its spikes
+//! are long; but consecutive spikes lie side by side, so the run's box
+//! along its principal direction is as thin as the run (measured: axes 3×
+//! faster on stars of 3·10^4 vertices, 6× on combs of 2·10^4).
 
 use super::box_tree::Pending;
 use super::bulge_loop::Loop;
 use super::element::Element;
 use super::error::ElementRef;
+use crate::kernel::growing_disk::GrowingDisk;
 use crate::kernel::{BBox, Point};
 
 /// Elements per leaf run: short enough that a leaf's capsule is tight,
@@ -29,8 +36,13 @@ struct Node {
     b: Point,
     /// Every point of the run lies within this distance of the chord.
     reach: f64,
-    /// And within this box (the better bound where the run zigzags).
+    /// And within this box.
     bbox: BBox,
+    /// And within this oriented box: projections on the unit axis `u`
+    /// (the run's principal direction) and on its normal. Where the
+    /// boundary zigzags in narrow spikes, the spikes of a run lie side by
+    /// side along one direction, and this box is as thin as the run.
+    obb: Oriented,
     /// Loop and element range [lo, hi).
     lp: u32,
     lo: u32,
@@ -38,6 +50,105 @@ struct Node {
     /// Children (inner nodes), or `u32::MAX` for a leaf.
     left: u32,
     right: u32,
+}
+
+/// A box with sides along a unit axis `u` and its normal: the points `x`
+/// with `u·x` in `[lo.x, hi.x]` and `u.perp()·x` in `[lo.y, hi.y]`.
+#[derive(Debug, Clone, Copy)]
+struct Oriented {
+    u: Point,
+    lo: Point,
+    hi: Point,
+}
+
+impl Oriented {
+    const EMPTY: Oriented = Oriented {
+        u: Point { x: 1.0, y: 0.0 },
+        lo: Point { x: f64::INFINITY, y: f64::INFINITY },
+        hi: Point { x: f64::NEG_INFINITY, y: f64::NEG_INFINITY },
+    };
+
+    fn along(u: Point) -> Oriented {
+        Oriented { u, ..Oriented::EMPTY }
+    }
+
+    /// Coordinates of `p` in the box's frame.
+    fn frame(&self, p: Point) -> Point {
+        Point::new(self.u.dot(p), self.u.perp().dot(p))
+    }
+
+    /// Widens the box to hold the disk (`p`, `r`).
+    fn add(&mut self, p: Point, r: f64) {
+        let q = self.frame(p);
+        self.lo = Point::new(self.lo.x.min(q.x - r), self.lo.y.min(q.y - r));
+        self.hi = Point::new(self.hi.x.max(q.x + r), self.hi.y.max(q.y + r));
+    }
+
+    /// Widens the box to hold element `e`: its end points, widened by its
+    /// sagitta (an arc of at most a half turn lies within its sagitta of
+    /// its chord), or the whole circle of a larger arc.
+    fn add_element(&mut self, e: &Element) {
+        match e {
+            Element::Arc(arc) if arc.bulge.abs() > 1.0 => self.add(arc.center, arc.radius),
+            _ => {
+                let w = e.sagitta();
+                self.add(e.start(), w);
+                self.add(e.end(), w);
+            }
+        }
+    }
+
+    /// Widens the box to hold another one (its four corners).
+    fn add_box(&mut self, o: &Oriented) {
+        let (u, v) = (o.u, o.u.perp());
+        for (x, y) in [(o.lo.x, o.lo.y), (o.lo.x, o.hi.y), (o.hi.x, o.lo.y), (o.hi.x, o.hi.y)] {
+            self.add(u * x + v * y, 0.0);
+        }
+    }
+
+    /// Distance from `p` to the box (0 inside).
+    fn distance_to(&self, p: Point) -> f64 {
+        let q = self.frame(p);
+        let dx = (self.lo.x - q.x).max(q.x - self.hi.x).max(0.0);
+        let dy = (self.lo.y - q.y).max(q.y - self.hi.y).max(0.0);
+        dx.hypot(dy)
+    }
+}
+
+/// Running sums of points, for their principal direction.
+#[derive(Debug, Clone, Copy, Default)]
+struct Spread {
+    n: f64,
+    s: Point,
+    xx: f64,
+    xy: f64,
+    yy: f64,
+}
+
+impl Spread {
+    fn add(&mut self, p: Point) {
+        self.n += 1.0;
+        self.s = self.s + p;
+        self.xx += p.x * p.x;
+        self.xy += p.x * p.y;
+        self.yy += p.y * p.y;
+    }
+
+    fn merge(&self, o: &Spread) -> Spread {
+        Spread { n: self.n + o.n, s: self.s + o.s, xx: self.xx + o.xx, xy: self.xy + o.xy, yy: self.yy + o.yy }
+    }
+
+    /// The unit direction of largest spread (any, for a single point).
+    fn axis(&self) -> Point {
+        if self.n < 2.0 {
+            return Point::new(1.0, 0.0);
+        }
+        let m = self.s * (1.0 / self.n);
+        let (cxx, cxy, cyy) =
+            (self.xx / self.n - m.x * m.x, self.xy / self.n - m.x * m.y, self.yy / self.n - m.y * m.y);
+        let t = 0.5 * (2.0 * cxy).atan2(cxx - cyy);
+        Point::new(t.cos(), t.sin())
+    }
 }
 
 /// The hierarchy over every loop of a shape (one root per loop). Built in
@@ -77,36 +188,21 @@ impl ChainTree {
             if lp.is_empty() {
                 continue;
             }
-            let root = t.build(lp, l as u32, 0, lp.len());
+            let (root, _) = t.build(lp, l as u32, 0, lp.len());
             t.roots.push(root);
         }
         t
     }
 
-    /// How much wider than long the leaf runs are: the sum of their
-    /// reaches over the sum of their chord lengths. Small (≪ 1) for smooth
-    /// or straight boundaries, where capsules prune well; large where the
-    /// boundary zigzags (dense spikes), where boxes do better.
-    pub fn zigzag(&self) -> f64 {
-        let (mut reach, mut chord) = (0.0, 0.0);
-        for n in self.nodes.iter().filter(|n| n.left == u32::MAX) {
-            reach += n.reach;
-            chord += n.a.dist(n.b);
-        }
-        if chord > 0.0 {
-            reach / chord
-        } else {
-            f64::INFINITY
-        }
-    }
-
-    fn build(&mut self, lp: &Loop, l: u32, lo: usize, hi: usize) -> u32 {
+    fn build(&mut self, lp: &Loop, l: u32, lo: usize, hi: usize) -> (u32, Spread) {
         let (a, b) = (lp.element(lo).start(), lp.element(hi - 1).end());
+        let mut spread = Spread::default();
         let mut node = Node {
             a,
             b,
             reach: 0.0,
             bbox: BBox::EMPTY,
+            obb: Oriented::EMPTY,
             lp: l,
             lo: lo as u32,
             hi: hi as u32,
@@ -116,9 +212,21 @@ impl ChainTree {
         if hi - lo <= LEAF {
             node.reach = (lo..hi).map(|i| element_reach(&lp.element(i), a, b)).fold(0.0, f64::max);
             node.bbox = (lo..hi).fold(BBox::EMPTY, |bb, i| bb.union(&lp.element(i).bbox()));
+            for i in lo..hi {
+                spread.add(lp.element(i).start());
+            }
+            spread.add(b);
+            node.obb = Oriented::along(spread.axis());
+            for i in lo..hi {
+                node.obb.add_element(&lp.element(i));
+            }
         } else {
             let mid = lo + (hi - lo) / 2;
-            let (left, right) = (self.build(lp, l, lo, mid), self.build(lp, l, mid, hi));
+            let ((left, sl), (right, sr)) = (self.build(lp, l, lo, mid), self.build(lp, l, mid, hi));
+            spread = sl.merge(&sr);
+            node.obb = Oriented::along(spread.axis());
+            node.obb.add_box(&self.nodes[left as usize].obb);
+            node.obb.add_box(&self.nodes[right as usize].obb);
             // A child's points lie within its reach of its chord, whose
             // points lie within the larger end distance of this chord.
             let around = |c: &Node| segment_distance(c.a, a, b).max(segment_distance(c.b, a, b)) + c.reach;
@@ -129,14 +237,15 @@ impl ChainTree {
             node.right = right;
         }
         self.nodes.push(node);
-        (self.nodes.len() - 1) as u32
+        ((self.nodes.len() - 1) as u32, spread)
     }
 
     /// The element of `loops` (the ones the tree was built from) nearest
     /// to `p`, and its distance (model units); the first in loop and
     /// element order among equals. `None` for a shape without elements.
     pub fn nearest(&self, loops: &[Loop], p: Point) -> Option<(ElementRef, f64)> {
-        let bound = |n: &Node| (segment_distance(p, n.a, n.b) - n.reach).max(n.bbox.distance_to(p));
+        let bound =
+            |n: &Node| (segment_distance(p, n.a, n.b) - n.reach).max(n.bbox.distance_to(p)).max(n.obb.distance_to(p));
         let mut heap = std::collections::BinaryHeap::with_capacity(64);
         for &r in &self.roots {
             heap.push(Pending(bound(&self.nodes[r as usize]), r));
@@ -167,12 +276,98 @@ impl ChainTree {
         }
         best
     }
+
+    /// The elements first touched by the disk growing at `g`: every one
+    /// whose `key` (the radius of its first contact, `None` for none) is
+    /// within `slack` of the smallest, as `(element, key)` in increasing
+    /// key order (ties in loop and element order), found best-first. A
+    /// run's bound is where the growing disk first meets its box or its
+    /// oriented box (the latter by turning the disk into the box's frame).
+    pub fn first_contacts(
+        &self,
+        g: &GrowingDisk,
+        slack: f64,
+        mut key: impl FnMut(ElementRef) -> Option<f64>,
+    ) -> Vec<(ElementRef, f64)> {
+        let bound = |n: &Node, cutoff: f64| -> Option<f64> {
+            let b = g.box_bound_below(n.bbox.min, n.bbox.max, cutoff)?;
+            if b >= cutoff {
+                return Some(b);
+            }
+            let o = &n.obb;
+            let turned = GrowingDisk { p: o.frame(g.p), n: o.frame(g.n) };
+            Some(b.max(turned.box_bound_below(o.lo, o.hi, cutoff)?))
+        };
+        let mut found: Vec<(ElementRef, f64)> = Vec::new();
+        let mut cutoff = f64::INFINITY;
+        let mut heap = std::collections::BinaryHeap::with_capacity(64);
+        for &r in &self.roots {
+            if let Some(b) = bound(&self.nodes[r as usize], cutoff) {
+                heap.push(Pending(b, r));
+            }
+        }
+        while let Some(Pending(b, id)) = heap.pop() {
+            if b > cutoff {
+                break;
+            }
+            let n = self.nodes[id as usize];
+            if n.left == u32::MAX {
+                for i in n.lo as usize..n.hi as usize {
+                    let r = ElementRef { loop_index: n.lp as usize, element: i };
+                    if let Some(v) = key(r).filter(|&v| v <= cutoff) {
+                        found.push((r, v));
+                        cutoff = cutoff.min(v + slack);
+                    }
+                }
+            } else {
+                for c in [n.left, n.right] {
+                    if let Some(b) = bound(&self.nodes[c as usize], cutoff).filter(|&b| b <= cutoff) {
+                        heap.push(Pending(b, c));
+                    }
+                }
+            }
+        }
+        found.retain(|&(_, v)| v <= cutoff);
+        found.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
+        found
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::shape::{samples, Shape2d, ShapeOptions};
+
+    #[test]
+    fn first_contacts_agree_with_a_scan() {
+        // Key: the radius at which the growing disk reaches an element's
+        // start point, which lies in every box that holds the element.
+        let mut rng = samples::Mix(11);
+        for loops in [samples::flower_arcs(500), samples::star_polygon(300, 2)] {
+            let s = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).unwrap();
+            let t = ChainTree::new(s.loops());
+            let lp = &s.loops()[0];
+            for _ in 0..300 {
+                let e = lp.element((rng.next() * lp.len() as f64) as usize % lp.len());
+                let p = e.point_at(0.5);
+                let a = 2.0 * std::f64::consts::PI * rng.next();
+                let g = GrowingDisk { p, n: Point::new(a.cos(), a.sin()) };
+                let key = |r: ElementRef| g.through_point(lp.element(r.element).start()).filter(|&k| k > 1e-9);
+                let slack = 1e-3;
+                let got = t.first_contacts(&g, slack, key);
+                let mut scan: Vec<(ElementRef, f64)> = (0..lp.len())
+                    .filter_map(|i| {
+                        let r = ElementRef { loop_index: 0, element: i };
+                        key(r).map(|k| (r, k))
+                    })
+                    .collect();
+                let least = scan.iter().map(|x| x.1).fold(f64::INFINITY, f64::min);
+                scan.retain(|x| x.1 <= least + slack);
+                scan.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
+                assert_eq!(got, scan, "{p:?} {a}");
+            }
+        }
+    }
 
     #[test]
     fn nearest_agrees_with_a_scan() {
