@@ -4,11 +4,8 @@
 //
 // Corpus: 50 random star polygons (mt::star: sorted jittered angles, radii
 // in [0.3, 1] x R, R log-uniform in [0.5, 500], CCW and CW alternately),
-// vertex counts a geometric sequence from 10 to 1000. Capped at 1000: with
-// medax 0.1.0 mx_axis_compute fails (MX_ERR_NUMERICAL, mostly "step budget
-// exhausted") on about 1 in 3 stars of 1000-1500 vertices, 2 in 3 of 2000
-// and every one of 3000 and more (10^4: 27 s, then the failure). Raise it
-// with the third argument.
+// vertex counts a geometric sequence from 10 to 10^4 (the third argument
+// changes the top).
 //
 // The SDG has one site per polygon vertex (a point) and one per edge (the
 // open segment). Its Voronoi vertices are the centres of the circles
@@ -56,8 +53,9 @@
 //       segments the vertex can miss one of its own sites by ~1e-8 x
 //       diagonal. Where the SDG vertex is not equidistant from its three
 //       sites to eps, medax's node matches when it is within 1e-6 x
-//       diagonal, equidistant from those same sites to 1e-11 x diagonal, and
-//       its radius is its brute-force clearance within eps.
+//       diagonal, equidistant from those same sites to 1e-10 x diagonal and
+//       100 times better than the SDG vertex, and its radius is its
+//       brute-force clearance within eps.
 //   shifted joints: medax puts most joints exactly (~1e-15) on the SDG
 //       vertex, but some on the same axis edge a little towards the v side:
 //       the disk still touches v and the line of e, but its foot on that
@@ -74,9 +72,9 @@
 //       medax JOINT through v within 4 tol + eps of them, radii within the
 //       same.
 //
-// mx_axis_compute currently fails with MX_ERR_NUMERICAL on a few random
-// stars: those are printed and skipped; the test fails when more than 10 %
-// are skipped.
+// A star on which mx_axis_compute fails with MX_ERR_NUMERICAL is printed
+// and skipped; the test fails when more than 10 % are skipped (none is, at
+// medax 0.1.0, on the default corpus or on seeds 7 and 11).
 //
 // Usage: cgal_axis [seed] [polygons] [max-vertices]
 //        (also MEDAX_CGAL_SEED, MEDAX_CGAL_AXIS_CASES, MEDAX_CGAL_AXIS_MAX_N;
@@ -129,7 +127,7 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 }
 
 // The kept Voronoi vertices of the SDG of `poly`, classified (see the top).
-std::vector<Disk> sdg_vertices(const Polygon& poly, double min_clearance) {
+std::vector<Disk> sdg_vertices(const Polygon& poly, double min_clearance, size_t& flat_vertices) {
     mt::Sdg sdg;
     mt::insert_polygon(sdg, poly);
     const size_t n = poly.size();
@@ -164,6 +162,27 @@ std::vector<Disk> sdg_vertices(const Polygon& poly, double min_clearance) {
         for (size_t v : points)
             for (size_t e : edges)
                 if (v == e || v == (e + 1) % n) d.kind = Kind::joint, d.v = v, d.e = e;
+        // Three segments, two of them meeting at a vertex v that the disk
+        // passes through (within eps): v is nearly flat, its two normals
+        // within medax's joint angle (1e-6 rad) of each other, so medax
+        // joins the segments smoothly and has one JOINT where its sites
+        // change from one segment to the other. (Exactly, a nearly flat
+        // convex v adds a corner edge whose disks all touch within eps of
+        // v.) Matched like v's joint.
+        if (points.empty()) {
+            for (size_t i = 0; i < 3; ++i)
+                for (size_t j = 0; j < 3; ++j) {
+                    const size_t v = (edges[i] + 1) % n;
+                    if (i == j || edges[j] != v || d.kind != Kind::branch) continue;
+                    const Pt a = poly[edges[i]], b = poly[v], c = poly[(v + 1) % n];
+                    const double ux = b.first - a.first, uy = b.second - a.second;
+                    const double wx = c.first - b.first, wy = c.second - b.second;
+                    const double turn = std::atan2(ux * wy - uy * wx, ux * wx + uy * wy);
+                    const double to_v = std::hypot(p.first - b.first, p.second - b.second);
+                    if (std::fabs(turn) < 1e-6 && std::fabs(to_v - r) <= min_clearance)
+                        d.kind = Kind::joint, d.v = v, d.e = edges[i], ++flat_vertices;
+                }
+        }
         out.push_back(d);
     }
     return out;
@@ -186,7 +205,7 @@ std::vector<size_t> near(const std::vector<Disk>& pool, double x, double y, doub
 struct Tally {
     size_t polygons = 0, compared = 0, skipped = 0;
     size_t sdg_branches = 0, sdg_joints = 0, medax_branches = 0, medax_joints = 0, pass_through = 0;
-    size_t matched_branches = 0, conditioned_branches = 0, sdg_inexact_branches = 0, exact_joints = 0, shifted_joints = 0, narrow_fan_joints = 0;
+    size_t matched_branches = 0, conditioned_branches = 0, sdg_inexact_branches = 0, flat_vertices = 0, exact_joints = 0, shifted_joints = 0, narrow_fan_joints = 0;
     // All / diagonal. Matched branches and exact joints: position and
     // radius; shifted joints: distance from the SDG vertex; all joints:
     // |radius - brute-force clearance|.
@@ -260,7 +279,7 @@ void check_polygon(const Polygon& poly, const std::string& name, Tally& tally) {
     tally.medax_joints += joints.size();
 
     t0 = std::chrono::steady_clock::now();
-    std::vector<Disk> sdg = sdg_vertices(poly, eps);
+    std::vector<Disk> sdg = sdg_vertices(poly, eps, tally.flat_vertices);
     tally.sdg_secs += seconds_since(t0);
     std::vector<Disk> sdg_branches;
     for (const Disk& d : sdg) {
@@ -297,9 +316,11 @@ void check_polygon(const Polygon& poly, const std::string& name, Tally& tally) {
             // segments that vertex can miss one of its own sites by 1e-8 x
             // diagonal. Then medax's node must be equidistant from the
             // same three sites, at its own clearance.
-            const bool inexact = spread(s, s.x, s.y) > eps;
+            const double sdg_spread = spread(s, s.x, s.y), medax_spread = spread(s, medax.x, medax.y);
+            const bool inexact = sdg_spread > eps && pos <= 1e-6 * diag;
+            const bool closer = medax_spread <= 1e-10 * diag && 100.0 * medax_spread <= sdg_spread;
             const bool clear = std::fabs(medax.r - mt::boundary_distance(poly, {medax.x, medax.y})) <= eps;
-            return inexact && same_sites && clear ? Match::sdg_inexact : Match::none;
+            return inexact && closer && clear ? Match::sdg_inexact : Match::none;
         }
         if (pos <= eps) return Match::exact;
         return same_sites ? Match::conditioned : Match::none;
@@ -447,7 +468,8 @@ int main(int argc, char** argv) {
               << t.pass_through << " pass-through, not compared); matched " << t.matched_branches << " branch (" << t.conditioned_branches
               << " ill-conditioned, " << t.sdg_inexact_branches << " where the SDG vertex is inexact) + "
               << t.exact_joints + t.shifted_joints + t.narrow_fan_joints << " joint (" << t.shifted_joints
-              << " shifted by the tolerance, " << t.narrow_fan_joints << " ends of fans narrower than 4 tolerances)\n"
+              << " shifted by the tolerance, " << t.narrow_fan_joints << " ends of fans narrower than 4 tolerances, " << t.flat_vertices
+              << " SDG branches at a nearly flat vertex)\n"
               << "cgal_axis: max error / diagonal: branch position " << t.max_pos << ", radius " << t.max_rad
               << ", ill-conditioned branch position " << t.max_conditioned
               << "; exact joint position " << t.max_joint_pos << ", radius " << t.max_joint_rad
