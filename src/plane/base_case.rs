@@ -1041,7 +1041,10 @@ impl Builder<'_> {
     /// empty disk touching `s1` before offset `x1`, `s2` after offset `y2`
     /// and a third site in between. The one touching `s1` first wins.
     fn branch(&self, a: Key, span: f64, s1: usize, s2: usize, x1: f64, y2: f64) -> Option<Branch> {
-        let mut best: Option<(f64, Branch)> = None;
+        // Candidates that touch the three sites within their ranges, in
+        // the pocket, by where they touch `s1`; the first empty one wins.
+        // (Emptiness costs O(n) each, so it is tested last and in order.)
+        let mut candidates: Vec<(f64, usize, Point, f64)> = Vec::new();
         for t in 0..self.n() {
             if t == s1 || t == s2 {
                 continue;
@@ -1072,36 +1075,34 @@ impl Builder<'_> {
                 if [s1, s2, t].iter().any(|&i| (self.distance(i, c).0 - r).abs() > CONTACT_SLACK * self.tol) {
                     continue;
                 }
-                // Empty: no site closer than the radius, inside the subshape.
-                if (0..self.n()).any(|i| self.distance(i, c).0 < r - self.tol) {
-                    continue;
-                }
-                // And empty for the whole shape: a subshape's own
-                // primitives do not see past its auxiliary arcs.
-                if self.finder.nearest(c).is_some_and(|(_, dist)| dist < r - 4.0 * self.tol) {
-                    continue;
-                }
-                let key = |i: usize| self.key(i, self.param(i, c, r), r);
-                let raw = [key(s1), key(s2), key(t)];
-                let mut keys = raw;
-                let sites = [s1, s2, t];
-                // Two contacts within the tolerance of one vertex (a disk in
-                // the wedge of a nearly flat convex corner) are still two
-                // contacts, each on its own side of the vertex: keep them
-                // apart so the corner's own event lies between them.
-                for x in 0..3 {
-                    for y in 0..3 {
-                        if x != y && raw[x] == raw[y] {
-                            let w = self.fraction(sites[x], self.param(sites[x], c, r));
-                            keys[x] = Key { site: sites[x], w: if w > 0.5 { 1.0 - NUDGE } else { NUDGE } };
-                        }
-                    }
-                }
-                if best.as_ref().is_none_or(|b| o1 < b.0) {
-                    best = Some((o1, Branch { center: c, radius: r, contacts: keys, snapped: raw }));
+                candidates.push((o1, t, c, r));
+            }
+        }
+        // Stable: among equal offsets the first found wins, as it did.
+        candidates.sort_by(|x, y| x.0.total_cmp(&y.0));
+        let (_, t, c, r) = candidates.into_iter().find(|&(_, _, c, r)| {
+            // Empty: no site closer than the radius, inside the subshape,
+            // and for the whole shape (a subshape's own primitives do not
+            // see past its auxiliary arcs).
+            !(0..self.n()).any(|i| self.distance(i, c).0 < r - self.tol)
+                && !self.finder.nearest(c).is_some_and(|(_, dist)| dist < r - 4.0 * self.tol)
+        })?;
+        let key = |i: usize| self.key(i, self.param(i, c, r), r);
+        let raw = [key(s1), key(s2), key(t)];
+        let mut keys = raw;
+        let sites = [s1, s2, t];
+        // Two contacts within the tolerance of one vertex (a disk in the
+        // wedge of a nearly flat convex corner) are still two contacts,
+        // each on its own side of the vertex: keep them apart so the
+        // corner's own event lies between them.
+        for x in 0..3 {
+            for y in 0..3 {
+                if x != y && raw[x] == raw[y] {
+                    let w = self.fraction(sites[x], self.param(sites[x], c, r));
+                    keys[x] = Key { site: sites[x], w: if w > 0.5 { 1.0 - NUDGE } else { NUDGE } };
                 }
             }
         }
-        best.map(|b| b.1)
+        Some(Branch { center: c, radius: r, contacts: keys, snapped: raw })
     }
 }
