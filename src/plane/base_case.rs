@@ -1049,6 +1049,16 @@ impl Builder<'_> {
             if t == s1 || t == s2 {
                 continue;
             }
+            // The third contact lies between offsets x1 and y2, give or
+            // take half a site (the largest slack): skip sites wholly
+            // outside. A contact at a site's end may be keyed as the next
+            // site's start, one further on; a site that holds `a` or whose
+            // end wraps round stays.
+            let (o_start, o_end) = (self.offset(a, Key { site: t, w: 0.0 }), self.offset(a, Key { site: t, w: 1.0 }));
+            let whole = o_start <= o_end && o_end + 1.0 < 2.0 * self.n() as f64;
+            if whole && (o_end + 1.0 < x1 - 0.5 || o_start > y2 + 0.5) {
+                continue;
+            }
             for (c, r) in tangent_disks([self.sites[s1].site, self.sites[s2].site, self.sites[t].site]) {
                 if r <= self.tol || !c.is_finite() {
                     continue;
