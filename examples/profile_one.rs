@@ -1,7 +1,8 @@
 //! Validates one sample shape once, and optionally computes its medial
 //! axis (for profilers):
 //! `cargo run --release --example profile_one -- star|flower|comb N [axis [LEAF_PARTS]]`
-//! (`MEDAX_SEED` picks the random star).
+//! (`MEDAX_SEED` picks the random star, `MEDAX_AXIS_SEED` the divide step's
+//! random choices).
 use medax::plane::{medial_axis, AxisOptions};
 use medax::shape::{samples, Shape2d, ShapeOptions};
 
@@ -19,7 +20,9 @@ fn main() {
     if args.get(3).map(String::as_str) == Some("axis") {
         let t = std::time::Instant::now();
         let leaf_parts = args.get(4).and_then(|s| s.parse().ok()).unwrap_or(AxisOptions::default().leaf_parts);
-        match medial_axis(&s, &AxisOptions { leaf_parts, ..AxisOptions::default() }) {
+        let seed =
+            std::env::var("MEDAX_AXIS_SEED").ok().and_then(|v| v.parse().ok()).unwrap_or(AxisOptions::default().seed);
+        match medial_axis(&s, &AxisOptions { leaf_parts, seed }) {
             Ok(a) => println!("axis: {} nodes in {:.3} s", a.nodes.len(), t.elapsed().as_secs_f64()),
             Err(e) => println!("axis failed after {:.3} s: {e}", t.elapsed().as_secs_f64()),
         }
