@@ -30,7 +30,7 @@
 
 use super::axis::Primitive;
 use super::maxdisk::DiskFinder;
-use super::subshape::{hugged_disk, BoundaryPos, ChainParts, Cut, Piece, Subshape, HUGGED_TIP};
+use super::subshape::{hugged_disk, BoundaryPos, ChainParts, Cut, Piece, Subshape, HUGGED_TIP, SLIVER_END};
 use crate::kernel::apollonius::{tangent_disks, Site};
 use crate::kernel::construct::unwrap_near;
 use crate::kernel::growing_disk::GrowingDisk;
@@ -54,6 +54,9 @@ const NUDGE: f64 = 1e-12;
 /// How far (in tolerances, along the boundary) a branch point's contact
 /// may fall outside the range it must lie in.
 const CONTACT_SLACK: f64 = 16.0;
+
+/// And at most this fraction of the site (short sites).
+const CONTACT_SLACK_CAP: f64 = 0.5;
 
 /// Fans of normals narrower than this (radians) are rounding, not fans.
 const FAN_MIN: f64 = 1e-7;
@@ -148,7 +151,6 @@ pub enum BaseCaseError {
 /// A branch point found in a pocket: its disk, its three contacts as
 /// footpoints, and the same contacts before coinciding ones were pulled
 /// apart.
-#[derive(Debug)]
 struct Branch {
     center: Point,
     radius: f64,
@@ -188,10 +190,6 @@ fn same_position(shape: &Shape2d, a: BoundaryPos, b: BoundaryPos) -> bool {
     let n = shape.loops()[a.loop_index].len();
     a.loop_index == b.loop_index && (a == b || (a.t == 1.0 && b.t == 0.0 && b.element == (a.element + 1) % n))
 }
-
-/// A chain that ends this many tolerances (in length) past a vertex ends
-/// at the vertex.
-const SLIVER_END: f64 = 4.0;
 
 /// `s` with every chain end that lies within `len` (model units, along the
 /// boundary) past a vertex that is not a convex corner moved back to the
@@ -1050,13 +1048,12 @@ impl Builder<'_> {
                 continue;
             }
             // The third contact lies between offsets x1 and y2, give or
-            // take half a site (the largest slack): skip sites wholly
-            // outside. A contact at a site's end may be keyed as the next
-            // site's start, one further on; a site that holds `a` or whose
-            // end wraps round stays.
+            // take the slack: skip sites wholly outside. A contact at a
+            // site's end may be keyed as the next site's start, one further
+            // on; a site that holds `a` or whose end wraps round stays.
             let (o_start, o_end) = (self.offset(a, Key { site: t, w: 0.0 }), self.offset(a, Key { site: t, w: 1.0 }));
             let whole = o_start <= o_end && o_end + 1.0 < 2.0 * self.n() as f64;
-            if whole && (o_end + 1.0 < x1 - 0.5 || o_start > y2 + 0.5) {
+            if whole && (o_end + 1.0 < x1 - CONTACT_SLACK_CAP || o_start > y2 + CONTACT_SLACK_CAP) {
                 continue;
             }
             for (c, r) in tangent_disks([self.sites[s1].site, self.sites[s2].site, self.sites[t].site]) {
@@ -1066,8 +1063,10 @@ impl Builder<'_> {
                 // Near-degenerate triples (many disks nearly alike, as at
                 // the centre of a symmetric shape) place contacts a few
                 // tolerances off: allow that much, in length, per site.
-                let slack =
-                    |i: usize| (CONTACT_SLACK * self.tol / self.length(i, 0.0, 1.0, r).max(f64::MIN_POSITIVE)).min(0.5);
+                let slack = |i: usize| {
+                    (CONTACT_SLACK * self.tol / self.length(i, 0.0, 1.0, r).max(f64::MIN_POSITIVE))
+                        .min(CONTACT_SLACK_CAP)
+                };
                 let at = |i: usize| {
                     let u = self.param(i, c, r);
                     let w = self.fraction(i, u);

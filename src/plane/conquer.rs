@@ -462,13 +462,7 @@ fn merge_coinciding_branches(shape: &Shape2d, axis: &mut MedialAxis2d, tol: f64)
     // The group's node is the member whose disk fits every primitive of
     // the group's outer edges best; a group that no member fits within
     // half the final check's slack stays apart.
-    let mut prims: Vec<Vec<Primitive>> = vec![Vec::new(); n];
-    for (e, _) in axis.edges.iter().zip(&inner).filter(|(_, &i)| !i) {
-        for v in [e.from, e.to] {
-            let g = root(&mut parent, v);
-            prims[g].extend(e.sites);
-        }
-    }
+    let prims = primitives_at(axis, |k| !inner[k], |v| root(&mut parent, v));
     let misfit = |v: usize, ps: &[Primitive]| {
         let node = &axis.nodes[v];
         ps.iter().map(|p| (p.distance(shape, node.point) - node.radius).abs()).fold(0.0, f64::max)
@@ -505,6 +499,27 @@ fn merge_coinciding_branches(shape: &Shape2d, axis: &mut MedialAxis2d, tol: f64)
     axis.nodes = kept;
 }
 
+/// The primitives of the edges `keep(edge index)` at each of their ends,
+/// gathered at `group(node)` (each primitive once, in edge order).
+fn primitives_at(
+    axis: &MedialAxis2d,
+    keep: impl Fn(usize) -> bool,
+    mut group: impl FnMut(usize) -> usize,
+) -> Vec<Vec<Primitive>> {
+    let mut prims: Vec<Vec<Primitive>> = vec![Vec::new(); axis.nodes.len()];
+    for (_, e) in axis.edges.iter().enumerate().filter(|(k, _)| keep(*k)) {
+        for v in [e.from, e.to] {
+            let g = group(v);
+            for p in e.sites {
+                if !prims[g].contains(&p) {
+                    prims[g].push(p);
+                }
+            }
+        }
+    }
+    prims
+}
+
 /// The edge walked the other way.
 fn reversed(e: AxisEdge) -> AxisEdge {
     AxisEdge {
@@ -524,16 +539,7 @@ fn reversed(e: AxisEdge) -> AxisEdge {
 /// ill-conditioned and the slide's disk stays).
 fn polish_branches(shape: &Shape2d, axis: &mut MedialAxis2d) {
     use crate::kernel::apollonius::tangent_disks;
-    let mut prims: Vec<Vec<Primitive>> = vec![Vec::new(); axis.nodes.len()];
-    for e in &axis.edges {
-        for v in [e.from, e.to] {
-            for p in e.sites {
-                if !prims[v].contains(&p) {
-                    prims[v].push(p);
-                }
-            }
-        }
-    }
+    let prims = primitives_at(axis, |_| true, |v| v);
     for (node, ps) in axis.nodes.iter_mut().zip(&prims) {
         if node.kind != NodeKind::Branch || ps.len() < 3 {
             continue;

@@ -22,7 +22,7 @@
 
 use super::maxdisk::{DiskFinder, Footpoint, MaxDisk};
 use super::maxdisk_star::slide_to_third;
-use super::subshape::{hugged_disk, BoundaryPos, ChainParts, Cut, Piece, Subshape, HUGGED_TIP};
+use super::subshape::{hugged_disk, BoundaryPos, ChainParts, Cut, Piece, Subshape, HUGGED_TIP, SLIVER_END};
 use crate::kernel::Point;
 use crate::shape::samples::Mix;
 use crate::shape::{ElementRef, JointKind, Shape2d};
@@ -108,12 +108,8 @@ fn dividing(shape: &Shape2d, s: &Subshape, parts: usize, disk: usize, feet: &[Bo
     children.iter().all(|c| original_parts(shape, c) < parts).then_some(children)
 }
 
-/// Footpoints this many tolerances from a convex corner count as at the
-/// corner (the base cases drop chain ends this short, `SLIVER_END`).
-const CORNER_FOOT: f64 = 4.0;
-
 /// True when a footpoint of a disk of radius `r` lies within
-/// [`CORNER_FOOT`] tolerances of a convex corner. Only a disk of radius 0
+/// [`SLIVER_END`] tolerances of a convex corner. Only a disk of radius 0
 /// touches a convex corner; a larger one comes that close at a nearly flat
 /// corner, where its contacts on the two elements merge into one footpoint
 /// at the vertex (or leave a sliver of a few tolerances past it), and a
@@ -122,7 +118,7 @@ const CORNER_FOOT: f64 = 4.0;
 /// each other.
 fn foot_at_convex_corner(shape: &Shape2d, feet: &[BoundaryPos], r: f64) -> bool {
     let tol = shape.tolerance();
-    let near = CORNER_FOOT * tol;
+    let near = SLIVER_END * tol;
     r > tol
         && feet.iter().any(|f| {
             let lp = &shape.loops()[f.loop_index];

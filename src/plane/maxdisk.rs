@@ -167,18 +167,7 @@ impl<'s> DiskFinder<'s> {
     pub fn boundary_point(&self, at: ElementRef, s: f64) -> (Point, Point) {
         let e = self.shape.loops()[at.loop_index].element(at.element);
         let p = e.point_at(s.clamp(0.0, 1.0));
-        let tangent = match e {
-            Element::Segment(g) => (g.b - g.a).unit(),
-            Element::Arc(a) => {
-                let t = (p - a.center).perp().unit();
-                if a.is_ccw() {
-                    t
-                } else {
-                    -t
-                }
-            }
-        };
-        (p, tangent.perp())
+        (p, e.left_normal_at(p))
     }
 
     /// The maximal disk touching element `at` at arc-length fraction `s`

@@ -158,6 +158,11 @@ impl ChainParts {
 /// tips 2–8·10^-5 long whose boundary lies 1–5 tolerances from the cut.
 pub(crate) const HUGGED_TIP: f64 = 16.0;
 
+/// A chain end this many tolerances (in length) past a vertex is at the
+/// vertex: the base cases move such ends back to it, and the divide step
+/// makes no cut with a footpoint this close to a convex corner.
+pub(crate) const SLIVER_END: f64 = 4.0;
+
 /// The dividing disk (an index into `cuts`) of a subshape cut off by that
 /// one disk alone whose boundary has no convex corner and stays within
 /// `slack` (model units) of the disk's circle: the tip of a smooth lobe cut at nearly its osculating

@@ -235,50 +235,6 @@ impl BoxTree {
         best
     }
 
-    /// Every item whose key is within `slack` of the smallest key, as
-    /// `(item, key)` in increasing key order (ties by item), found
-    /// best-first like [`min_by_bound`](Self::min_by_bound).
-    /// `bound(box, cutoff)` is a lower bound on the keys of the items in
-    /// the node box, or `None` when none has a key; when it can tell cheaply
-    /// that the bound is at least `cutoff` it may return any value at or
-    /// above `cutoff` instead of computing it. `key(item)` is the item's key.
-    pub fn smallest_keys(
-        &self,
-        slack: f64,
-        bound: impl Fn(&BBox, f64) -> Option<f64>,
-        mut key: impl FnMut(usize) -> Option<f64>,
-    ) -> Vec<(usize, f64)> {
-        let mut found: Vec<(usize, f64)> = Vec::new();
-        let mut cutoff = f64::INFINITY;
-        let Some(root) = self.nodes.first().and_then(|n| bound(&n.bbox, cutoff)) else { return found };
-        let mut heap = std::collections::BinaryHeap::with_capacity(64);
-        heap.push(Pending(root, 0));
-        while let Some(Pending(b, id)) = heap.pop() {
-            if b > cutoff {
-                break;
-            }
-            let node = self.nodes[id as usize];
-            if node.leaf {
-                for k in node.start as usize..node.end as usize {
-                    let i = self.ids[k] as usize;
-                    if let Some(v) = key(i).filter(|&v| v <= cutoff) {
-                        found.push((i, v));
-                        cutoff = cutoff.min(v + slack);
-                    }
-                }
-            } else {
-                for c in [node.start, node.end] {
-                    if let Some(b) = bound(&self.nodes[c as usize].bbox, cutoff).filter(|&b| b <= cutoff) {
-                        heap.push(Pending(b, c));
-                    }
-                }
-            }
-        }
-        found.retain(|&(_, v)| v <= cutoff);
-        found.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
-        found
-    }
-
     /// The item with the smallest `hit` key among those whose boxes meet the
     /// rightward ray from `p` (the half-line y = p.y, x ≥ p.x). `hit` returns
     /// `(x, tie_break)` of the item's first crossing with the ray, or `None`;
@@ -347,15 +303,6 @@ mod tests {
             let want = (0..boxes.len()).map(|i| boxes[i].center().dist(q)).fold(f64::INFINITY, f64::min);
             assert_eq!(got.map(|g| g.1), Some(want));
             assert!(calls < 200, "{calls} keys computed: the bounds should prune");
-            // All keys within a slack of the smallest, in order.
-            let slack = 3.0;
-            let near = tree.smallest_keys(slack, |b, _| to_box(b), |i| Some(boxes[i].center().dist(q)));
-            let mut want: Vec<(usize, f64)> = (0..boxes.len())
-                .map(|i| (i, boxes[i].center().dist(q)))
-                .filter(|&(_, d)| d <= near[0].1 + slack)
-                .collect();
-            want.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
-            assert_eq!(near, want);
         }
     }
 }

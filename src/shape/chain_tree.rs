@@ -52,6 +52,14 @@ struct Node {
     right: u32,
 }
 
+impl Node {
+    /// The elements of the run.
+    fn elements(&self) -> impl Iterator<Item = ElementRef> {
+        let loop_index = self.lp as usize;
+        (self.lo as usize..self.hi as usize).map(move |element| ElementRef { loop_index, element })
+    }
+}
+
 /// A box with sides along a unit axis `u` and its normal: the points `x`
 /// with `u·x` in `[lo.x, hi.x]` and `u.perp()·x` in `[lo.y, hi.y]`.
 #[derive(Debug, Clone, Copy)]
@@ -257,10 +265,8 @@ impl ChainTree {
             }
             let n = self.nodes[id as usize];
             if n.left == u32::MAX {
-                let lp = &loops[n.lp as usize];
-                for i in n.lo as usize..n.hi as usize {
-                    let d = lp.element(i).closest_point(p).0;
-                    let r = ElementRef { loop_index: n.lp as usize, element: i };
+                for r in n.elements() {
+                    let d = loops[r.loop_index].element(r.element).closest_point(p).0;
                     if best.is_none_or(|(br, bd)| d < bd || (d == bd && r < br)) {
                         best = Some((r, d));
                     }
@@ -312,8 +318,7 @@ impl ChainTree {
             }
             let n = self.nodes[id as usize];
             if n.left == u32::MAX {
-                for i in n.lo as usize..n.hi as usize {
-                    let r = ElementRef { loop_index: n.lp as usize, element: i };
+                for r in n.elements() {
                     if let Some(v) = key(r).filter(|&v| v <= cutoff) {
                         found.push((r, v));
                         cutoff = cutoff.min(v + slack);
