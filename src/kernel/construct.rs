@@ -21,6 +21,19 @@ pub fn line_line(p: Point, u: Point, q: Point, v: Point) -> Option<(Point, f64, 
     Some((p + u * s, s, t))
 }
 
+/// The circle through three points (centre, radius); `None` when they are
+/// collinear within rounding (the centre would be meaningless).
+pub fn circumcircle(a: Point, b: Point, c: Point) -> Option<(Point, f64)> {
+    let (ab, ac) = (b - a, c - a);
+    let d = 2.0 * ab.cross(ac);
+    if d.abs() <= f64::EPSILON * (ab.norm2() + ac.norm2()) {
+        return None;
+    }
+    let (l1, l2) = (ab.norm2(), ac.norm2());
+    let o = a + Point::new(ac.y * l1 - ab.y * l2, ab.x * l2 - ac.x * l1) * (1.0 / d);
+    Some((o, o.dist(a)))
+}
+
 /// Intersection points of the line `p + s·u` with the circle (`c`, `r`), as
 /// line parameters `s` in increasing order: zero, one (tangent within
 /// rounding) or two.

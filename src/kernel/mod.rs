@@ -12,11 +12,16 @@
 //!   sign is the predicate recomputed exactly with GMP rationals. Its answers
 //!   are exact for the `f64` inputs it is given.
 //!
+//! The medial-axis algorithms ask more than signs: [`AxisKernel`] (in
+//! [`axis_kernel`]) adds the constructions and tolerance decisions they
+//! need, with `f64` provided methods, and both kernels implement it.
+//!
 //! This mirrors the CGAL traits design (predicates separate from
 //! constructions, filtered = interval first, exact on doubt) without the
 //! template parameters.
 
 pub mod apollonius;
+pub mod axis_kernel;
 mod bbox;
 pub mod bisector;
 pub mod construct;
@@ -24,6 +29,7 @@ mod exact;
 pub mod growing_disk;
 mod point;
 
+pub use axis_kernel::{AxisKernel, Contact};
 pub use bbox::BBox;
 pub use point::Point;
 

@@ -31,10 +31,10 @@
 use super::axis::Primitive;
 use super::maxdisk::DiskFinder;
 use super::subshape::{hugged_disk, BoundaryPos, ChainParts, Cut, Piece, Subshape, HUGGED_TIP, SLIVER_END};
-use crate::kernel::apollonius::{tangent_disks, Site};
+use crate::kernel::apollonius::Site;
 use crate::kernel::construct::unwrap_near;
 use crate::kernel::growing_disk::GrowingDisk;
-use crate::kernel::Point;
+use crate::kernel::{AxisKernel, Contact, Point};
 use crate::shape::{Element, ElementRef, JointKind, Shape2d};
 use std::f64::consts::TAU;
 
@@ -258,12 +258,12 @@ fn merge_touching_chains(shape: &Shape2d, pieces: Vec<Piece>) -> Vec<Piece> {
 /// auxiliary arcs refer to them); `tol` is the contact tolerance.
 /// `finder` is the whole shape's maximal-disk index: branch points are
 /// also checked to be empty for the whole shape.
-pub fn solve(
+pub fn solve<K: AxisKernel>(
     shape: &Shape2d,
     s: &Subshape,
     cuts: &[Cut],
     tol: f64,
-    finder: &DiskFinder,
+    finder: &DiskFinder<K>,
 ) -> Result<LocalAxis, BaseCaseError> {
     if let Some(disk) = hugged_disk(shape, s, cuts, HUGGED_TIP * tol) {
         // The tip of a lobe cut at nearly its osculating circle: its true
@@ -277,7 +277,7 @@ pub fn solve(
             edges: Vec::new(),
         });
     }
-    let touch = Builder::touch_tol(shape, tol);
+    let touch = Builder::<K>::touch_tol(shape, tol);
     let mut b = Builder { shape, tol, touch, sites: Vec::new(), events: Vec::new(), aux: Vec::new(), finder };
     b.collect_sites(s, cuts);
     if b.sites.is_empty() {
@@ -340,7 +340,7 @@ impl AuxArc {
     }
 }
 
-struct Builder<'a> {
+struct Builder<'a, K: AxisKernel> {
     shape: &'a Shape2d,
     tol: f64,
     /// Footpoint tolerance of constructed disks ([`Builder::touch_tol`]).
@@ -348,15 +348,24 @@ struct Builder<'a> {
     sites: Vec<LocalSite>,
     events: Vec<Event>,
     /// The whole shape's index, for checking branch points.
-    finder: &'a DiskFinder<'a>,
+    finder: &'a DiskFinder<'a, K>,
     /// Each auxiliary arc: its disk, the index of the site after it, and
     /// the arc itself (centre, radius, start and end point, counter-clockwise).
     aux: Vec<(usize, usize, AuxArc)>,
 }
 
-impl Builder<'_> {
+impl<K: AxisKernel> Builder<'_, K> {
     fn n(&self) -> usize {
         self.sites.len()
+    }
+
+    fn k(&self) -> &K {
+        self.finder.kernel()
+    }
+
+    /// How the circle (`c`, `r`) meets site `i`'s piece, within `tol`.
+    fn contact(&self, i: usize, c: Point, r: f64, tol: f64) -> Contact {
+        self.k().contact(self.distance(i, c).0, r, tol)
     }
 
     fn push_site(&mut self, prim: Primitive, site: Site, u0: f64, u1: f64) {
@@ -615,7 +624,7 @@ impl Builder<'_> {
                 }
             }
             let (d, u) = self.distance(i, c);
-            if (d - r).abs() <= self.touch {
+            if self.k().contact(d, r, self.touch) == Contact::Touching {
                 if let Site::Point(q) = self.sites[i].site {
                     // A disk through a reflex vertex from outside its fan
                     // (in this subshape) touches the element beside it.
@@ -746,7 +755,7 @@ impl Builder<'_> {
             // The piece's ends are boundary points: always safe contacts.
             for q in [self.point_of(i, s.u0), self.point_of(i, s.u1)] {
                 if q.dist(p) > self.tol {
-                    if let Some(t) = g.through_point(q).filter(|&t| t > t_min) {
+                    if let Some(t) = self.k().through_point(&g, q).filter(|&t| t > t_min) {
                         best = best.min(t);
                     }
                 }
@@ -754,7 +763,7 @@ impl Builder<'_> {
             if let Site::Point(_) = s.site {
                 continue;
             }
-            if let Some(t) = g.touch_site(&s.site).filter(|&t| t > t_min) {
+            if let Some(t) = self.k().touch_site(&g, &s.site).filter(|&t| t > t_min) {
                 let c = g.center(t);
                 let u = self.param(i, c, t);
                 let slack = match s.site {
@@ -868,7 +877,7 @@ impl Builder<'_> {
         }
         (0..=8).all(|k| {
             let w = w0 + (w1 - w0) * k as f64 / 8.0;
-            (c.dist(self.point_of(i, self.u_at(i, w))) - r).abs() <= 4.0 * self.tol
+            self.k().contact(c.dist(self.point_of(i, self.u_at(i, w))), r, 4.0 * self.tol) == Contact::Touching
         })
     }
 
@@ -1056,7 +1065,7 @@ impl Builder<'_> {
             if whole && (o_end + 1.0 < x1 - CONTACT_SLACK_CAP || o_start > y2 + CONTACT_SLACK_CAP) {
                 continue;
             }
-            for (c, r) in tangent_disks([self.sites[s1].site, self.sites[s2].site, self.sites[t].site]) {
+            for (c, r) in self.k().tritangent_disks([self.sites[s1].site, self.sites[s2].site, self.sites[t].site]) {
                 if r <= self.tol || !c.is_finite() {
                     continue;
                 }
@@ -1081,7 +1090,7 @@ impl Builder<'_> {
                 }
                 // Touching all three: the construction is ill-conditioned
                 // for nearly parallel lines, where a root can miss a site.
-                if [s1, s2, t].iter().any(|&i| (self.distance(i, c).0 - r).abs() > CONTACT_SLACK * self.tol) {
+                if [s1, s2, t].iter().any(|&i| self.contact(i, c, r, CONTACT_SLACK * self.tol) != Contact::Touching) {
                     continue;
                 }
                 candidates.push((o1, t, c, r));
@@ -1093,8 +1102,11 @@ impl Builder<'_> {
             // Empty: no site closer than the radius, inside the subshape,
             // and for the whole shape (a subshape's own primitives do not
             // see past its auxiliary arcs).
-            !(0..self.n()).any(|i| self.distance(i, c).0 < r - self.tol)
-                && !self.finder.nearest(c).is_some_and(|(_, dist)| dist < r - 4.0 * self.tol)
+            !(0..self.n()).any(|i| self.contact(i, c, r, self.tol) == Contact::Overlapping)
+                && !self
+                    .finder
+                    .nearest(c)
+                    .is_some_and(|(_, dist)| self.k().contact(dist, r, 4.0 * self.tol) == Contact::Overlapping)
         })?;
         let key = |i: usize| self.key(i, self.param(i, c, r), r);
         let raw = [key(s1), key(s2), key(t)];

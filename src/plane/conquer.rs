@@ -12,7 +12,7 @@ use super::base_case::{self, BaseCaseError, EventKind, LocalAxis};
 use super::divide::{decompose_in, divide_into, leaf_size, Decomposition};
 use super::subshape::{Cut, Subshape};
 use super::DiskFinder;
-use crate::kernel::Point;
+use crate::kernel::{AxisKernel, Contact, FilteredKernel, Point};
 use crate::shape::{JointKind, Shape2d};
 use rayon::prelude::*;
 
@@ -99,10 +99,21 @@ impl From<BaseCaseError> for AxisError {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn medial_axis(shape: &Shape2d, opts: &AxisOptions) -> Result<MedialAxis2d, AxisError> {
+    medial_axis_with(shape, opts, FilteredKernel)
+}
+
+/// [`medial_axis`] with every geometric question answered by `kernel`
+/// (constructions, contact and emptiness decisions, orientations): the
+/// algorithm is the same for every [`AxisKernel`].
+pub fn medial_axis_with<K: AxisKernel>(
+    shape: &Shape2d,
+    opts: &AxisOptions,
+    kernel: K,
+) -> Result<MedialAxis2d, AxisError> {
     if shape.loops().len() > 1 {
         return Err(AxisError::HolesUnsupported);
     }
-    let finder = DiskFinder::new(shape);
+    let finder = DiskFinder::with_kernel(shape, kernel);
     // The divide step is randomized: a numerical breakdown in one
     // decomposition is retried with other random choices (derived from the
     // seed, so the result stays deterministic); the first error is
@@ -139,17 +150,20 @@ const EDGE_CHECKS: [f64; 3] = [1.0 / 64.0, 0.5, 63.0 / 64.0];
 /// primitives of the edge (distance to the primitive itself): a wrong
 /// pair of primitives on an edge, or a node placed off its edges, shows up
 /// here and is reported, not returned.
-fn check_disks(finder: &DiskFinder, axis: &MedialAxis2d) -> Result<(), AxisError> {
+fn check_disks<K: AxisKernel>(finder: &DiskFinder<K>, axis: &MedialAxis2d) -> Result<(), AxisError> {
     let shape = finder.shape();
     let slack = 64.0 * shape.tolerance();
-    let bad = |c: Point, r: f64| finder.nearest(c).is_none_or(|(_, d)| (d - r).abs() > slack);
+    let k = finder.kernel();
+    let bad = |c: Point, r: f64| finder.nearest(c).is_none_or(|(_, d)| k.contact(d, r, slack) != Contact::Touching);
     if let Some(n) = axis.nodes.par_iter().find_any(|n| bad(n.point, n.radius)) {
         return Err(AxisError::Numerical(n.point, "a node's disk is not maximal"));
     }
     // Every disk of an edge, its end nodes' included, touches both of the
     // edge's primitives (a node placed where only two of a branch's three
     // primitives are touched is a maximal disk, but not that branch).
-    let apart = |e: &AxisEdge, c: Point, r: f64| e.sites.iter().any(|p| (p.distance(shape, c) - r).abs() > slack);
+    let apart = |e: &AxisEdge, c: Point, r: f64| {
+        e.sites.iter().any(|p| k.contact(p.distance(shape, c), r, slack) != Contact::Touching)
+    };
     let astray = axis.edges.par_iter().find_map_any(|e| {
         [e.from, e.to].into_iter().map(|v| &axis.nodes[v]).find(|n| apart(e, n.point, n.radius)).map(|n| n.point)
     });
@@ -180,7 +194,11 @@ const REFINES: usize = 3;
 /// [`REFINES`] rounds the first breakdown is reported. New cuts are
 /// appended to `d.cuts`. The order of the result depends only on `d` and
 /// `seed`.
-pub fn solve_leaves(finder: &DiskFinder, d: &mut Decomposition, seed: u64) -> Result<Vec<LocalAxis>, AxisError> {
+pub fn solve_leaves<K: AxisKernel>(
+    finder: &DiskFinder<K>,
+    d: &mut Decomposition,
+    seed: u64,
+) -> Result<Vec<LocalAxis>, AxisError> {
     let shape = finder.shape();
     let tol = shape.tolerance();
     let mut pending: Vec<Subshape> = std::mem::take(&mut d.leaves);
@@ -217,7 +235,11 @@ pub fn solve_leaves(finder: &DiskFinder, d: &mut Decomposition, seed: u64) -> Re
 
 /// Glues the axes of the subshapes (`locals`) at the centres of the
 /// dividing disks `cuts`; `finder` indexes the shape they were made of.
-pub fn glue(finder: &DiskFinder, cuts: &[Cut], locals: &[LocalAxis]) -> Result<MedialAxis2d, AxisError> {
+pub fn glue<K: AxisKernel>(
+    finder: &DiskFinder<K>,
+    cuts: &[Cut],
+    locals: &[LocalAxis],
+) -> Result<MedialAxis2d, AxisError> {
     let shape = finder.shape();
     let tol = shape.tolerance();
     let mut nodes: Vec<AxisNode> = Vec::new();
@@ -268,7 +290,7 @@ pub fn glue(finder: &DiskFinder, cuts: &[Cut], locals: &[LocalAxis]) -> Result<M
     classify(&mut axis, tol);
     merge_coinciding_branches(shape, &mut axis, SAME_DISK * tol);
     classify(&mut axis, tol);
-    polish_branches(shape, &mut axis);
+    polish_branches(finder.kernel(), shape, &mut axis);
     check_tree(&axis)?;
     Ok(axis)
 }
@@ -537,8 +559,7 @@ fn reversed(e: AxisEdge) -> AxisEdge {
 /// when the two agree to within 1e-6 of the disk's radius and the new disk
 /// fits every primitive of the node (otherwise the triples are
 /// ill-conditioned and the slide's disk stays).
-fn polish_branches(shape: &Shape2d, axis: &mut MedialAxis2d) {
-    use crate::kernel::apollonius::tangent_disks;
+fn polish_branches(kernel: &impl AxisKernel, shape: &Shape2d, axis: &mut MedialAxis2d) {
     let prims = primitives_at(axis, |_| true, |v| v);
     for (node, ps) in axis.nodes.iter_mut().zip(&prims) {
         if node.kind != NodeKind::Branch || ps.len() < 3 {
@@ -555,7 +576,7 @@ fn polish_branches(shape: &Shape2d, axis: &mut MedialAxis2d) {
         for i in 0..sites.len() {
             for j in i + 1..sites.len() {
                 for k in j + 1..sites.len() {
-                    for (c, r) in tangent_disks([sites[i], sites[j], sites[k]]) {
+                    for (c, r) in kernel.tritangent_disks([sites[i], sites[j], sites[k]]) {
                         let m = misfit(c, r);
                         if near(c, r) && best.is_none_or(|b| m < b.0) {
                             best = Some((m, c, r));

@@ -23,7 +23,7 @@
 use super::maxdisk::{DiskFinder, Footpoint, MaxDisk};
 use super::maxdisk_star::slide_to_third;
 use super::subshape::{hugged_disk, BoundaryPos, ChainParts, Cut, Piece, Subshape, HUGGED_TIP, SLIVER_END};
-use crate::kernel::Point;
+use crate::kernel::{AxisKernel, Contact, Point};
 use crate::shape::samples::Mix;
 use crate::shape::{ElementRef, JointKind, Shape2d};
 
@@ -132,8 +132,8 @@ fn foot_at_convex_corner(shape: &Shape2d, feet: &[BoundaryPos], r: f64) -> bool 
 /// Cuts `s` with the maximal disk `d` grown at `pos` (fraction range
 /// `lo..hi` of its part), or with what replaces it: the leaf arc's circle,
 /// or `maxdisk*` after a redundant cut. `None` when the disk does not divide.
-fn cut_with(
-    finder: &DiskFinder,
+fn cut_with<K: AxisKernel>(
+    finder: &DiskFinder<K>,
     s: &Subshape,
     parts: usize,
     disk: usize,
@@ -186,7 +186,7 @@ fn cut_with(
     let (c, r) = slide_to_third(finder, &d.footpoints[0], &d.footpoints[1], d.center, d.radius, junction)?;
     // Only an empty disk that touches the boundary can cut.
     let touch = finder.touching(c, r);
-    let empty = finder.nearest(c).is_some_and(|(_, dist)| (dist - r).abs() <= tol);
+    let empty = finder.nearest(c).is_some_and(|(_, dist)| finder.kernel().contact(dist, r, tol) == Contact::Touching);
     if touch.len() < 2 || r <= tol || !empty {
         return None;
     }
@@ -223,12 +223,18 @@ fn reflex_points(shape: &Shape2d, s: &Subshape) -> Vec<BoundaryPos> {
 /// and no boundary at all. That disk touches three (or more) parts and
 /// cuts the cluster into smaller pieces. `None` when no such circle is
 /// found (the subshape then stays whole for the base-case solver).
-fn cluster_cut(finder: &DiskFinder, s: &Subshape, points: &[BoundaryPos], disk: usize) -> Option<(Cut, Vec<Subshape>)> {
+fn cluster_cut<K: AxisKernel>(
+    finder: &DiskFinder<K>,
+    s: &Subshape,
+    points: &[BoundaryPos],
+    disk: usize,
+) -> Option<(Cut, Vec<Subshape>)> {
     let shape = finder.shape();
     if points.len() < 3 {
         return None;
     }
     let tol = finder.contact_tolerance();
+    let kernel = finder.kernel();
     let pts: Vec<Point> = points.iter().map(|p| p.point(shape)).collect();
     for i in 0..pts.len() {
         let (p, q) = (pts[i], pts[(i + 1) % pts.len()]);
@@ -236,11 +242,11 @@ fn cluster_cut(finder: &DiskFinder, s: &Subshape, points: &[BoundaryPos], disk: 
             if k == i || k == (i + 1) % pts.len() {
                 continue;
             }
-            let Some((c, rad)) = circumcircle(p, q, r) else { continue };
-            if pts.iter().any(|&x| x.dist(c) < rad - tol) {
+            let Some((c, rad)) = kernel.circumcircle(p, q, r) else { continue };
+            if pts.iter().any(|&x| kernel.contact(x.dist(c), rad, tol) == Contact::Overlapping) {
                 continue;
             }
-            if finder.nearest(c).is_none_or(|(_, d)| d < rad - tol) {
+            if finder.nearest(c).is_none_or(|(_, d)| kernel.contact(d, rad, tol) == Contact::Overlapping) {
                 continue;
             }
             let feet: Vec<BoundaryPos> = finder.touching(c, rad).iter().map(|f| position(shape, f)).collect();
@@ -255,18 +261,6 @@ fn cluster_cut(finder: &DiskFinder, s: &Subshape, points: &[BoundaryPos], disk: 
     None
 }
 
-/// The circle through three points, if they are not collinear.
-fn circumcircle(a: Point, b: Point, c: Point) -> Option<(Point, f64)> {
-    let (ab, ac) = (b - a, c - a);
-    let d = 2.0 * ab.cross(ac);
-    if d.abs() <= f64::EPSILON * (ab.norm2() + ac.norm2()) {
-        return None;
-    }
-    let (l1, l2) = (ab.norm2(), ac.norm2());
-    let o = a + Point::new(ac.y * l1 - ab.y * l2, ab.x * l2 - ac.x * l1) * (1.0 / d);
-    Some((o, o.dist(a)))
-}
-
 /// [`decompose`] with leaves of up to `leaf_parts` original parts.
 pub fn decompose_with(shape: &Shape2d, seed: u64, leaf_parts: usize) -> Decomposition {
     decompose_in(&DiskFinder::new(shape), seed, leaf_parts)
@@ -274,7 +268,7 @@ pub fn decompose_with(shape: &Shape2d, seed: u64, leaf_parts: usize) -> Decompos
 
 /// [`decompose_with`] on the maximal disks of an existing `finder` (its
 /// index is built once for every decomposition of the same shape).
-pub fn decompose_in(finder: &DiskFinder, seed: u64, leaf_parts: usize) -> Decomposition {
+pub fn decompose_in<K: AxisKernel>(finder: &DiskFinder<K>, seed: u64, leaf_parts: usize) -> Decomposition {
     let mut out = Decomposition::default();
     divide_into(finder, &mut out, vec![Subshape::whole_loop(finder.shape(), 0)], seed, leaf_parts);
     out
@@ -284,7 +278,13 @@ pub fn decompose_in(finder: &DiskFinder, seed: u64, leaf_parts: usize) -> Decomp
 /// whole loop) until every piece is a leaf of up to `leaf_parts` original
 /// parts or stuck, appending the new cuts, leaves and stuck subshapes to
 /// `out`. A root that is already small enough is a leaf as it is.
-pub fn divide_into(finder: &DiskFinder, out: &mut Decomposition, roots: Vec<Subshape>, seed: u64, leaf_parts: usize) {
+pub fn divide_into<K: AxisKernel>(
+    finder: &DiskFinder<K>,
+    out: &mut Decomposition,
+    roots: Vec<Subshape>,
+    seed: u64,
+    leaf_parts: usize,
+) {
     let shape = finder.shape();
     let mut todo = roots;
     // Depth-first with an explicit stack: cut ids depend only on the order

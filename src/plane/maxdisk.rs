@@ -12,7 +12,7 @@
 //! index for every subshape.
 
 use crate::kernel::growing_disk::GrowingDisk;
-use crate::kernel::Point;
+use crate::kernel::{AxisKernel, Contact, FilteredKernel, Point};
 use crate::shape::{ChainTree, Element, ElementIndex, ElementRef, JointKind, Shape2d};
 
 /// Where a maximal disk touches the boundary.
@@ -48,8 +48,12 @@ pub struct MaxDisk {
 
 /// Computes maximal disks of one shape; the element index is built once
 /// (O(n log n)) and shared by every query. `Sync`: query from many threads.
-pub struct DiskFinder<'s> {
+/// Every construction and contact decision goes through the kernel `K`,
+/// which the algorithms built on the finder reach through
+/// [`DiskFinder::kernel`].
+pub struct DiskFinder<'s, K: AxisKernel = FilteredKernel> {
     shape: &'s Shape2d,
+    kernel: K,
     index: ElementIndex,
     /// Runs of consecutive elements, for nearest-element queries (whose
     /// points are mostly centres of maximal disks, where element boxes
@@ -60,9 +64,23 @@ pub struct DiskFinder<'s> {
 }
 
 impl<'s> DiskFinder<'s> {
-    /// Indexes the elements of `shape`.
+    /// Indexes the elements of `shape`, with the default kernel (exact
+    /// signs, `f64` constructions).
     pub fn new(shape: &'s Shape2d) -> DiskFinder<'s> {
-        DiskFinder { shape, index: ElementIndex::new(shape.loops()), chains: ChainTree::new(shape.loops()) }
+        DiskFinder::with_kernel(shape, FilteredKernel)
+    }
+}
+
+impl<'s, K: AxisKernel> DiskFinder<'s, K> {
+    /// Indexes the elements of `shape`; `kernel` answers every geometric
+    /// question of the finder and of the algorithms that use it.
+    pub fn with_kernel(shape: &'s Shape2d, kernel: K) -> DiskFinder<'s, K> {
+        DiskFinder { shape, kernel, index: ElementIndex::new(shape.loops()), chains: ChainTree::new(shape.loops()) }
+    }
+
+    /// The kernel answering this finder's questions.
+    pub fn kernel(&self) -> &K {
+        &self.kernel
     }
 
     /// Contacts closer than this to the disk's circle count as footpoints:
@@ -92,7 +110,7 @@ impl<'s> DiskFinder<'s> {
             if self.index.tree.item_box(gid).distance_to(c) <= r + tol {
                 let e = self.element(gid).1;
                 let (d, q) = e.closest_point(c);
-                if d <= r + tol && seen_from_inside(&e, q, c, r, tol) {
+                if self.kernel.contact(d, r, tol) != Contact::Apart && seen_from_inside(&e, q, c, r, tol) {
                     near.push((gid, q));
                 }
             }
@@ -202,12 +220,13 @@ impl<'s> DiskFinder<'s> {
         // The first contact of each element, as a key for the tree search.
         let contact = |gid: usize| {
             let (_, e) = self.element(gid);
+            let k = &self.kernel;
             if gid == own {
                 own_contact(&g, &e)
             } else {
                 match shares_p {
-                    Some((other, smooth)) if other == gid => neighbour_touch(&g, &e, t_min, tol, smooth),
-                    _ => first_touch(&g, &e, t_min),
+                    Some((other, smooth)) if other == gid => neighbour_touch(k, &g, &e, t_min, tol, smooth),
+                    _ => first_touch(k, &g, &e, t_min),
                 }
             }
         };
@@ -272,8 +291,15 @@ fn own_contact(g: &GrowingDisk, e: &Element) -> Option<f64> {
 /// than the disk enters it right at the vertex once the disk outgrows the
 /// arc's radius; at a reflex joint the element leaves the disk there and
 /// can only come back through its far end or a tangency elsewhere.
-fn neighbour_touch(g: &GrowingDisk, e: &Element, t_min: f64, tol: f64, smooth: bool) -> Option<f64> {
-    let mut best = touches(g, e, t_min).filter(|&(_, q)| q.dist(g.p) > tol).map(|(t, _)| t).fold(None, min_some);
+fn neighbour_touch(
+    k: &impl AxisKernel,
+    g: &GrowingDisk,
+    e: &Element,
+    t_min: f64,
+    tol: f64,
+    smooth: bool,
+) -> Option<f64> {
+    let mut best = touches(k, g, e, t_min).filter(|&(_, q)| q.dist(g.p) > tol).map(|(t, _)| t).fold(None, min_some);
     if let (true, Element::Arc(a)) = (smooth, e) {
         if g.n.dot(a.center - g.p) > 0.0 {
             best = min_some(best, a.radius);
@@ -289,27 +315,31 @@ fn min_some(best: Option<f64>, t: f64) -> Option<f64> {
 /// The first radius above `t_min` at which the growing disk touches `e`:
 /// at an end point, or where its circle is tangent to the element's
 /// supporting line or circle at a point of the element.
-fn first_touch(g: &GrowingDisk, e: &Element, t_min: f64) -> Option<f64> {
-    touches(g, e, t_min).map(|(t, _)| t).fold(None, min_some)
+fn first_touch(k: &impl AxisKernel, g: &GrowingDisk, e: &Element, t_min: f64) -> Option<f64> {
+    touches(k, g, e, t_min).map(|(t, _)| t).fold(None, min_some)
 }
 
 /// Every radius above `t_min` at which the growing disk's circle meets `e`
 /// at an end point or is tangent to it at an inner point, with that point.
-fn touches(g: &GrowingDisk, e: &Element, t_min: f64) -> impl Iterator<Item = (f64, Point)> {
+fn touches(k: &impl AxisKernel, g: &GrowingDisk, e: &Element, t_min: f64) -> impl Iterator<Item = (f64, Point)> {
     let mut out = [None; 4];
-    out[0] = g.through_point(e.start()).map(|t| (t, e.start()));
-    out[1] = g.through_point(e.end()).map(|t| (t, e.end()));
+    out[0] = k.through_point(g, e.start()).map(|t| (t, e.start()));
+    out[1] = k.through_point(g, e.end()).map(|t| (t, e.end()));
     match *e {
         Element::Segment(s) => {
             let d = s.b - s.a;
-            for (slot, (t, q)) in out[2..].iter_mut().zip(g.tangent_to_line(s.a, d.perp().unit())) {
+            for (slot, (t, q)) in
+                out[2..].iter_mut().zip(k.tangent_to_line(g, s.a, d.perp().unit()).into_iter().flatten())
+            {
                 if (0.0..=1.0).contains(&(d.dot(q - s.a) / d.norm2())) {
                     *slot = Some((t, q));
                 }
             }
         }
         Element::Arc(a) => {
-            for (slot, (t, q)) in out[2..].iter_mut().zip(g.tangent_to_circle(a.center, a.radius)) {
+            for (slot, (t, q)) in
+                out[2..].iter_mut().zip(k.tangent_to_circle(g, a.center, a.radius).into_iter().flatten())
+            {
                 if a.spans_direction(q) {
                     *slot = Some((t, q));
                 }

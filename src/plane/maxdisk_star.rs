@@ -20,15 +20,14 @@
 
 use super::axis::Primitive;
 use super::maxdisk::{DiskFinder, Footpoint};
-use crate::kernel::apollonius::{tangent_disks, Site};
-use crate::kernel::bisector::bisector_point;
+use crate::kernel::apollonius::Site;
 use crate::kernel::construct::unwrap_near;
-use crate::kernel::Point;
+use crate::kernel::{AxisKernel, Contact, Point};
 use crate::shape::{Element, ElementRef, JointKind};
 
 /// What a disk touching `f` sees there: the element's line or circle, or a
 /// point at a reflex vertex.
-pub fn site_of(finder: &DiskFinder, f: &Footpoint) -> Site {
+pub fn site_of<K: AxisKernel>(finder: &DiskFinder<K>, f: &Footpoint) -> Site {
     let shape = finder.shape();
     let lp = &shape.loops()[f.element.loop_index];
     let e = lp.element(f.element.element);
@@ -72,14 +71,15 @@ fn param_on(a: &Site, c: Point, touch: Point) -> f64 {
 /// element's end (where the pair defining the axis changes). Returns its
 /// centre and radius, or `None` if the bisector ends (no tangent disk)
 /// first.
-pub fn slide_to_third(
-    finder: &DiskFinder,
+pub fn slide_to_third<K: AxisKernel>(
+    finder: &DiskFinder<K>,
     fa: &Footpoint,
     fb: &Footpoint,
     c: Point,
     r: f64,
     junction: Point,
 ) -> Option<(Point, f64)> {
+    let k = finder.kernel();
     let (sa, sb) = (site_of(finder, fa), site_of(finder, fb));
     let u0 = param_on(&sa, c, fa.point);
     let empty_tol = 1e-12 * finder.shape().bbox().diagonal();
@@ -90,10 +90,10 @@ pub fn slide_to_third(
     // A disk counts while it is empty and still touches both elements
     // (not only their supporting lines or circles).
     let empty = |u: f64| -> Option<(Point, f64, bool)> {
-        let (c, r) = bisector_point(&sa, &sb, u)?;
+        let (c, r) = k.bisector_point(&sa, &sb, u)?;
         let (_, d) = finder.nearest(c)?;
         let touches = on(&ea, sa.contact(c, r)) && on(&eb, sb.contact(c, r));
-        Some((c, r, d >= r - empty_tol && touches))
+        Some((c, r, k.contact(d, r, empty_tol) != Contact::Overlapping && touches))
     };
     // The direction that moves the centre away from the junction.
     let h0 = match sa {
@@ -139,7 +139,7 @@ pub fn slide_to_third(
                     _ => hi = mid,
                 }
             }
-            return bisector_point(&sa, &sb, lo);
+            return k.bisector_point(&sa, &sb, lo);
         }
         lo = u;
         (prev_c, prev_r) = (cc, rr);
@@ -171,14 +171,15 @@ const JUMPS: usize = 24;
 // here), so it is taken for a read the optimiser hoisted out of a branch;
 // in its own frame the report goes away. Keep the memcheck runs green.
 #[inline(never)]
-fn jump_to_third(
-    finder: &DiskFinder,
+fn jump_to_third<K: AxisKernel>(
+    finder: &DiskFinder<K>,
     [fa, fb]: [&Footpoint; 2],
     [sa, sb]: [&Site; 2],
     (c0, r0): (Point, f64),
     u0: f64,
     dir: f64,
 ) -> Option<(Point, f64)> {
+    let k = finder.kernel();
     let shape = finder.shape();
     let tol = finder.contact_tolerance();
     let element = |r: ElementRef| shape.loops()[r.loop_index].element(r.element);
@@ -194,7 +195,7 @@ fn jump_to_third(
     // A disk (c, r) counts if it lies on this branch of the bisector.
     let on_branch = |c: Point, r: f64| -> Option<f64> {
         let u = param_on(sa, c, sa.contact(c, r));
-        let (cb, rb) = bisector_point(sa, sb, u)?;
+        let (cb, rb) = k.bisector_point(sa, sb, u)?;
         (cb.dist(c) <= 16.0 * tol && (rb - r).abs() <= 16.0 * tol).then_some(u)
     };
     // Keeps the disk (c, r) in `best` if it comes first, before `bound`
@@ -214,7 +215,7 @@ fn jump_to_third(
     // (a maximal disk grown at a reflex vertex touches at the end of its
     // fan) ends the slide where it starts: the defining pair changes there.
     let scale = if angular { 1.0 } else { r0 };
-    let (c1, r1) = bisector_point(sa, sb, u0 + dir * 1e-6 * scale)?;
+    let (c1, r1) = k.bisector_point(sa, sb, u0 + dir * 1e-6 * scale)?;
     let mut best = (f64::INFINITY, Point::default(), 0.0);
     for &(f, s, other) in [(fa, sa, sb), (fb, sb, sa)].iter() {
         let turns = !matches!(s, Site::Line { .. });
@@ -226,7 +227,7 @@ fn jump_to_third(
                 continue;
             }
             open = true;
-            if let Some((c, r)) = bisector_point(s, other, u) {
+            if let Some((c, r)) = k.bisector_point(s, other, u) {
                 offer(&mut best, c, r, f64::INFINITY);
             }
         }
@@ -240,7 +241,7 @@ fn jump_to_third(
             return None;
         }
         let (hit, d) = finder.nearest(c)?;
-        if d >= r - tol {
+        if k.contact(d, r, tol) != Contact::Overlapping {
             // Empty; the contacts stay on their elements by construction,
             // checked again against rounding.
             return (on(&ea, sa.contact(c, r)) && on(&eb, sb.contact(c, r))).then_some((c, r));
@@ -250,7 +251,7 @@ fn jump_to_third(
         let mut moved = false;
         for s3 in [interior, Site::Point(e.start()), Site::Point(e.end())].iter() {
             let point = matches!(s3, Site::Point(_));
-            let solutions = tangent_disks([*sa, *sb, *s3]);
+            let solutions = k.tritangent_disks([*sa, *sb, *s3]);
             for &(c3, r3) in solutions.iter() {
                 if point || on(&e, s3.contact(c3, r3)) {
                     moved |= offer(&mut best, c3, r3, bound);
@@ -267,7 +268,7 @@ fn jump_to_third(
 /// The footpoint parameters on `s` (see [`param_on`]) where a contact at
 /// `f` leaves its element: the element's ends, or for a reflex vertex the
 /// normals of its two elements, which bound the vertex's fan.
-fn contact_range(finder: &DiskFinder, f: &Footpoint, s: &Site) -> [f64; 2] {
+fn contact_range<K: AxisKernel>(finder: &DiskFinder<K>, f: &Footpoint, s: &Site) -> [f64; 2] {
     let shape = finder.shape();
     let lp = &shape.loops()[f.element.loop_index];
     let e = lp.element(f.element.element);

@@ -18,7 +18,7 @@ pub mod maxdisk_star;
 pub mod subshape;
 
 pub use axis::{AxisEdge, AxisNode, MedialAxis2d, NodeKind, Primitive};
-pub use conquer::{medial_axis, AxisError, AxisOptions};
+pub use conquer::{medial_axis, medial_axis_with, AxisError, AxisOptions};
 pub use draw::AxisPicture;
 pub use maxdisk::{DiskFinder, Footpoint, MaxDisk};
 pub use subshape::{BoundaryPos, Cut, Piece, Subshape};

@@ -1,0 +1,165 @@
+//! The geometric questions the medial-axis algorithms ask, as one trait.
+//!
+//! `plane/` (maximal disks, `maxdisk*`, the base cases, polishing in the
+//! conquer step) never calls a construction or compares a gap itself: it
+//! holds an [`AxisKernel`] and asks it. A kernel with other numbers (an
+//! interval-filtered or exact one, thesis 2.2.5 and 2.5) implements these
+//! methods and the algorithms run unchanged, as CGAL's traits classes do
+//! for its algorithms.
+//!
+//! The methods come in two groups:
+//!
+//! * **Constructions** return new geometry rounded to `f64`: contact radii
+//!   of the growing disk (Algorithm 1), the disks tangent to three sites
+//!   (Apollonius), points on the bisector of two sites.
+//! * **Predicates** answer with an enum: the conic kind of a bisector, how
+//!   a disk meets a boundary primitive ([`Contact`]), and the orientation
+//!   and in-circle tests of the [`Kernel`] supertrait.
+//!
+//! The provided methods are the `f64` constructions of this module's
+//! siblings, so an implementation only overrides what it computes
+//! differently. Both [`FloatKernel`](super::FloatKernel) and
+//! [`FilteredKernel`](super::FilteredKernel) use them unchanged and differ
+//! in their orientation signs only.
+//!
+//! Tolerances are the caller's: every predicate that compares lengths takes
+//! the length tolerance (model units) it decides with, since the algorithm
+//! owns which tolerance applies where (contact, touch, emptiness). An
+//! exact kernel decides with a tolerance of zero.
+
+use super::apollonius::{self, Site};
+use super::bisector::{self, ConicKind, Sample};
+use super::growing_disk::GrowingDisk;
+use super::{construct, Kernel, Orientation, Point};
+
+/// How a disk meets a boundary primitive, decided with a length tolerance.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Contact {
+    /// The primitive stays more than the tolerance outside the circle.
+    Apart,
+    /// The primitive comes within the tolerance of the circle, from either
+    /// side: a footpoint.
+    Touching,
+    /// The primitive reaches more than the tolerance into the disk: the
+    /// disk is not empty.
+    Overlapping,
+}
+
+/// What the medial-axis algorithms ask of geometry. `Copy + Send + Sync`:
+/// kernels are stateless or hold only shared configuration, and every
+/// parallel task gets its own copy.
+pub trait AxisKernel: Kernel + Copy + Send + Sync + 'static {
+    /// Radius at which the growing disk `g` passes through `q`; `None` when
+    /// `q` lies on or behind the tangent line at `g.p`.
+    fn through_point(&self, g: &GrowingDisk, q: Point) -> Option<f64> {
+        g.through_point(q)
+    }
+
+    /// Radii at which `g`'s circle is tangent to the line through `a` with
+    /// unit normal `m`, with the tangency point: up to two, one per side.
+    fn tangent_to_line(&self, g: &GrowingDisk, a: Point, m: Point) -> [Option<(f64, Point)>; 2] {
+        let mut out = [None; 2];
+        for (slot, hit) in out.iter_mut().zip(g.tangent_to_line(a, m)) {
+            *slot = Some(hit);
+        }
+        out
+    }
+
+    /// Radii at which `g`'s circle is tangent to the circle (`o`, `r`),
+    /// externally or internally, with the tangency point: up to two.
+    fn tangent_to_circle(&self, g: &GrowingDisk, o: Point, r: f64) -> [Option<(f64, Point)>; 2] {
+        let mut out = [None; 2];
+        for (slot, hit) in out.iter_mut().zip(g.tangent_to_circle(o, r)) {
+            *slot = Some(hit);
+        }
+        out
+    }
+
+    /// Radius at which `g` touches `site` as the site's kind says.
+    fn touch_site(&self, g: &GrowingDisk, site: &Site) -> Option<f64> {
+        g.touch_site(site)
+    }
+
+    /// Every disk (centre, radius > 0) tangent to the three sites as their
+    /// kinds say, smallest radius first (thesis 2.2.3, branching points).
+    fn tritangent_disks(&self, sites: [Site; 3]) -> Vec<(Point, f64)> {
+        apollonius::tangent_disks(sites)
+    }
+
+    /// The disk tangent to `a` at footpoint parameter `u` and to `b`.
+    fn bisector_point(&self, a: &Site, b: &Site, u: f64) -> Option<(Point, f64)> {
+        bisector::bisector_point(a, b, u)
+    }
+
+    /// Samples of the bisector of `a` and `b` between two end samples, to
+    /// the chordal tolerance `tol` (model units).
+    fn sample_bisector(&self, a: &Site, b: &Site, start: Sample, end: Sample, tol: f64) -> Option<Vec<Sample>> {
+        bisector::sample_between(a, b, start, end, tol)
+    }
+
+    /// The conic the centres of disks tangent to `a` and `b` lie on.
+    fn conic_kind(&self, a: &Site, b: &Site, inside: [bool; 2]) -> ConicKind {
+        bisector::conic_kind(a, b, inside)
+    }
+
+    /// The circle through three points (centre, radius), `None` when they
+    /// are collinear: decided by [`Kernel::orientation`] first, then by the
+    /// construction's own guard against a centre lost to rounding.
+    fn circumcircle(&self, a: Point, b: Point, c: Point) -> Option<(Point, f64)> {
+        if self.orientation(a, b, c) == Orientation::Collinear {
+            return None;
+        }
+        construct::circumcircle(a, b, c)
+    }
+
+    /// How the circle of radius `radius` around a centre meets a primitive
+    /// whose distance from that centre is `distance`, with tolerance `tol`
+    /// (all model units).
+    fn contact(&self, distance: f64, radius: f64, tol: f64) -> Contact {
+        if distance < radius - tol {
+            Contact::Overlapping
+        } else if distance <= radius + tol {
+            Contact::Touching
+        } else {
+            Contact::Apart
+        }
+    }
+}
+
+impl AxisKernel for super::FloatKernel {}
+
+impl AxisKernel for super::FilteredKernel {}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kernel::FilteredKernel;
+
+    #[test]
+    fn contact_bands() {
+        let k = FilteredKernel;
+        assert_eq!(k.contact(0.5, 1.0, 0.1), Contact::Overlapping);
+        assert_eq!(k.contact(0.95, 1.0, 0.1), Contact::Touching);
+        assert_eq!(k.contact(1.1, 1.0, 0.1), Contact::Touching);
+        assert_eq!(k.contact(1.2, 1.0, 0.1), Contact::Apart);
+        // An exact kernel's tolerance of zero: only the circle itself touches.
+        assert_eq!(k.contact(1.0, 1.0, 0.0), Contact::Touching);
+        assert_eq!(k.contact(1.0 - 1e-15, 1.0, 0.0), Contact::Overlapping);
+    }
+
+    #[test]
+    fn growing_disk_contacts_match_the_constructions() {
+        let k = FilteredKernel;
+        let g = GrowingDisk { p: Point::new(0.0, 0.0), n: Point::new(0.0, 1.0) };
+        // The line y = 2 seen from below: tangent at radius 1.
+        let [a, b] = k.tangent_to_line(&g, Point::new(0.0, 2.0), Point::new(0.0, -1.0));
+        let radii: Vec<f64> = [a, b].into_iter().flatten().map(|(t, _)| t).collect();
+        assert!(radii.iter().any(|&t| (t - 1.0).abs() < 1e-15), "{radii:?}");
+        // The unit circle around (0, 3): external tangency at radius 1.
+        let [a, b] = k.tangent_to_circle(&g, Point::new(0.0, 3.0), 1.0);
+        let radii: Vec<f64> = [a, b].into_iter().flatten().map(|(t, _)| t).collect();
+        assert!(radii.iter().any(|&t| (t - 1.0).abs() < 1e-15), "{radii:?}");
+        assert_eq!(k.through_point(&g, Point::new(0.0, 4.0)), Some(2.0));
+        assert_eq!(k.through_point(&g, Point::new(0.0, -4.0)), None);
+    }
+}
