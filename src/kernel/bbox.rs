@@ -56,9 +56,14 @@ impl BBox {
 
     /// Euclidean distance from `p` to the closed box (0 inside).
     pub fn distance_to(&self, p: Point) -> f64 {
+        self.distance2_to(p).sqrt()
+    }
+
+    /// Squared distance from `p` to the box (0 inside), model units².
+    pub fn distance2_to(&self, p: Point) -> f64 {
         let dx = (self.min.x - p.x).max(p.x - self.max.x).max(0.0);
         let dy = (self.min.y - p.y).max(p.y - self.max.y).max(0.0);
-        (dx * dx + dy * dy).sqrt()
+        dx * dx + dy * dy
     }
 
     /// True when the closed boxes share at least one point.

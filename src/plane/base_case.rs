@@ -1103,10 +1103,7 @@ impl<K: AxisKernel> Builder<'_, K> {
             // and for the whole shape (a subshape's own primitives do not
             // see past its auxiliary arcs).
             !(0..self.n()).any(|i| self.contact(i, c, r, self.tol) == Contact::Overlapping)
-                && !self
-                    .finder
-                    .nearest(c)
-                    .is_some_and(|(_, dist)| self.k().contact(dist, r, 4.0 * self.tol) == Contact::Overlapping)
+                && self.finder.intruder(c, r, 4.0 * self.tol).is_none()
         })?;
         let key = |i: usize| self.key(i, self.param(i, c, r), r);
         let raw = [key(s1), key(s2), key(t)];

@@ -154,8 +154,20 @@ fn check_disks<K: AxisKernel>(finder: &DiskFinder<K>, axis: &MedialAxis2d) -> Re
     let shape = finder.shape();
     let slack = 64.0 * shape.tolerance();
     let k = finder.kernel();
-    let bad = |c: Point, r: f64| finder.nearest(c).is_none_or(|(_, d)| k.contact(d, r, slack) != Contact::Touching);
-    if let Some(n) = axis.nodes.par_iter().find_any(|n| bad(n.point, n.radius)) {
+    // Empty; that the disk touches the boundary follows from touching
+    // the primitives of its edges (checked below), and for a node without
+    // edges (a circle's centre) from its nearest element.
+    let bad = |c: Point, r: f64| finder.intruder(c, r, slack).is_some();
+    let deg = axis.degrees();
+    let untouched = |v: usize| {
+        let n = &axis.nodes[v];
+        deg[v] == 0 && finder.nearest(n.point).is_none_or(|(_, d)| k.contact(d, n.radius, slack) != Contact::Touching)
+    };
+    if let Some(n) = (0..axis.nodes.len())
+        .into_par_iter()
+        .find_any(|&v| bad(axis.nodes[v].point, axis.nodes[v].radius) || untouched(v))
+        .map(|v| &axis.nodes[v])
+    {
         return Err(AxisError::Numerical(n.point, "a node's disk is not maximal"));
     }
     // Every disk of an edge, its end nodes' included, touches both of the

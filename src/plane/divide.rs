@@ -246,7 +246,7 @@ fn cluster_cut<K: AxisKernel>(
             if pts.iter().any(|&x| kernel.contact(x.dist(c), rad, tol) == Contact::Overlapping) {
                 continue;
             }
-            if finder.nearest(c).is_none_or(|(_, d)| kernel.contact(d, rad, tol) == Contact::Overlapping) {
+            if finder.intruder(c, rad, tol).is_some() {
                 continue;
             }
             let feet: Vec<BoundaryPos> = finder.touching(c, rad).iter().map(|f| position(shape, f)).collect();

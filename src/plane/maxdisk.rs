@@ -99,6 +99,16 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
         self.chains.nearest(self.shape.loops(), p)
     }
 
+    /// An element reaching into the disk (`c`, `r`) by more than `tol`
+    /// (model units), with its distance from `c`; `None` when the disk is
+    /// empty within `tol`. Cheaper than [`nearest`](Self::nearest) for
+    /// disks expected to be empty.
+    pub fn intruder(&self, c: Point, r: f64, tol: f64) -> Option<(ElementRef, f64)> {
+        self.chains
+            .closer_than(self.shape.loops(), c, r - tol)
+            .filter(|&(_, d)| self.kernel.contact(d, r, tol) == Contact::Overlapping)
+    }
+
     /// Where the circle (`c`, `r`) of an empty disk touches the boundary:
     /// every element within the contact tolerance of it, at its point
     /// nearest to `c`, merged where elements meet; in loop and element order.

@@ -53,6 +53,26 @@ struct Node {
 }
 
 impl Node {
+    /// A lower bound on the distance from `p` to every element of the run.
+    fn bound(&self, p: Point) -> f64 {
+        let boxes = self.bbox.distance2_to(p).max(self.obb.distance2_to(p));
+        (segment_distance2(p, self.a, self.b).sqrt() - self.reach).max(boxes.sqrt())
+    }
+
+    /// False when every element of the run is at least `d` from `p`:
+    /// `bound(p) < d`, deciding with squares and the cheapest test first
+    /// (most runs a query meets are pruned by their box).
+    fn may_be_closer(&self, p: Point, d: f64) -> bool {
+        if d <= 0.0 {
+            return false;
+        }
+        let d2 = d * d;
+        let capsule = d + self.reach;
+        self.bbox.distance2_to(p) < d2
+            && self.obb.distance2_to(p) < d2
+            && segment_distance2(p, self.a, self.b) < capsule * capsule
+    }
+
     /// The elements of the run.
     fn elements(&self) -> impl Iterator<Item = ElementRef> {
         let loop_index = self.lp as usize;
@@ -114,12 +134,12 @@ impl Oriented {
         }
     }
 
-    /// Distance from `p` to the box (0 inside).
-    fn distance_to(&self, p: Point) -> f64 {
+    /// Squared distance from `p` to the box (0 inside).
+    fn distance2_to(&self, p: Point) -> f64 {
         let q = self.frame(p);
         let dx = (self.lo.x - q.x).max(q.x - self.hi.x).max(0.0);
         let dy = (self.lo.y - q.y).max(q.y - self.hi.y).max(0.0);
-        dx.hypot(dy)
+        dx * dx + dy * dy
     }
 }
 
@@ -169,10 +189,15 @@ pub struct ChainTree {
 
 /// Distance from `p` to the segment `a`–`b`.
 fn segment_distance(p: Point, a: Point, b: Point) -> f64 {
+    segment_distance2(p, a, b).sqrt()
+}
+
+/// Squared distance from `p` to the segment `a`–`b`.
+fn segment_distance2(p: Point, a: Point, b: Point) -> f64 {
     let d = b - a;
     let l2 = d.norm2();
     let t = if l2 > 0.0 { ((p - a).dot(d) / l2).clamp(0.0, 1.0) } else { 0.0 };
-    p.dist(a + d * t)
+    (p - (a + d * t)).norm2()
 }
 
 /// How far the element strays from the segment `a`–`b` at most: its
@@ -252,8 +277,7 @@ impl ChainTree {
     /// to `p`, and its distance (model units); the first in loop and
     /// element order among equals. `None` for a shape without elements.
     pub fn nearest(&self, loops: &[Loop], p: Point) -> Option<(ElementRef, f64)> {
-        let bound =
-            |n: &Node| (segment_distance(p, n.a, n.b) - n.reach).max(n.bbox.distance_to(p)).max(n.obb.distance_to(p));
+        let bound = |n: &Node| n.bound(p);
         let mut heap = std::collections::BinaryHeap::with_capacity(64);
         for &r in &self.roots {
             heap.push(Pending(bound(&self.nodes[r as usize]), r));
@@ -273,14 +297,44 @@ impl ChainTree {
                 }
             } else {
                 for c in [n.left, n.right] {
-                    let cb = bound(&self.nodes[c as usize]);
-                    if best.is_none_or(|(_, d)| cb < d) {
-                        heap.push(Pending(cb, c));
+                    let child = &self.nodes[c as usize];
+                    if best.is_none_or(|(_, d)| child.may_be_closer(p, d)) {
+                        heap.push(Pending(bound(child), c));
                     }
                 }
             }
         }
         best
+    }
+
+    /// Some element closer to `p` than `d` with its distance, or `None`
+    /// when every element is at least `d` away: the emptiness test of a
+    /// disk of radius `d` around `p`. Cheaper than [`nearest`](Self::nearest)
+    /// when the answer is expected to be `None` (checking a disk believed
+    /// maximal), as runs at `d` or more are never opened.
+    pub fn closer_than(&self, loops: &[Loop], p: Point, d: f64) -> Option<(ElementRef, f64)> {
+        let mut stack: Vec<u32> = Vec::with_capacity(64);
+        stack.extend(self.roots.iter().rev().filter(|&&r| self.nodes[r as usize].may_be_closer(p, d)));
+        while let Some(id) = stack.pop() {
+            let n = &self.nodes[id as usize];
+            if n.left == u32::MAX {
+                for r in n.elements() {
+                    let e = loops[r.loop_index].element(r.element).closest_point(p).0;
+                    if e < d {
+                        return Some((r, e));
+                    }
+                }
+            } else {
+                // Left last, so it is opened first: an intruder anywhere
+                // is found, and when there is none the order is moot.
+                for c in [n.right, n.left] {
+                    if self.nodes[c as usize].may_be_closer(p, d) {
+                        stack.push(c);
+                    }
+                }
+            }
+        }
+        None
     }
 
     /// The elements first touched by the disk growing at `g`: every one
@@ -376,6 +430,38 @@ mod tests {
                 scan.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
                 assert_eq!(got, scan, "{p:?} {a}");
             }
+        }
+    }
+
+    #[test]
+    fn closer_than_agrees_with_a_scan() {
+        let mut rng = samples::Mix(9);
+        for loops in [samples::flower_arcs(500), samples::star_polygon(300, 2)] {
+            let s = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).unwrap();
+            let t = ChainTree::new(s.loops());
+            let bb = s.bbox();
+            let (mut hits, mut misses) = (0, 0);
+            for _ in 0..2000 {
+                let p = Point::new(
+                    bb.min.x + rng.next() * (bb.max.x - bb.min.x),
+                    bb.min.y + rng.next() * (bb.max.y - bb.min.y),
+                );
+                let scan = s.loops()[0].elements().map(|e| e.closest_point(p).0).fold(f64::INFINITY, f64::min);
+                // Radii just around the true distance, where pruning matters.
+                let d = scan * (0.98 + 0.04 * rng.next());
+                match t.closer_than(s.loops(), p, d) {
+                    Some((r, e)) => {
+                        assert!(scan < d && e < d, "{p:?} {d}");
+                        assert_eq!(e, s.loops()[0].element(r.element).closest_point(p).0);
+                        hits += 1;
+                    }
+                    None => {
+                        assert!(scan >= d, "{p:?} {d}: missed an element at {scan}");
+                        misses += 1;
+                    }
+                }
+            }
+            assert!(hits > 100 && misses > 100, "{hits} {misses}");
         }
     }
 
