@@ -433,20 +433,22 @@ mod tests {
         }
     }
 
+    /// A random point in the shape's box and its distance to the boundary, by a scan.
+    fn probe(s: &Shape2d, rng: &mut samples::Mix) -> (Point, f64) {
+        let bb = s.bbox();
+        let p = Point::new(bb.min.x + rng.next() * bb.width(), bb.min.y + rng.next() * bb.height());
+        (p, s.loops()[0].elements().map(|e| e.closest_point(p).0).fold(f64::INFINITY, f64::min))
+    }
+
     #[test]
     fn closer_than_agrees_with_a_scan() {
         let mut rng = samples::Mix(9);
         for loops in [samples::flower_arcs(500), samples::star_polygon(300, 2)] {
             let s = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).unwrap();
             let t = ChainTree::new(s.loops());
-            let bb = s.bbox();
             let (mut hits, mut misses) = (0, 0);
             for _ in 0..2000 {
-                let p = Point::new(
-                    bb.min.x + rng.next() * (bb.max.x - bb.min.x),
-                    bb.min.y + rng.next() * (bb.max.y - bb.min.y),
-                );
-                let scan = s.loops()[0].elements().map(|e| e.closest_point(p).0).fold(f64::INFINITY, f64::min);
+                let (p, scan) = probe(&s, &mut rng);
                 // Radii just around the true distance, where pruning matters.
                 let d = scan * (0.98 + 0.04 * rng.next());
                 match t.closer_than(s.loops(), p, d) {
@@ -471,13 +473,8 @@ mod tests {
         for loops in [samples::flower_arcs(500), samples::star_polygon(300, 2)] {
             let s = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).unwrap();
             let t = ChainTree::new(s.loops());
-            let bb = s.bbox();
             for _ in 0..500 {
-                let p = Point::new(
-                    bb.min.x + rng.next() * (bb.max.x - bb.min.x),
-                    bb.min.y + rng.next() * (bb.max.y - bb.min.y),
-                );
-                let scan = s.loops()[0].elements().map(|e| e.closest_point(p).0).fold(f64::INFINITY, f64::min);
+                let (p, scan) = probe(&s, &mut rng);
                 let (_, d) = t.nearest(s.loops(), p).unwrap();
                 assert_eq!(d, scan, "{p:?}");
             }
