@@ -3,7 +3,8 @@
 //! leaf that fails with its pieces and dividing disks (and, for a chain
 //! cut off by one disk, how far each element strays from that disk).
 //! `cargo run --release --example axis_debug -- star|flower N [SEED]` or
-//! `-- SHAPE.json 0 [SEED]`; `MEDAX_NEAR=x,y` lists the dividing disks near a point.
+//! `-- SHAPE.json 0 [SEED]`; `MEDAX_NEAR=x,y` lists the dividing disks near a point;
+//! `MEDAX_DUMP=DIR` writes each failing leaf for `examples/leaf_replay`.
 use medax::plane::base_case;
 use medax::plane::divide::decompose_in;
 use medax::plane::maxdisk::DiskFinder;
@@ -82,6 +83,10 @@ fn main() {
         }
         if let Err(e) = solved {
             println!("leaf {i} ({} pieces): {e:?}", s.pieces.len());
+            if let Ok(dir) = std::env::var("MEDAX_DUMP") {
+                let text = medax::plane::leaf_text::write_leaf(s, &d.cuts);
+                std::fs::write(format!("{dir}/leaf_{i}.txt"), text).expect("writable dump directory");
+            }
             if let (true, Some(Piece::Chain { from, to }), Some(Piece::Aux { disk })) =
                 (s.pieces.len() == 2, s.pieces.first(), s.pieces.get(1))
             {

@@ -58,6 +58,10 @@ const CONTACT_SLACK: f64 = 16.0;
 /// And at most this fraction of the site (short sites).
 const CONTACT_SLACK_CAP: f64 = 0.5;
 
+/// Disks whose centres and radii agree within this many tolerances are
+/// one event.
+const SAME_EVENT: f64 = 4.0;
+
 /// Fans of normals narrower than this (radians) are rounding, not fans.
 const FAN_MIN: f64 = 1e-7;
 
@@ -707,7 +711,7 @@ impl<K: AxisKernel> Builder<'_, K> {
     ) -> usize {
         // The same disk found twice (a joint disk that is also a branch
         // point or a leaf circle) is one event with all its footpoints.
-        let near = 4.0 * self.tol;
+        let near = SAME_EVENT * self.tol;
         let same = self.events.iter().position(|e| e.center.dist(center) <= near && (e.radius - radius).abs() <= near);
         let id = match same {
             Some(i) => {
@@ -1018,7 +1022,7 @@ impl<K: AxisKernel> Builder<'_, K> {
                 }
                 continue;
             }
-            let Some(found) = self.branch(a, span, s1, s2, first.0, last.0) else {
+            let Some(found) = self.branch(d, a, span, s1, s2, first.0, last.0) else {
                 return Err(BaseCaseError::NoBranch(self.events[d].center));
             };
             let (c, r) = (found.center, found.radius);
@@ -1044,10 +1048,19 @@ impl<K: AxisKernel> Builder<'_, K> {
         Ok(LocalAxis { nodes, edges })
     }
 
-    /// The branch point in the pocket starting at `a` (length `span`): an
-    /// empty disk touching `s1` before offset `x1`, `s2` after offset `y2`
-    /// and a third site in between. The one touching `s1` first wins.
-    fn branch(&self, a: Key, span: f64, s1: usize, s2: usize, x1: f64, y2: f64) -> Option<Branch> {
+    /// The branch point in the pocket of event `d` starting at `a` (length
+    /// `span`): an empty disk other than `d`'s own, touching `s1` before
+    /// offset `x1`, `s2` after offset `y2` and a third site in between. The
+    /// one touching `s1` first wins.
+    #[allow(clippy::too_many_arguments)]
+    fn branch(&self, d: usize, a: Key, span: f64, s1: usize, s2: usize, x1: f64, y2: f64) -> Option<Branch> {
+        // The pocket's own disk touches its two sites at the pocket's ends
+        // (and a third site there, at a vertex): it would merge back into
+        // event `d` and the pocket be walked again, for ever.
+        let own = &self.events[d];
+        let is_own = |c: Point, r: f64| {
+            c.dist(own.center) <= SAME_EVENT * self.tol && (r - own.radius).abs() <= SAME_EVENT * self.tol
+        };
         // Candidates that touch the three sites within their ranges, in
         // the pocket, by where they touch `s1`; the first empty one wins.
         // (Emptiness costs O(n) each, so it is tested last and in order.)
@@ -1066,7 +1079,7 @@ impl<K: AxisKernel> Builder<'_, K> {
                 continue;
             }
             for (c, r) in self.k().tritangent_disks([self.sites[s1].site, self.sites[s2].site, self.sites[t].site]) {
-                if r <= self.tol || !c.is_finite() {
+                if r <= self.tol || !c.is_finite() || is_own(c, r) {
                     continue;
                 }
                 // Near-degenerate triples (many disks nearly alike, as at

@@ -13,6 +13,7 @@ pub mod base_case;
 pub mod conquer;
 pub mod divide;
 pub mod draw;
+pub mod leaf_text;
 pub mod maxdisk;
 pub mod maxdisk_star;
 pub mod subshape;
