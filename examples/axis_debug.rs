@@ -30,7 +30,7 @@ fn main() {
     let seed: u64 = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(opts.seed);
     let d = decompose_in(&finder, seed, opts.leaf_parts);
     println!("{} cuts, {} leaves, {} stuck", d.cuts.len(), d.leaves.len(), d.stuck.len());
-    if std::env::var("MEDAX_CORNERS").is_ok() {
+    if std::env::var("MEDAX_CORNERS").is_ok() || std::env::var("MEDAX_CHECK").is_ok() {
         glued_corners(&shape, &finder, seed);
     }
     // MEDAX_NEAR=x,y: the dividing disks near a point of interest.
@@ -137,6 +137,42 @@ fn glued_corners(shape: &Shape2d, finder: &DiskFinder, seed: u64) {
         Ok(a) => a,
         Err(e) => return println!("glue: {e}"),
     };
+    if std::env::var("MEDAX_CHECK").is_ok() {
+        // The final check of `medial_axis` on edge disks, with the leaves
+        // that made each failing edge (dumped with MEDAX_DUMP).
+        let slack = 64.0 * shape.tolerance();
+        let mut shown = 0;
+        for (ei, e) in axis.edges.iter().enumerate() {
+            for s in [1.0 / 64.0, 0.5, 63.0 / 64.0] {
+                let Some((c, r)) = e.eval(shape, &axis.nodes, s) else { continue };
+                let intruder = finder.intruder(c, r, slack);
+                let apart: Vec<f64> = e.sites.iter().map(|p| p.distance(shape, c) - r).collect();
+                if intruder.is_none() && apart.iter().all(|d| d.abs() <= slack) {
+                    continue;
+                }
+                shown += 1;
+                if shown > 6 {
+                    break;
+                }
+                let (a, b) = (&axis.nodes[e.from], &axis.nodes[e.to]);
+                println!("edge {ei} at {s}: disk {c:?} r {r}, intruder {intruder:?}, primitive defects {apart:?}");
+                println!("   {:?} -> {:?}, sites {:?}", a, b, e.sites);
+                for (k, local) in locals.iter().enumerate() {
+                    if local.nodes.iter().any(|n| n.center.dist(a.point) < 1e-9 || n.center.dist(b.point) < 1e-9) {
+                        println!("   from leaf {k} ({} nodes)", local.nodes.len());
+                        if let Ok(dir) = std::env::var("MEDAX_DUMP") {
+                            let all: Vec<_> = d.leaves.iter().chain(d.stuck.iter()).collect();
+                            if let Some(sub) = all.get(k) {
+                                let text = medax::plane::leaf_text::write_leaf(sub, &d.cuts);
+                                std::fs::write(format!("{dir}/glued_{k}.txt"), text).expect("writable dump directory");
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        println!("{shown} failing edge checks");
+    }
     let lp = &shape.loops()[0];
     for v in 0..lp.len() {
         let p = lp.vertices()[v].p;
