@@ -184,8 +184,23 @@ fn site_distance(s: &Site, c: Point) -> f64 {
 }
 
 /// The conic kind of the edge between primitives `a` and `b` (interior
-/// disks are nested inside counter-clockwise arcs' circles).
+/// disks are nested inside counter-clockwise arcs' circles). An element
+/// and one of its own end vertices share only that vertex: the disks
+/// touching both touch the element there, so their centres lie on its
+/// normal at the vertex (a parabola or conic whose focus lies on its
+/// directrix degenerates to that line). Such an edge is the end of a fan
+/// too narrow to hold a footpoint, a few tolerances long.
 pub fn edge_kind(shape: &Shape2d, a: Primitive, b: Primitive) -> ConicKind {
+    let own_end = |v: Primitive, e: Primitive| match (v, e) {
+        (Primitive::Vertex { loop_index, vertex }, Primitive::Element(r)) if r.loop_index == loop_index => {
+            let n = shape.loops()[loop_index].len();
+            vertex == r.element || vertex == (r.element + 1) % n
+        }
+        _ => false,
+    };
+    if own_end(a, b) || own_end(b, a) {
+        return ConicKind::Line;
+    }
     conic_kind(&a.site(shape), &b.site(shape), [true, true])
 }
 
@@ -205,5 +220,43 @@ impl MedialAxis2d {
     pub fn sampled(&self, shape: &Shape2d, tol: f64) -> Vec<Vec<(Point, f64)>> {
         use rayon::prelude::*;
         self.edges.par_iter().map(|e| e.sample(shape, &self.nodes, tol)).collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shape::{ShapeOptions, Vertex};
+
+    #[test]
+    fn an_element_and_its_own_end_vertex_bound_a_straight_edge() {
+        // An L-shaped hexagon: vertex 3 at (1, 1) is reflex, between
+        // element 2 (from (2, 1)) and element 3 (to (1, 2)).
+        let pts = [(0.0, 0.0), (2.0, 0.0), (2.0, 1.0), (1.0, 1.0), (1.0, 2.0), (0.0, 2.0)];
+        let lp = pts.iter().map(|&(x, y)| Vertex { p: Point::new(x, y), bulge: 0.0 }).collect();
+        let shape = Shape2d::from_bulge_loops(vec![lp], &ShapeOptions::default()).unwrap();
+        let v = Primitive::Vertex { loop_index: 0, vertex: 3 };
+        let e = |element| Primitive::Element(ElementRef { loop_index: 0, element });
+        assert_eq!(edge_kind(&shape, v, e(2)), ConicKind::Line);
+        assert_eq!(edge_kind(&shape, e(3), v), ConicKind::Line);
+        // Another element's vertex: the ordinary parabola.
+        assert_eq!(edge_kind(&shape, v, e(0)), ConicKind::Parabola);
+        // Along element 2's normal at the vertex (pointing down, -y), the
+        // disks touch the vertex and the element there: the edge evaluates
+        // between its nodes with the distance to both as radius.
+        let nodes = [
+            AxisNode { point: Point::new(1.0, 0.9), radius: 0.1, kind: NodeKind::Joint },
+            AxisNode { point: Point::new(1.0, 0.8), radius: 0.2, kind: NodeKind::Joint },
+        ];
+        let edge = AxisEdge {
+            from: 0,
+            to: 1,
+            sites: [e(2), v],
+            params: [(1.0, 1.0), (0.0, 0.0)],
+            kind: edge_kind(&shape, e(2), v),
+        };
+        let (c, r) = edge.eval(&shape, &nodes, 0.5).unwrap();
+        assert!(c.dist(Point::new(1.0, 0.85)) < 1e-15 && (r - 0.15).abs() < 1e-15, "{c:?} {r}");
+        assert!((c.dist(Point::new(1.0, 1.0)) - r).abs() < 1e-15);
     }
 }
