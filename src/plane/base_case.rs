@@ -855,7 +855,15 @@ impl<K: AxisKernel> Builder<'_, K> {
 
     /// Offset of `k` after `a` along the cycle, in [0, 2n).
     fn offset(&self, a: Key, k: Key) -> f64 {
-        (self.pos(k) - self.pos(a)).rem_euclid(2.0 * self.n() as f64)
+        // Both positions lie in [0, 2n): one wrap, exactly what
+        // `rem_euclid` gives, without its division (this runs for every
+        // footpoint of every event at every pocket walked).
+        let d = self.pos(k) - self.pos(a);
+        if d < 0.0 {
+            d + 2.0 * self.n() as f64
+        } else {
+            d
+        }
     }
 
     /// Length (model units) of the part of site `i` between fractions
