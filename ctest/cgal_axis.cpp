@@ -185,6 +185,12 @@ std::vector<Disk> sdg_vertices(const Polygon& poly, double min_clearance, size_t
         }
         out.push_back(d);
     }
+    // CGAL shuffles its input with a time-seeded generator, so the faces
+    // come in a different order each run; matching takes the first free
+    // medax joint, so sort for a reproducible tally.
+    std::sort(out.begin(), out.end(), [](const Disk& a, const Disk& b) {
+        return std::tie(a.x, a.y, a.r) < std::tie(b.x, b.y, b.r);
+    });
     return out;
 }
 
