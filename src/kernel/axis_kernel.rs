@@ -12,9 +12,12 @@
 //! * **Constructions** return new geometry rounded to `f64`: contact radii
 //!   of the growing disk (Algorithm 1), the disks tangent to three sites
 //!   (Apollonius), points on the bisector of two sites.
-//! * **Predicates** answer with an enum: the conic kind of a bisector, how
-//!   a disk meets a boundary primitive ([`Contact`]), and the orientation
-//!   and in-circle tests of the [`Kernel`] supertrait.
+//! * **Predicates** answer with an enum: how a disk meets a boundary
+//!   primitive ([`Contact`]), and the orientation and in-circle tests of
+//!   the [`Kernel`] supertrait.
+//!
+//! The finished axis evaluates and samples its conic edges in `f64`
+//! (`plane::axis`), outside the kernel: output is rounded anyway.
 //!
 //! The provided methods are the `f64` constructions of this module's
 //! siblings, so an implementation only overrides what it computes
@@ -28,7 +31,7 @@
 //! exact kernel decides with a tolerance of zero.
 
 use super::apollonius::{self, Site};
-use super::bisector::{self, ConicKind, Sample};
+use super::bisector;
 use super::growing_disk::GrowingDisk;
 use super::{construct, Kernel, Orientation, Point};
 
@@ -56,7 +59,8 @@ pub trait AxisKernel: Kernel + Copy + Send + Sync + 'static {
     }
 
     /// Radii at which `g`'s circle is tangent to the line through `a` with
-    /// unit normal `m`, with the tangency point: up to two, one per side.
+    /// unit normal `m`, with the tangency point: up to two (one per side of
+    /// the line), in no fixed order.
     fn tangent_to_line(&self, g: &GrowingDisk, a: Point, m: Point) -> [Option<(f64, Point)>; 2] {
         let mut out = [None; 2];
         for (slot, hit) in out.iter_mut().zip(g.tangent_to_line(a, m)) {
@@ -91,17 +95,6 @@ pub trait AxisKernel: Kernel + Copy + Send + Sync + 'static {
         bisector::bisector_point(a, b, u)
     }
 
-    /// Samples of the bisector of `a` and `b` between two end samples, to
-    /// the chordal tolerance `tol` (model units).
-    fn sample_bisector(&self, a: &Site, b: &Site, start: Sample, end: Sample, tol: f64) -> Option<Vec<Sample>> {
-        bisector::sample_between(a, b, start, end, tol)
-    }
-
-    /// The conic the centres of disks tangent to `a` and `b` lie on.
-    fn conic_kind(&self, a: &Site, b: &Site, inside: [bool; 2]) -> ConicKind {
-        bisector::conic_kind(a, b, inside)
-    }
-
     /// The circle through three points (centre, radius), `None` when they
     /// are collinear: decided by [`Kernel::orientation`] first, then by the
     /// construction's own guard against a centre lost to rounding.
@@ -114,7 +107,10 @@ pub trait AxisKernel: Kernel + Copy + Send + Sync + 'static {
 
     /// How the circle of radius `radius` around a centre meets a primitive
     /// whose distance from that centre is `distance`, with tolerance `tol`
-    /// (all model units).
+    /// (all model units). `Overlapping` must mean at least "closer than
+    /// `radius − tol`" for a kernel that answers otherwise: the emptiness
+    /// search ([`crate::plane::DiskFinder::intruder`]) only opens parts of
+    /// the shape that come that close.
     fn contact(&self, distance: f64, radius: f64, tol: f64) -> Contact {
         if distance < radius - tol {
             Contact::Overlapping

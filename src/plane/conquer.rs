@@ -144,10 +144,11 @@ const RETRIES: u64 = 3;
 /// footpoint range shows first.
 const EDGE_CHECKS: [f64; 3] = [1.0 / 64.0, 0.5, 63.0 / 64.0];
 
-/// Every node's disk and the disks at interior points of every edge must touch
-/// the boundary and hold none of it (nearest-element queries on the shared
-/// index, independent of how the axis was built), and touch both
-/// primitives of the edge (distance to the primitive itself): a wrong
+/// Every node's disk and the disks at interior points of every edge must hold
+/// none of the boundary (emptiness queries on the shared index, independent
+/// of how the axis was built) and touch both primitives of the edge
+/// (distance to the primitive itself), which makes them touch the boundary;
+/// a node without edges must have its nearest element on its circle. A wrong
 /// pair of primitives on an edge, or a node placed off its edges, shows up
 /// here and is reported, not returned.
 fn check_disks<K: AxisKernel>(finder: &DiskFinder<K>, axis: &MedialAxis2d) -> Result<(), AxisError> {

@@ -12,7 +12,8 @@
 //! ```
 //!
 //! Each `aux` line is its own dividing disk; the cut list read back has one
-//! entry per `aux` line, in order.
+//! entry per `aux` line, in order (disk indices are renumbered; positions
+//! and disks round-trip exactly).
 
 use super::subshape::{BoundaryPos, Cut, Piece, Subshape};
 use crate::kernel::Point;
@@ -36,7 +37,9 @@ impl std::fmt::Display for LeafTextError {
 
 impl std::error::Error for LeafTextError {}
 
-/// Writes `s`; its auxiliary arcs index `cuts`.
+/// Writes `s`; its auxiliary arcs index `cuts`. An index outside `cuts`
+/// (a caller's bug) is written as a disk of NaN radius, which
+/// [`read_leaf`] refuses.
 pub fn write_leaf(s: &Subshape, cuts: &[Cut]) -> String {
     let mut out = String::new();
     for p in &s.pieces {
@@ -53,6 +56,7 @@ pub fn write_leaf(s: &Subshape, cuts: &[Cut]) -> String {
                 to.t.to_bits()
             ),
             Piece::Aux { disk } => {
+                debug_assert!(disk < cuts.len(), "auxiliary arc of disk {disk} of {}", cuts.len());
                 let c = cuts.get(disk).copied().unwrap_or(Cut { center: Point::default(), radius: f64::NAN });
                 writeln!(out, "aux {:x} {:x} {:x}", c.center.x.to_bits(), c.center.y.to_bits(), c.radius.to_bits())
             }

@@ -313,6 +313,18 @@ impl ChainTree {
     /// when the answer is expected to be `None` (checking a disk believed
     /// maximal), as runs at `d` or more are never opened.
     pub fn closer_than(&self, loops: &[Loop], p: Point, d: f64) -> Option<(ElementRef, f64)> {
+        self.closer_than_where(loops, p, d, |_| true)
+    }
+
+    /// [`closer_than`](Self::closer_than), counting only elements whose
+    /// distance `accept` agrees with (the search goes on past the others).
+    pub fn closer_than_where(
+        &self,
+        loops: &[Loop],
+        p: Point,
+        d: f64,
+        accept: impl Fn(f64) -> bool,
+    ) -> Option<(ElementRef, f64)> {
         let mut stack: Vec<u32> = Vec::with_capacity(64);
         stack.extend(self.roots.iter().rev().filter(|&&r| self.nodes[r as usize].may_be_closer(p, d)));
         while let Some(id) = stack.pop() {
@@ -320,7 +332,7 @@ impl ChainTree {
             if n.left == u32::MAX {
                 for r in n.elements() {
                     let e = loops[r.loop_index].element(r.element).closest_point(p).0;
-                    if e < d {
+                    if e < d && accept(e) {
                         return Some((r, e));
                     }
                 }
