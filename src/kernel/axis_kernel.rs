@@ -62,21 +62,13 @@ pub trait AxisKernel: Kernel + Copy + Send + Sync + 'static {
     /// unit normal `m`, with the tangency point: up to two (one per side of
     /// the line), in no fixed order.
     fn tangent_to_line(&self, g: &GrowingDisk, a: Point, m: Point) -> [Option<(f64, Point)>; 2] {
-        let mut out = [None; 2];
-        for (slot, hit) in out.iter_mut().zip(g.tangent_to_line(a, m)) {
-            *slot = Some(hit);
-        }
-        out
+        up_to_two(g.tangent_to_line(a, m))
     }
 
     /// Radii at which `g`'s circle is tangent to the circle (`o`, `r`),
     /// externally or internally, with the tangency point: up to two.
     fn tangent_to_circle(&self, g: &GrowingDisk, o: Point, r: f64) -> [Option<(f64, Point)>; 2] {
-        let mut out = [None; 2];
-        for (slot, hit) in out.iter_mut().zip(g.tangent_to_circle(o, r)) {
-            *slot = Some(hit);
-        }
-        out
+        up_to_two(g.tangent_to_circle(o, r))
     }
 
     /// Radius at which `g` touches `site` as the site's kind says.
@@ -120,6 +112,15 @@ pub trait AxisKernel: Kernel + Copy + Send + Sync + 'static {
             Contact::Apart
         }
     }
+}
+
+/// The first two contacts of `hits`, packed from the front.
+fn up_to_two(hits: impl Iterator<Item = (f64, Point)>) -> [Option<(f64, Point)>; 2] {
+    let mut out = [None; 2];
+    for (slot, hit) in out.iter_mut().zip(hits) {
+        *slot = Some(hit);
+    }
+    out
 }
 
 impl AxisKernel for super::FloatKernel {}

@@ -367,6 +367,13 @@ impl<K: AxisKernel> Builder<'_, K> {
         self.finder.kernel()
     }
 
+    /// True when the disk (`c`, `r`) is event `e`'s own (centres and radii
+    /// within [`SAME_EVENT`] tolerances): one event, not two.
+    fn same_disk(&self, e: &Event, c: Point, r: f64) -> bool {
+        let near = SAME_EVENT * self.tol;
+        e.center.dist(c) <= near && (e.radius - r).abs() <= near
+    }
+
     /// How the circle (`c`, `r`) meets site `i`'s piece, within `tol`.
     fn contact(&self, i: usize, c: Point, r: f64, tol: f64) -> Contact {
         self.k().contact(self.distance(i, c).0, r, tol)
@@ -711,8 +718,7 @@ impl<K: AxisKernel> Builder<'_, K> {
     ) -> usize {
         // The same disk found twice (a joint disk that is also a branch
         // point or a leaf circle) is one event with all its footpoints.
-        let near = SAME_EVENT * self.tol;
-        let same = self.events.iter().position(|e| e.center.dist(center) <= near && (e.radius - radius).abs() <= near);
+        let same = self.events.iter().position(|e| self.same_disk(e, center, radius));
         let id = match same {
             Some(i) => {
                 let e = &mut self.events[i];
@@ -1065,10 +1071,7 @@ impl<K: AxisKernel> Builder<'_, K> {
         // The pocket's own disk touches its two sites at the pocket's ends
         // (and a third site there, at a vertex): it would merge back into
         // event `d` and the pocket be walked again, for ever.
-        let own = &self.events[d];
-        let is_own = |c: Point, r: f64| {
-            c.dist(own.center) <= SAME_EVENT * self.tol && (r - own.radius).abs() <= SAME_EVENT * self.tol
-        };
+        let is_own = |c: Point, r: f64| self.same_disk(&self.events[d], c, r);
         // Candidates that touch the three sites within their ranges, in
         // the pocket, by where they touch `s1`; the first empty one wins.
         // (Emptiness costs O(n) each, so it is tested last and in order.)

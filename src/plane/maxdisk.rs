@@ -104,9 +104,8 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
     /// empty within `tol`. Cheaper than [`nearest`](Self::nearest) for
     /// disks expected to be empty.
     pub fn intruder(&self, c: Point, r: f64, tol: f64) -> Option<(ElementRef, f64)> {
-        self.chains.closer_than_where(self.shape.loops(), c, r - tol, |d| {
-            self.kernel.contact(d, r, tol) == Contact::Overlapping
-        })
+        self.chains
+            .closer_than(self.shape.loops(), c, r - tol, |d| self.kernel.contact(d, r, tol) == Contact::Overlapping)
     }
 
     /// Where the circle (`c`, `r`) of an empty disk touches the boundary:

@@ -53,24 +53,26 @@ struct Node {
 }
 
 impl Node {
-    /// A lower bound on the distance from `p` to every element of the run.
-    fn bound(&self, p: Point) -> f64 {
-        let boxes = self.bbox.distance2_to(p).max(self.obb.distance2_to(p));
-        (segment_distance2(p, self.a, self.b).sqrt() - self.reach).max(boxes.sqrt())
-    }
-
-    /// False when every element of the run is at least `d` from `p`:
-    /// `bound(p) < d`, deciding with squares and the cheapest test first
-    /// (most runs a query meets are pruned by their box).
-    fn may_be_closer(&self, p: Point, d: f64) -> bool {
+    /// A lower bound on the distance from `p` to every element of the run
+    /// when it is below `d`, else `None`: decided with squares and the
+    /// cheapest test first (most runs a query meets are pruned by their
+    /// box), the square roots taken only for a run that stays.
+    fn bound_below(&self, p: Point, d: f64) -> Option<f64> {
         if d <= 0.0 {
-            return false;
+            return None;
         }
         let d2 = d * d;
+        let b = self.bbox.distance2_to(p);
+        if b >= d2 {
+            return None;
+        }
+        let o = self.obb.distance2_to(p);
+        if o >= d2 {
+            return None;
+        }
+        let s = segment_distance2(p, self.a, self.b);
         let capsule = d + self.reach;
-        self.bbox.distance2_to(p) < d2
-            && self.obb.distance2_to(p) < d2
-            && segment_distance2(p, self.a, self.b) < capsule * capsule
+        (s < capsule * capsule).then(|| (s.sqrt() - self.reach).max(b.max(o).sqrt()))
     }
 
     /// The elements of the run.
@@ -277,10 +279,11 @@ impl ChainTree {
     /// to `p`, and its distance (model units); the first in loop and
     /// element order among equals. `None` for a shape without elements.
     pub fn nearest(&self, loops: &[Loop], p: Point) -> Option<(ElementRef, f64)> {
-        let bound = |n: &Node| n.bound(p);
         let mut heap = std::collections::BinaryHeap::with_capacity(64);
         for &r in &self.roots {
-            heap.push(Pending(bound(&self.nodes[r as usize]), r));
+            if let Some(b) = self.nodes[r as usize].bound_below(p, f64::INFINITY) {
+                heap.push(Pending(b, r));
+            }
         }
         let mut best: Option<(ElementRef, f64)> = None;
         while let Some(Pending(b, id)) = heap.pop() {
@@ -296,10 +299,10 @@ impl ChainTree {
                     }
                 }
             } else {
+                let cutoff = best.map_or(f64::INFINITY, |(_, d)| d);
                 for c in [n.left, n.right] {
-                    let child = &self.nodes[c as usize];
-                    if best.is_none_or(|(_, d)| child.may_be_closer(p, d)) {
-                        heap.push(Pending(bound(child), c));
+                    if let Some(b) = self.nodes[c as usize].bound_below(p, cutoff) {
+                        heap.push(Pending(b, c));
                     }
                 }
             }
@@ -307,18 +310,13 @@ impl ChainTree {
         best
     }
 
-    /// Some element closer to `p` than `d` with its distance, or `None`
-    /// when every element is at least `d` away: the emptiness test of a
-    /// disk of radius `d` around `p`. Cheaper than [`nearest`](Self::nearest)
-    /// when the answer is expected to be `None` (checking a disk believed
+    /// Some element closer to `p` than `d` whose distance `accept` agrees
+    /// with, with that distance, or `None` when there is none (the search
+    /// goes on past rejected elements): the emptiness test of a disk of
+    /// radius `d` around `p`. Cheaper than [`nearest`](Self::nearest) when
+    /// the answer is expected to be `None` (checking a disk believed
     /// maximal), as runs at `d` or more are never opened.
-    pub fn closer_than(&self, loops: &[Loop], p: Point, d: f64) -> Option<(ElementRef, f64)> {
-        self.closer_than_where(loops, p, d, |_| true)
-    }
-
-    /// [`closer_than`](Self::closer_than), counting only elements whose
-    /// distance `accept` agrees with (the search goes on past the others).
-    pub fn closer_than_where(
+    pub fn closer_than(
         &self,
         loops: &[Loop],
         p: Point,
@@ -326,7 +324,7 @@ impl ChainTree {
         accept: impl Fn(f64) -> bool,
     ) -> Option<(ElementRef, f64)> {
         let mut stack: Vec<u32> = Vec::with_capacity(64);
-        stack.extend(self.roots.iter().rev().filter(|&&r| self.nodes[r as usize].may_be_closer(p, d)));
+        stack.extend(self.roots.iter().rev().filter(|&&r| self.nodes[r as usize].bound_below(p, d).is_some()));
         while let Some(id) = stack.pop() {
             let n = &self.nodes[id as usize];
             if n.left == u32::MAX {
@@ -340,7 +338,7 @@ impl ChainTree {
                 // Left last, so it is opened first: an intruder anywhere
                 // is found, and when there is none the order is moot.
                 for c in [n.right, n.left] {
-                    if self.nodes[c as usize].may_be_closer(p, d) {
+                    if self.nodes[c as usize].bound_below(p, d).is_some() {
                         stack.push(c);
                     }
                 }
@@ -419,9 +417,7 @@ mod tests {
         // Key: the radius at which the growing disk reaches an element's
         // start point, which lies in every box that holds the element.
         let mut rng = samples::Mix(11);
-        for loops in [samples::flower_arcs(500), samples::star_polygon(300, 2)] {
-            let s = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).unwrap();
-            let t = ChainTree::new(s.loops());
+        for (s, t) in fixtures() {
             let lp = &s.loops()[0];
             for _ in 0..300 {
                 let e = lp.element((rng.next() * lp.len() as f64) as usize % lp.len());
@@ -445,6 +441,18 @@ mod tests {
         }
     }
 
+    /// The test shapes (smooth arcs, spikes) with their trees.
+    fn fixtures() -> Vec<(Shape2d, ChainTree)> {
+        [samples::flower_arcs(500), samples::star_polygon(300, 2)]
+            .into_iter()
+            .map(|loops| {
+                let s = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).unwrap();
+                let t = ChainTree::new(s.loops());
+                (s, t)
+            })
+            .collect()
+    }
+
     /// A random point in the shape's box and its distance to the boundary, by a scan.
     fn probe(s: &Shape2d, rng: &mut samples::Mix) -> (Point, f64) {
         let bb = s.bbox();
@@ -455,15 +463,19 @@ mod tests {
     #[test]
     fn closer_than_agrees_with_a_scan() {
         let mut rng = samples::Mix(9);
-        for loops in [samples::flower_arcs(500), samples::star_polygon(300, 2)] {
-            let s = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).unwrap();
-            let t = ChainTree::new(s.loops());
+        for (s, t) in fixtures() {
             let (mut hits, mut misses) = (0, 0);
             for _ in 0..2000 {
                 let (p, scan) = probe(&s, &mut rng);
                 // Radii just around the true distance, where pruning matters.
                 let d = scan * (0.98 + 0.04 * rng.next());
-                match t.closer_than(s.loops(), p, d) {
+                // Rejecting elements nearer than 0.99 d: only those between
+                // count, and the search must go on past the others.
+                let inner = 0.99 * d;
+                let ring = s.loops()[0].elements().any(|e| (inner..d).contains(&e.closest_point(p).0));
+                let found = t.closer_than(s.loops(), p, d, |e| e >= inner);
+                assert_eq!(found.is_some(), ring, "{p:?} {d}");
+                match t.closer_than(s.loops(), p, d, |_| true) {
                     Some((r, e)) => {
                         assert!(scan < d && e < d, "{p:?} {d}");
                         assert_eq!(e, s.loops()[0].element(r.element).closest_point(p).0);
@@ -482,9 +494,7 @@ mod tests {
     #[test]
     fn nearest_agrees_with_a_scan() {
         let mut rng = samples::Mix(7);
-        for loops in [samples::flower_arcs(500), samples::star_polygon(300, 2)] {
-            let s = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).unwrap();
-            let t = ChainTree::new(s.loops());
+        for (s, t) in fixtures() {
             for _ in 0..500 {
                 let (p, scan) = probe(&s, &mut rng);
                 let (_, d) = t.nearest(s.loops(), p).unwrap();
