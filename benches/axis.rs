@@ -40,7 +40,10 @@ fn main() {
                 let total = t.elapsed().as_secs_f64();
                 let share = if threads == 1 {
                     let t = Instant::now();
-                    pool.install(|| decompose_with(&s, AxisOptions::default().seed, AxisOptions::default().leaf_parts));
+                    pool.install(|| {
+                        decompose_with(&s, AxisOptions::default().seed, AxisOptions::default().leaf_parts)
+                            .expect("no holes")
+                    });
                     format!("{:.0} %", 100.0 * (t.elapsed().as_secs_f64() / total).min(1.0))
                 } else {
                     "".to_string()

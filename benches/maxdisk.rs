@@ -56,7 +56,7 @@ fn main() {
         for &n in sizes {
             let s = Shape2d::from_bulge_loops(gen(n), &ShapeOptions::default()).expect("samples are valid");
             let t = Instant::now();
-            let d = decompose(&s, 1);
+            let d = decompose(&s, 1).expect("no holes");
             let dt = t.elapsed().as_secs_f64();
             let m = s.element_count();
             println!(

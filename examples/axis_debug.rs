@@ -3,8 +3,9 @@
 //! leaf that fails with its pieces and dividing disks (and, for a chain
 //! cut off by one disk, how far each element strays from that disk).
 //! `cargo run --release --example axis_debug -- star|flower N [SEED]` or
-//! `-- SHAPE.json 0 [SEED]`; `MEDAX_NEAR=x,y` lists the dividing disks near a point;
+//! `-- plate K [SEED]` or `-- SHAPE.json 0 [SEED]`; `MEDAX_NEAR=x,y` lists the dividing disks near a point;
 //! `MEDAX_DUMP=DIR` writes each failing leaf for `examples/leaf_replay`.
+use medax::plane::augment::augment;
 use medax::plane::base_case;
 use medax::plane::divide::decompose_in;
 use medax::plane::maxdisk::DiskFinder;
@@ -21,14 +22,20 @@ fn main() {
             Shape2d::from_json_str(&text, &ShapeOptions::default()).expect("valid shape file")
         }
         kind => {
-            let loops = if kind == Some("flower") { samples::flower_arcs(n) } else { samples::star_polygon(n, 1) };
+            let loops = match kind {
+                Some("flower") => samples::flower_arcs(n),
+                Some("plate") => samples::perforated_plate(n),
+                Some("holes") => samples::random_holes(n, 1),
+                _ => samples::star_polygon(n, 1),
+            };
             Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).expect("valid sample")
         }
     };
     let finder = DiskFinder::new(&shape);
     let opts = AxisOptions::default();
     let seed: u64 = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(opts.seed);
-    let d = decompose_in(&finder, seed, opts.leaf_parts);
+    let aug = augment(&finder).expect("augmenting disks");
+    let d = decompose_in(&finder, &aug, seed, opts.leaf_parts);
     println!("{} cuts, {} leaves, {} stuck", d.cuts.len(), d.leaves.len(), d.stuck.len());
     if std::env::var("MEDAX_CORNERS").is_ok() || std::env::var("MEDAX_CHECK").is_ok() {
         glued_corners(&shape, &finder, seed);
@@ -121,7 +128,9 @@ fn convex_inside(shape: &Shape2d, s: &medax::plane::subshape::Subshape) -> usize
 /// Solves and glues like `medial_axis` (one decomposition) and prints the
 /// convex vertices that got no corner node, with the nodes near them.
 fn glued_corners(shape: &Shape2d, finder: &DiskFinder, seed: u64) {
-    let mut d = decompose_in(finder, seed, AxisOptions::default().leaf_parts);
+    let aug = augment(finder).expect("augmenting disks");
+    let mut d = decompose_in(finder, &aug, seed, AxisOptions::default().leaf_parts);
+    let subshapes: Vec<_> = d.leaves.iter().chain(d.stuck.iter()).cloned().collect();
     let locals = match medax::plane::conquer::solve_leaves(finder, &mut d, seed) {
         Ok(l) => l,
         Err(e) => return println!("solve_leaves: {e}"),
@@ -171,8 +180,7 @@ fn glued_corners(shape: &Shape2d, finder: &DiskFinder, seed: u64) {
                     if local.nodes.iter().any(|n| n.center.dist(a.point) < 1e-9 || n.center.dist(b.point) < 1e-9) {
                         println!("   from leaf {k} ({} nodes)", local.nodes.len());
                         if let Ok(dir) = std::env::var("MEDAX_DUMP") {
-                            let all: Vec<_> = d.leaves.iter().chain(d.stuck.iter()).collect();
-                            if let Some(sub) = all.get(k) {
+                            if let Some(sub) = subshapes.get(k) {
                                 let text = medax::plane::leaf_text::write_leaf(sub, &d.cuts);
                                 std::fs::write(format!("{dir}/glued_{k}.txt"), text).expect("writable dump directory");
                             }

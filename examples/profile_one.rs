@@ -1,6 +1,6 @@
 //! Validates one sample shape once, and optionally computes its medial
 //! axis (for profilers):
-//! `cargo run --release --example profile_one -- star|flower|comb N [axis [LEAF_PARTS]]`
+//! `cargo run --release --example profile_one -- star|flower|comb|holes|plate N [axis [LEAF_PARTS]]`
 //! (`MEDAX_SEED` picks the random star, `MEDAX_AXIS_SEED` the divide step's
 //! random choices).
 use medax::plane::{medial_axis, AxisOptions};
@@ -12,6 +12,10 @@ fn main() {
     let loops = match args.get(1).map(String::as_str) {
         Some("flower") => samples::flower_arcs(n),
         Some("comb") => samples::slanted_comb(n / 4, (n / 8) as f64),
+        Some("holes") => {
+            samples::random_holes(n, std::env::var("MEDAX_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(1))
+        }
+        Some("plate") => samples::perforated_plate(n),
         _ => samples::star_polygon(n, std::env::var("MEDAX_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(1)),
     };
     let t = std::time::Instant::now();

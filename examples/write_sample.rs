@@ -6,7 +6,7 @@ use medax::shape::{samples, Shape2d, ShapeOptions};
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     if args.len() != 4 {
-        eprintln!("usage: write_sample star|flower|plate|comb N OUT.json");
+        eprintln!("usage: write_sample star|flower|plate|comb|holes N OUT.json");
         std::process::exit(2);
     }
     let n: usize = args[2].parse().expect("N must be a whole number");
@@ -15,6 +15,7 @@ fn main() {
         "flower" => samples::flower_arcs(n),
         "plate" => samples::perforated_plate(((n as f64) / 2.0).sqrt().ceil() as usize),
         "comb" => samples::slanted_comb(n / 4, (n / 8) as f64),
+        "holes" => samples::random_holes(n, 1),
         other => panic!("unknown kind {other}"),
     };
     let shape = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).expect("samples are valid");

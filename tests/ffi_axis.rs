@@ -311,17 +311,36 @@ fn progress_and_cancel() {
 }
 
 #[test]
-fn holes_are_unsupported() {
-    let hole = [(1.0, 0.5), (1.0, 1.5), (3.0, 1.5), (3.0, 0.5)];
-    let s = shape(&[&RECT, &hole]);
-    let mut out = SENTINEL;
-    assert_eq!(unsafe { mx_axis_compute(s, null(), &mut out) }, mx_status::MX_ERR_UNSUPPORTED);
-    assert_eq!(out, SENTINEL);
-    assert!(last_message().contains("holes"), "{}", last_message());
-    let mut info = unsafe { std::mem::zeroed::<mx_error_info>() };
-    assert_eq!(unsafe { mx_last_error_info(&mut info) }, mx_status::MX_OK);
-    assert_eq!(info.status, mx_status::MX_ERR_UNSUPPORTED);
-    assert_eq!(info.loop_index, 1);
+fn holes_give_one_cycle_each_with_sites_in_the_callers_numbering() {
+    // The hole is given counter-clockwise: the library turns it round, and
+    // the sites must still name the caller's vertices and segments.
+    let hole = [(1.0, 0.5), (3.0, 0.5), (3.0, 1.5), (1.0, 1.5)];
+    let loops: [&[(f64, f64)]; 2] = [&RECT, &hole];
+    let s = shape(&loops);
+    let a = compute(s, null());
+    let (ns, es) = (nodes(a), edges(a));
+    // Connected with one independent cycle.
+    assert_eq!(es.len(), ns.len(), "{} nodes, {} edges", ns.len(), es.len());
+    let mut on_hole = 0;
+    for (i, e) in es.iter().enumerate() {
+        for [x, y, r] in samples(a, i, 1e-6) {
+            let d = loops.iter().map(|l| boundary_distance(l, (x, y))).fold(f64::INFINITY, f64::min);
+            assert!((d - r).abs() <= 1e-9, "edge {i}: ({x}, {y}) radius {r}, boundary {d}");
+            for site in &e.sites {
+                let poly = loops[site.loop_index];
+                let v = poly[site.index];
+                let ds = if site.is_vertex == 1 {
+                    (x - v.0).hypot(y - v.1)
+                } else {
+                    segment_distance((x, y), v, poly[(site.index + 1) % poly.len()])
+                };
+                assert!((ds - r).abs() <= 1e-9, "edge {i}: site {site:?} at {ds}, radius {r}");
+            }
+        }
+        on_hole += e.sites.iter().filter(|t| t.loop_index == 1).count();
+    }
+    assert!(on_hole >= 4, "every side of the hole faces the axis");
+    unsafe { mx_axis_free(a) };
     unsafe { mx_shape2d_free(s) };
 }
 

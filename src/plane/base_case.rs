@@ -227,17 +227,55 @@ fn drop_sliver_ends(shape: &Shape2d, s: &Subshape, len: f64) -> Subshape {
             }
             other => other,
         })
+        .map(|p| match p {
+            Piece::Chain { from, to } if !ChainParts::new(shape, from, to).is_empty() => Piece::Chain {
+                from: short_of_reflex(shape, from, len, false),
+                to: short_of_reflex(shape, to, len, true),
+            },
+            other => other,
+        })
         .collect();
     Subshape { pieces }
 }
 
+/// A chain end within `len` (model units) short of a reflex vertex, moved
+/// onto the vertex (`end`: the chain's end, else its start). A disk
+/// touching the vertex from inside its fan gets a footpoint a few ulps
+/// short of it on an arc (the closest point is clamped to the arc's end,
+/// and its angle does not map back to exactly 1); the fan between the
+/// element's normal and the disk is this subshape's boundary, which a
+/// chain ending short of the vertex would leave out.
+fn short_of_reflex(shape: &Shape2d, p: BoundaryPos, len: f64, end: bool) -> BoundaryPos {
+    let lp = &shape.loops()[p.loop_index];
+    let e = lp.element(p.element);
+    if end && p.t > 0.0 && p.t < 1.0 {
+        let v = (p.element + 1) % lp.len();
+        if (1.0 - p.t) * e.length() <= len && shape.joint(p.loop_index, v) == JointKind::Reflex {
+            return BoundaryPos { t: 1.0, ..p };
+        }
+    }
+    if !end
+        && p.t > 0.0
+        && p.t < 1.0
+        && p.t * e.length() <= len
+        && shape.joint(p.loop_index, p.element) == JointKind::Reflex
+    {
+        return BoundaryPos { t: 0.0, ..p };
+    }
+    p
+}
+
 /// Consecutive chains that meet (a cut exactly at a vertex leaves two) as
-/// one chain, so that the joint between them is seen.
+/// one chain, so that the joint between them is seen. Two chains that
+/// make up a whole loop from a point inside an element back to it (a
+/// loop with one augmenting disk, thesis 2.3.1) stay two: one chain from
+/// a point to itself is that point; [`Builder::collect_sites`] sees the
+/// joint between them.
 fn merge_touching_chains(shape: &Shape2d, pieces: Vec<Piece>) -> Vec<Piece> {
     let mut out: Vec<Piece> = Vec::with_capacity(pieces.len());
     for p in pieces {
-        if let (Some(Piece::Chain { to, .. }), Piece::Chain { from: f2, to: t2 }) = (out.last_mut(), p) {
-            if same_position(shape, *to, f2) {
+        if let (Some(Piece::Chain { from, to }), Piece::Chain { from: f2, to: t2 }) = (out.last_mut(), p) {
+            if same_position(shape, *to, f2) && *from != t2 {
                 *to = t2;
                 continue;
             }
@@ -249,7 +287,7 @@ fn merge_touching_chains(shape: &Shape2d, pieces: Vec<Piece>) -> Vec<Piece> {
         if let (Some(&Piece::Chain { from: f0, to: t0 }), Some(&Piece::Chain { from: fl, to: tl })) =
             (out.first(), out.last())
         {
-            if same_position(shape, tl, f0) {
+            if same_position(shape, tl, f0) && fl != t0 {
                 out[0] = Piece::Chain { from: fl, to: t0 };
                 out.pop();
             }
@@ -494,9 +532,13 @@ impl<K: AxisKernel> Builder<'_, K> {
                     self.push_fan(l, v, c - q, n_next, r);
                 }
             }
+            // The chain carries on from the one before (the two halves of
+            // a whole loop): the joint where they meet is inside the boundary.
+            let carries_on =
+                matches!(s.pieces[(j + m - 1) % m], Piece::Chain { to, .. } if m > 1 && same_position(shape, to, from));
             for i in 0..parts.len() {
                 let (e, lo, hi) = parts.get(i);
-                if i > 0 || (closed && e == 0 && lo == 0.0) {
+                if i > 0 || (closed && e == 0 && lo == 0.0) || (i == 0 && lo == 0.0 && carries_on) {
                     // The joint at this element's start, inside the chain.
                     if shape.joint(l, e) == JointKind::Reflex {
                         let prev = lp.element((e + n - 1) % n);
@@ -718,7 +760,11 @@ impl<K: AxisKernel> Builder<'_, K> {
     ) -> usize {
         // The same disk found twice (a joint disk that is also a branch
         // point or a leaf circle) is one event with all its footpoints.
-        let same = self.events.iter().position(|e| self.same_disk(e, center, radius));
+        // The two auxiliary arcs of one augmenting disk (thesis 2.3.1) are
+        // the two sides of a cycle cut open: two ends of this axis, glued
+        // into one node only with the other subshapes.
+        let twin = |e: &Event| matches!((e.kind, kind), (EventKind::Port(a), EventKind::Port(b)) if a == b);
+        let same = self.events.iter().position(|e| self.same_disk(e, center, radius) && !twin(e));
         let id = match same {
             Some(i) => {
                 let e = &mut self.events[i];

@@ -7,6 +7,7 @@
 //! elements, is no node of the true axis: its two edges lie on one conic
 //! and are merged back into one.
 
+use super::augment::{augment, AugmentError};
 use super::axis::{edge_kind, AxisEdge, AxisNode, MedialAxis2d, NodeKind, Primitive};
 use super::base_case::{self, BaseCaseError, EventKind, LocalAxis};
 use super::divide::{decompose_in, divide_into, leaf_size, Decomposition};
@@ -42,8 +43,13 @@ impl Default for AxisOptions {
 /// Why an axis could not be computed.
 #[derive(Debug, Clone, PartialEq)]
 pub enum AxisError {
-    /// Shapes with holes arrive with the augmented-domain step (thesis 2.3).
-    HolesUnsupported,
+    /// Hole `hole` (loop index) got no augmenting disk (thesis 2.3.1):
+    /// every direction tried touched more than two places, or rounding on
+    /// nearly touching loops broke the order of the disks.
+    Augment {
+        /// Loop index of the hole.
+        hole: usize,
+    },
     /// A subshape's axis broke down numerically near this point (what
     /// failed, for the error message).
     Numerical(Point, &'static str),
@@ -52,7 +58,7 @@ pub enum AxisError {
 impl std::fmt::Display for AxisError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            AxisError::HolesUnsupported => write!(f, "shapes with holes are not supported by the medial axis yet"),
+            AxisError::Augment { hole } => write!(f, "hole {hole} (loop {hole}) got no augmenting maximal disk"),
             AxisError::Numerical(p, what) => {
                 write!(f, "medial axis computation broke down near ({}, {}): {what}", p.x, p.y)
             }
@@ -61,6 +67,14 @@ impl std::fmt::Display for AxisError {
 }
 
 impl std::error::Error for AxisError {}
+
+impl From<AugmentError> for AxisError {
+    fn from(e: AugmentError) -> Self {
+        match e {
+            AugmentError::NoDisk { hole } | AugmentError::Cycle { hole } => AxisError::Augment { hole },
+        }
+    }
+}
 
 impl From<BaseCaseError> for AxisError {
     fn from(e: BaseCaseError) -> Self {
@@ -74,7 +88,8 @@ impl From<BaseCaseError> for AxisError {
     }
 }
 
-/// The medial axis of a shape without holes (thesis Algorithm 2).
+/// The medial axis of a shape, with any number of holes (thesis Algorithm
+/// 2 on the augmented domain of 2.3.1).
 ///
 /// Node positions and radii are in model units, accurate to a few
 /// multiples of the shape's tolerance ([`Shape2d::tolerance`], by default
@@ -110,10 +125,8 @@ pub fn medial_axis_with<K: AxisKernel>(
     opts: &AxisOptions,
     kernel: K,
 ) -> Result<MedialAxis2d, AxisError> {
-    if shape.loops().len() > 1 {
-        return Err(AxisError::HolesUnsupported);
-    }
     let finder = DiskFinder::with_kernel(shape, kernel);
+    let aug = augment(&finder)?;
     // The divide step is randomized: a numerical breakdown in one
     // decomposition is retried with other random choices (derived from the
     // seed, so the result stays deterministic); the first error is
@@ -121,7 +134,7 @@ pub fn medial_axis_with<K: AxisKernel>(
     let mut first_error = None;
     for attempt in 0..RETRIES {
         let seed = opts.seed.wrapping_add(attempt.wrapping_mul(0x9e37_79b9_7f4a_7c15));
-        let mut d = decompose_in(&finder, seed, opts.leaf_parts.max(3));
+        let mut d = decompose_in(&finder, &aug, seed, opts.leaf_parts.max(3));
         let solved = solve_leaves(&finder, &mut d, seed);
         match solved
             .and_then(|locals| glue(&finder, &d.cuts, &locals))
@@ -304,7 +317,7 @@ pub fn glue<K: AxisKernel>(
     merge_coinciding_branches(shape, &mut axis, SAME_DISK * tol);
     classify(&mut axis, tol);
     polish_branches(finder.kernel(), shape, &mut axis);
-    check_tree(&axis)?;
+    check_graph(&axis, shape.loops().len() - 1)?;
     Ok(axis)
 }
 
@@ -317,20 +330,25 @@ fn root(parent: &mut [usize], mut x: usize) -> usize {
     x
 }
 
-/// The axis of a shape without holes is a tree; anything else means the
+/// The axis of a shape with h holes is connected with exactly h
+/// independent cycles (a tree when h = 0); anything else means the
 /// subshapes were glued from inconsistent pieces, which is reported rather
 /// than returned.
-fn check_tree(axis: &MedialAxis2d) -> Result<(), AxisError> {
+fn check_graph(axis: &MedialAxis2d, holes: usize) -> Result<(), AxisError> {
     let n = axis.nodes.len();
     let mut parent: Vec<usize> = (0..n).collect();
+    let mut cycles = 0;
     for e in &axis.edges {
         let (a, b) = (root(&mut parent, e.from), root(&mut parent, e.to));
         if a == b {
-            return Err(AxisError::Numerical(axis.nodes[e.from].point, "the axis closed a cycle"));
+            cycles += 1;
+            if cycles > holes {
+                return Err(AxisError::Numerical(axis.nodes[e.from].point, "the axis closed a cycle too many"));
+            }
         }
         parent[a] = b;
     }
-    if n > 0 && axis.edges.len() + 1 != n {
+    if n > 0 && axis.edges.len() + 1 != n + holes {
         let lonely = (0..n).find(|&v| root(&mut parent, v) != root(&mut parent, 0)).unwrap_or(0);
         return Err(AxisError::Numerical(axis.nodes[lonely].point, "the axis fell apart into pieces"));
     }

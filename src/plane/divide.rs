@@ -20,6 +20,7 @@
 //! in 140 leaves on smooth biarc shapes and 1 in 80 on random star
 //! polygons).
 
+use super::augment::{augment, AugmentError, Augmentation};
 use super::maxdisk::{DiskFinder, Footpoint, MaxDisk};
 use super::maxdisk_star::slide_to_third;
 use super::subshape::{hugged_disk, BoundaryPos, ChainParts, Cut, Piece, Subshape, HUGGED_TIP, SLIVER_END};
@@ -95,16 +96,36 @@ fn pick_point(shape: &Shape2d, s: &Subshape, rng: &mut Mix) -> Option<(BoundaryP
     Some((BoundaryPos { loop_index: l, element, t }, (lo, hi)))
 }
 
-/// The boundary position of a footpoint.
+/// The boundary position of a footpoint: exactly at the vertex for a
+/// touch within the tolerance of a reflex vertex (on an arc the clamped
+/// closest point maps back to a fraction a few ulps short of it). Such a
+/// touch is the vertex's, and only at the vertex itself can
+/// [`Subshape::split`] tell which side of an augmenting disk it is on.
 fn position(shape: &Shape2d, f: &Footpoint) -> BoundaryPos {
-    let e = shape.loops()[f.element.loop_index].element(f.element.element);
-    BoundaryPos { loop_index: f.element.loop_index, element: f.element.element, t: e.param_of(f.point) }
+    let (l, k) = (f.element.loop_index, f.element.element);
+    let lp = &shape.loops()[l];
+    let e = lp.element(k);
+    let tol = shape.tolerance();
+    let t = if f.point.dist(e.start()) <= tol && shape.joint(l, k) == JointKind::Reflex {
+        0.0
+    } else if f.point.dist(e.end()) <= tol && shape.joint(l, (k + 1) % lp.len()) == JointKind::Reflex {
+        1.0
+    } else {
+        e.param_of(f.point)
+    };
+    BoundaryPos { loop_index: l, element: k, t }
 }
 
 /// The subshapes of `s` cut at `feet` by a disk that will get id `disk`,
 /// if every one of them has fewer original parts than `s` (`parts`).
-fn dividing(shape: &Shape2d, s: &Subshape, parts: usize, disk: usize, feet: &[BoundaryPos]) -> Option<Vec<Subshape>> {
-    let children = s.split(shape, disk, feet)?;
+fn dividing(
+    shape: &Shape2d,
+    s: &Subshape,
+    parts: usize,
+    (disk, center, cuts): (usize, Point, &[Cut]),
+    feet: &[BoundaryPos],
+) -> Option<Vec<Subshape>> {
+    let children = s.split(shape, disk, feet, center, cuts)?;
     children.iter().all(|c| original_parts(shape, c) < parts).then_some(children)
 }
 
@@ -136,13 +157,14 @@ fn cut_with<K: AxisKernel>(
     finder: &DiskFinder<K>,
     s: &Subshape,
     parts: usize,
-    disk: usize,
+    cuts: &[Cut],
     d: &MaxDisk,
     pos: BoundaryPos,
     (lo, hi): (f64, f64),
 ) -> Option<(Cut, Vec<Subshape>)> {
     let shape = finder.shape();
     let tol = finder.contact_tolerance();
+    let disk = cuts.len();
     if d.leaf_arc {
         // The disk is the arc's own circle (Observation 5): cut the whole
         // arc off as a leaf, with every other part the circle touches. A
@@ -158,7 +180,7 @@ fn cut_with<K: AxisKernel>(
             .into_iter()
             .filter(|f| f.element != own && f.point.dist(pa) > tol && f.point.dist(pb) > tol);
         let feet: Vec<BoundaryPos> = ends.into_iter().chain(others.map(|f| position(shape, &f))).collect();
-        let children = dividing(shape, s, parts, disk, &feet)?;
+        let children = dividing(shape, s, parts, (disk, d.center, cuts), &feet)?;
         return Some((Cut { center: d.center, radius: d.radius }, children));
     }
     if d.radius == 0.0 || d.footpoints.len() < 2 {
@@ -169,7 +191,7 @@ fn cut_with<K: AxisKernel>(
     if foot_at_convex_corner(shape, &feet, d.radius) {
         return None;
     }
-    let children = s.split(shape, disk, &feet)?;
+    let children = s.split(shape, disk, &feet, d.center, cuts)?;
     let counts: Vec<usize> = children.iter().map(|c| original_parts(shape, c)).collect();
     if counts.iter().all(|&c| c < parts) {
         return Some((Cut { center: d.center, radius: d.radius }, children));
@@ -194,13 +216,13 @@ fn cut_with<K: AxisKernel>(
     if foot_at_convex_corner(shape, &feet, r) {
         return None;
     }
-    let children = dividing(shape, s, parts, disk, &feet)?;
+    let children = dividing(shape, s, parts, (disk, c, cuts), &feet)?;
     Some((Cut { center: c, radius: r }, children))
 }
 
-/// Cuts the shape's outer loop (holes arrive with the Voronoi issue) down to
-/// leaves; `seed` fixes every random choice.
-pub fn decompose(shape: &Shape2d, seed: u64) -> Decomposition {
+/// Cuts the shape (its augmented domain when it has holes, thesis 2.3.1)
+/// down to leaves; `seed` fixes every random choice.
+pub fn decompose(shape: &Shape2d, seed: u64) -> Result<Decomposition, AugmentError> {
     decompose_with(shape, seed, LEAF_PARTS)
 }
 
@@ -227,8 +249,9 @@ fn cluster_cut<K: AxisKernel>(
     finder: &DiskFinder<K>,
     s: &Subshape,
     points: &[BoundaryPos],
-    disk: usize,
+    cuts: &[Cut],
 ) -> Option<(Cut, Vec<Subshape>)> {
+    let disk = cuts.len();
     let shape = finder.shape();
     if points.len() < 3 {
         return None;
@@ -250,7 +273,7 @@ fn cluster_cut<K: AxisKernel>(
                 continue;
             }
             let feet: Vec<BoundaryPos> = finder.touching(c, rad).iter().map(|f| position(shape, f)).collect();
-            let Some(children) = s.split(shape, disk, &feet) else { continue };
+            let Some(children) = s.split(shape, disk, &feet, c, cuts) else { continue };
             // Progress: every piece has fewer parts and zero-length arcs.
             let whole = leaf_size(shape, s);
             if children.len() >= 2 && children.iter().all(|ch| leaf_size(shape, ch) < whole) {
@@ -262,15 +285,22 @@ fn cluster_cut<K: AxisKernel>(
 }
 
 /// [`decompose`] with leaves of up to `leaf_parts` original parts.
-pub fn decompose_with(shape: &Shape2d, seed: u64, leaf_parts: usize) -> Decomposition {
-    decompose_in(&DiskFinder::new(shape), seed, leaf_parts)
+pub fn decompose_with(shape: &Shape2d, seed: u64, leaf_parts: usize) -> Result<Decomposition, AugmentError> {
+    let finder = DiskFinder::new(shape);
+    Ok(decompose_in(&finder, &augment(&finder)?, seed, leaf_parts))
 }
 
 /// [`decompose_with`] on the maximal disks of an existing `finder` (its
-/// index is built once for every decomposition of the same shape).
-pub fn decompose_in<K: AxisKernel>(finder: &DiskFinder<K>, seed: u64, leaf_parts: usize) -> Decomposition {
-    let mut out = Decomposition::default();
-    divide_into(finder, &mut out, vec![Subshape::whole_loop(finder.shape(), 0)], seed, leaf_parts);
+/// index is built once for every decomposition of the same shape),
+/// starting from the augmented domain `aug` of its shape.
+pub fn decompose_in<K: AxisKernel>(
+    finder: &DiskFinder<K>,
+    aug: &Augmentation,
+    seed: u64,
+    leaf_parts: usize,
+) -> Decomposition {
+    let mut out = Decomposition { cuts: aug.cuts.clone(), ..Decomposition::default() };
+    divide_into(finder, &mut out, vec![aug.boundary.clone()], seed, leaf_parts);
     out
 }
 
@@ -309,9 +339,9 @@ pub fn divide_into<K: AxisKernel>(
                 let (pos, range) = pick_point(shape, &s, &mut rng)?;
                 let at = ElementRef { loop_index: pos.loop_index, element: pos.element };
                 let d = finder.max_disk(at, pos.t);
-                cut_with(finder, &s, parts, out.cuts.len(), &d, pos, range)
+                cut_with(finder, &s, parts, &out.cuts, &d, pos, range)
             })
-            .or_else(|| cluster_cut(finder, &s, &points, out.cuts.len()));
+            .or_else(|| cluster_cut(finder, &s, &points, &out.cuts));
         match found {
             Some((cut, children)) => {
                 out.cuts.push(cut);
@@ -341,7 +371,7 @@ mod tests {
     fn smooth_shapes_divide_down_to_leaves_with_maximal_disks() {
         for n in [20, 100, 400, 2000] {
             let shape = Shape2d::from_bulge_loops(samples::flower_arcs(n), &ShapeOptions::default()).unwrap();
-            let d = decompose(&shape, 7);
+            let d = decompose(&shape, 7).unwrap();
             let tol = 1e-9 * shape.bbox().diagonal();
             for c in &d.cuts {
                 // Every dividing disk is a maximal disk: empty, touching.
@@ -354,7 +384,7 @@ mod tests {
             // reflex clusters); they must stay rare.
             assert!(d.stuck.len() * 50 <= d.leaves.len() + 10, "{n}: {} stuck of {}", d.stuck.len(), d.leaves.len());
             // Same seed, same result.
-            let again = decompose(&shape, 7);
+            let again = decompose(&shape, 7).unwrap();
             assert_eq!(again.cuts, d.cuts);
         }
     }
@@ -363,7 +393,7 @@ mod tests {
     fn polygons_with_reflex_vertices() {
         for seed in 0..10 {
             let shape = Shape2d::from_bulge_loops(samples::star_polygon(60, seed), &ShapeOptions::default()).unwrap();
-            let d = decompose(&shape, seed);
+            let d = decompose(&shape, seed).unwrap();
             assert!(d.stuck.len() <= 3, "{seed}: {} stuck of {}", d.stuck.len(), d.leaves.len());
             let tol = 1e-9 * shape.bbox().diagonal();
             for c in &d.cuts {

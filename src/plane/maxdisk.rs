@@ -205,6 +205,20 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
     /// corner itself: radius 0, touching both elements.
     pub fn max_disk(&self, at: ElementRef, s: f64) -> MaxDisk {
         let (p, n) = self.boundary_point(at, s);
+        self.grow(at, s, p, n)
+    }
+
+    /// [`max_disk`](Self::max_disk) grown along the unit direction `n`
+    /// instead of the element's own normal: at a reflex vertex (`s` = 0 or
+    /// 1 there) any direction of the vertex's fan of normals picks one disk
+    /// of the fan. `n` must point into the shape; at a point inside an
+    /// element only the element's own normal (within rounding) makes sense.
+    pub fn max_disk_toward(&self, at: ElementRef, s: f64, n: Point) -> MaxDisk {
+        let (p, _) = self.boundary_point(at, s);
+        self.grow(at, s, p, n)
+    }
+
+    fn grow(&self, at: ElementRef, s: f64, p: Point, n: Point) -> MaxDisk {
         let g = GrowingDisk { p, n };
         let own = self.index.global(at);
         let lp = &self.shape.loops()[at.loop_index];

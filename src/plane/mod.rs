@@ -7,6 +7,7 @@
 //! cuts a shape into ([`subshape`]). The divide loop, the base cases and the
 //! conquer step (2.2.1–2.2.4) build on them.
 
+pub mod augment;
 pub mod axis;
 pub mod axis_json;
 pub mod base_case;

@@ -218,13 +218,94 @@ impl Subshape {
         })
     }
 
-    /// Cuts this subshape by disk `disk` touching it at `feet` (positions on
-    /// its chains, any order): one subshape per footpoint, each starting at
-    /// a footpoint, in boundary order. `None` when a footpoint lies on none
-    /// of the chains.
-    pub fn split(&self, shape: &Shape2d, disk: usize, feet: &[BoundaryPos]) -> Option<Vec<Subshape>> {
+    /// The chain piece holding footpoint `p` of a disk centred at `center`
+    /// and where along it, with the position as that chain writes it.
+    ///
+    /// At a reflex vertex a chain may hold only part of the vertex's fan
+    /// of normals (which turns clockwise from the incoming element's normal
+    /// to the outgoing one's): a chain ending at the vertex with an
+    /// auxiliary arc after it holds the fan up to that arc's disk, one
+    /// starting there after an auxiliary arc holds it from that disk on. A
+    /// disk touching the vertex belongs where its own direction lies; both
+    /// ways of writing the vertex (end of one element, start of the next)
+    /// are tried. A vertex can end one chain and start another of the same
+    /// subshape when an augmenting disk of a hole touches there (thesis
+    /// 2.3.1). `None` when no chain holds the footpoint.
+    fn locate_foot(
+        &self,
+        shape: &Shape2d,
+        p: BoundaryPos,
+        center: Point,
+        cuts: &[Cut],
+    ) -> Option<(usize, (usize, f64), BoundaryPos)> {
+        let Some(w) = p.vertex(shape).filter(|&w| shape.joint(p.loop_index, w) == JointKind::Reflex) else {
+            return self.locate(shape, p).map(|(j, k)| (j, k, p));
+        };
+        let n = shape.loops()[p.loop_index].len();
+        let q = shape.loops()[p.loop_index].vertices()[w].p;
+        let m = (center - q).unit();
+        let m_len = self.pieces.len();
+        let dir = |j: usize| match self.pieces[j % m_len] {
+            Piece::Aux { disk } => Some((cuts[disk].center - q).unit()),
+            Piece::Chain { .. } => None,
+        };
+        // Directions within this much (radians) of a fan part's end are
+        // that end: disks found by sliding meet a vertex to about 1e-8.
+        const FAN_SLACK: f64 = 1e-7;
+        let holds = |j: usize, at: BoundaryPos| {
+            let Piece::Chain { from, to } = self.pieces[j] else { return false };
+            let after_ok = to != at || dir(j + 1).is_none_or(|d| d.cross(m) >= -FAN_SLACK);
+            let before_ok = from != at || dir(j + m_len - 1).is_none_or(|d| d.cross(m) <= FAN_SLACK);
+            after_ok && before_ok
+        };
+        let reps = [
+            p,
+            if p.t == 0.0 {
+                BoundaryPos { element: (w + n - 1) % n, t: 1.0, ..p }
+            } else {
+                BoundaryPos { element: w, t: 0.0, ..p }
+            },
+        ];
+        let found: Vec<(usize, (usize, f64), BoundaryPos)> = reps
+            .iter()
+            .filter_map(|&r| {
+                let (j, k) = self.locate_end_aware(shape, r)?;
+                holds(j, r).then_some((j, k, r))
+            })
+            .collect();
+        found.first().copied()
+    }
+
+    /// The chain that starts exactly at `p`, if any.
+    fn locate_from(&self, p: BoundaryPos) -> Option<(usize, (usize, f64))> {
+        self.pieces.iter().enumerate().find_map(|(j, piece)| match *piece {
+            Piece::Chain { from, .. } if from == p => Some((j, (0, p.t))),
+            _ => None,
+        })
+    }
+
+    /// [`locate`](Self::locate), but a chain that starts exactly at `p` is
+    /// preferred to one that only ends there (consecutive chains meeting at
+    /// a vertex both hold it).
+    fn locate_end_aware(&self, shape: &Shape2d, p: BoundaryPos) -> Option<(usize, (usize, f64))> {
+        self.locate_from(p).or_else(|| self.locate(shape, p))
+    }
+
+    /// Cuts this subshape by disk `disk` (centred at `center`) touching it
+    /// at `feet` (positions on its chains, any order): one subshape per
+    /// footpoint, each starting at a footpoint, in boundary order. `cuts`
+    /// are the disks the auxiliary arcs refer to. `None` when a footpoint
+    /// lies on none of the chains.
+    pub fn split(
+        &self,
+        shape: &Shape2d,
+        disk: usize,
+        feet: &[BoundaryPos],
+        center: Point,
+        cuts: &[Cut],
+    ) -> Option<Vec<Subshape>> {
         let mut at: Vec<(usize, (usize, f64), BoundaryPos)> =
-            feet.iter().map(|&f| self.locate(shape, f).map(|(j, k)| (j, k, f))).collect::<Option<_>>()?;
+            feet.iter().map(|&f| self.locate_foot(shape, f, center, cuts)).collect::<Option<_>>()?;
         at.sort_by(|a, b| (a.0, a.1 .0).cmp(&(b.0, b.1 .0)).then(a.1 .1.total_cmp(&b.1 .1)));
         let m = self.pieces.len();
         let chain = |j: usize| match self.pieces[j] {
@@ -359,7 +440,7 @@ mod tests {
                     .collect();
                 let disk = cuts.len();
                 cuts.push(Cut { center: d.center, radius: d.radius });
-                let Some(children) = parts[which].split(&shape, disk, &feet) else {
+                let Some(children) = parts[which].split(&shape, disk, &feet, d.center, &cuts) else {
                     cuts.pop();
                     continue;
                 };

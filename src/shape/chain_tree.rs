@@ -226,7 +226,43 @@ impl ChainTree {
             let (root, _) = t.build(lp, l as u32, 0, lp.len());
             t.roots.push(root);
         }
+        // Many loops (a plate with 10^5 holes): one hierarchy over the
+        // loops' roots, so that a query does not visit every loop.
+        if t.roots.len() > 2 {
+            let mut roots = std::mem::take(&mut t.roots);
+            let top = t.group(&mut roots);
+            t.roots.push(top);
+        }
         t
+    }
+
+    /// A node over the loop roots `ids`, split at the median of their box
+    /// centres along the wider side. Its chord is the point at its box's
+    /// centre, its reach the distance to the farthest child point it
+    /// bounds; it has no elements of its own.
+    fn group(&mut self, ids: &mut [u32]) -> u32 {
+        if ids.len() == 1 {
+            return ids[0];
+        }
+        let bbox = ids.iter().fold(BBox::EMPTY, |bb, &i| bb.union(&self.nodes[i as usize].bbox));
+        let centre = |n: &Node| (n.bbox.min + n.bbox.max) * 0.5;
+        let wide = bbox.width() >= bbox.height();
+        let coord = |n: &Node| if wide { centre(n).x } else { centre(n).y };
+        let mid = ids.len() / 2;
+        ids.select_nth_unstable_by(mid, |&a, &b| {
+            coord(&self.nodes[a as usize]).total_cmp(&coord(&self.nodes[b as usize]))
+        });
+        let (lo, hi) = ids.split_at_mut(mid);
+        let (left, right) = (self.group(lo), self.group(hi));
+        let c = (bbox.min + bbox.max) * 0.5;
+        let (l, r) = (self.nodes[left as usize], self.nodes[right as usize]);
+        let around = |n: &Node| c.dist(n.a).max(c.dist(n.b)) + n.reach;
+        let reach = around(&l).max(around(&r)).min(c.dist(bbox.max));
+        let mut obb = Oriented::along(Point::new(1.0, 0.0));
+        obb.add_box(&l.obb);
+        obb.add_box(&r.obb);
+        self.nodes.push(Node { a: c, b: c, reach, bbox, obb, lp: u32::MAX, lo: 0, hi: 0, left, right });
+        (self.nodes.len() - 1) as u32
     }
 
     fn build(&mut self, lp: &Loop, l: u32, lo: usize, hi: usize) -> (u32, Spread) {

@@ -145,3 +145,52 @@ pub fn slanted_comb(teeth: usize, len: f64) -> Vec<Vec<Vertex>> {
     // clockwise; the library normalises it anyway.
     vec![v]
 }
+
+/// A `k × k` grid of cells in a square of side `k`, each holding one hole
+/// at a random offset: a circle (two half arcs), a random convex polygon
+/// of 3–8 vertices, or a rounded triangle (segments and arcs), chosen by
+/// `seed`. Jittered so that no two augmenting disks or branch points are
+/// symmetric by construction; the outer square's edges are split once so
+/// the outer loop has reflex-free corners only.
+pub fn random_holes(k: usize, seed: u64) -> Vec<Vec<Vertex>> {
+    let k = k.max(1);
+    let s = k as f64;
+    let mut rng = Mix(seed ^ 0x686f_6c65);
+    let p = |x: f64, y: f64| Point::new(x, y);
+    let v = |q: Point, bulge: f64| Vertex { p: q, bulge };
+    let mut loops = vec![vec![
+        v(p(0.0, 0.0), 0.0),
+        v(p(s * 0.5, -0.01 * s), 0.0),
+        v(p(s, 0.0), 0.0),
+        v(p(s, s), 0.0),
+        v(p(0.0, s), 0.0),
+    ]];
+    for i in 0..k {
+        for j in 0..k {
+            let r = 0.12 + 0.2 * rng.next();
+            let c = p(i as f64 + 0.5 + (0.4 - r) * (rng.next() - 0.5), j as f64 + 0.5 + (0.4 - r) * (rng.next() - 0.5));
+            let turn = TAU * rng.next();
+            let at = |a: f64, rad: f64| c + Point::new((turn + a).cos(), (turn + a).sin()) * rad;
+            // Clockwise, as holes are stored (the library normalises anyway).
+            let hole = match rng.below(3) {
+                0 => vec![v(at(0.0, r), -1.0), v(at(TAU / 2.0, r), -1.0)],
+                1 => {
+                    let m = 3 + rng.below(6);
+                    (0..m).map(|q| v(at(-TAU * (q as f64 + 0.3 * rng.next()) / m as f64, r), 0.0)).collect()
+                }
+                _ => {
+                    // A triangle with its corners rounded: segment, arc, segment, ...
+                    let mut out = Vec::new();
+                    for q in 0..3 {
+                        let a = -TAU * q as f64 / 3.0;
+                        out.push(v(at(a + 0.25, r), -(0.5f64.tan() / 1.0).min(0.6) * 0.5));
+                        out.push(v(at(a - 0.25, r), 0.0));
+                    }
+                    out
+                }
+            };
+            loops.push(hole);
+        }
+    }
+    loops
+}

@@ -1,6 +1,8 @@
 //! Shape builders shared by the integration tests.
 #![allow(dead_code)]
 
+pub mod oracle;
+
 use medax::kernel::Point;
 use medax::shape::Vertex;
 use rand::{Rng, SeedableRng};

@@ -1,0 +1,152 @@
+//! Medial axes of shapes with holes (thesis 2.3.1, augmented domains),
+//! checked by the oracle that shares nothing with the algorithm: every
+//! sample at its radius from the boundary, one independent cycle per hole,
+//! and the maximal disk at random points of every loop (holes included)
+//! centred on the axis.
+
+mod common;
+
+use common::oracle::check;
+use common::{circle, poly, rect, shape, v};
+use medax::kernel::Point;
+use medax::plane::{medial_axis, AxisOptions, MedialAxis2d, NodeKind};
+use medax::shape::{samples, Vertex};
+
+fn axis_of(loops: Vec<Vec<Vertex>>) -> (medax::shape::Shape2d, MedialAxis2d) {
+    let s = shape(loops);
+    let a = medial_axis(&s, &AxisOptions::default()).expect("axis");
+    (s, a)
+}
+
+#[test]
+fn one_circular_hole_in_a_square() {
+    // A symmetric case: the augmenting disk below the hole touches the
+    // bottom edge only; the axis is a cycle round the hole with four
+    // spokes to the corners.
+    let (s, a) = axis_of(vec![rect(-2.0, -2.0, 2.0, 2.0), circle(0.0, 0.0, 1.0)]);
+    check(&s, &a, 400, 1);
+    assert_eq!(a.nodes.iter().filter(|n| n.kind == NodeKind::Corner).count(), 4);
+    // The cycle passes below the hole at radius 0.5, the augmenting disk.
+    assert!(a.nodes.iter().all(|n| n.radius <= 2.0));
+    let below = a
+        .sampled(&s, 1e-6)
+        .into_iter()
+        .flatten()
+        .any(|(c, r)| c.dist(Point::new(0.0, -1.5)) < 1e-6 && (r - 0.5).abs() < 1e-6);
+    assert!(below, "the cycle passes through the augmenting disk's centre");
+}
+
+#[test]
+fn polygon_holes_with_vertices_lowest() {
+    // Triangles and a diamond: the lowest points are reflex vertices of
+    // the shape, where the augmenting disk is one of the vertex's fan.
+    let tri = |x: f64, y: f64| poly(&[(x, y), (x + 0.4, y + 0.7), (x + 0.8, y + 0.1)]);
+    let diamond = poly(&[(3.0, 0.5), (3.5, 1.2), (3.0, 1.9), (2.5, 1.2)]);
+    let (s, a) = axis_of(vec![rect(0.0, 0.0, 5.0, 3.0), tri(0.5, 0.4), tri(1.4, 1.6), diamond]);
+    check(&s, &a, 400, 2);
+}
+
+#[test]
+fn hexagon_with_a_centred_hole_is_symmetric_below_the_hole() {
+    // The hexagon's bottom is a convex corner straight below the hole's
+    // lowest point: the straight-down disk touches both edges beside it
+    // and the hole (three contacts); the augmentation turns its "down".
+    let hex: Vec<(f64, f64)> = (0..6)
+        .map(|k| {
+            let t = std::f64::consts::TAU * k as f64 / 6.0 - std::f64::consts::FRAC_PI_2;
+            (3.0 * t.cos(), 3.0 * t.sin())
+        })
+        .collect();
+    let (s, a) = axis_of(vec![poly(&hex), circle(0.0, 0.0, 1.0)]);
+    check(&s, &a, 400, 3);
+}
+
+#[test]
+fn random_holes_of_arcs_and_segments() {
+    for (k, seed) in [(1, 1), (2, 2), (3, 3), (5, 4), (8, 5), (12, 6)] {
+        let (s, a) = axis_of(samples::random_holes(k, seed));
+        let r = check(&s, &a, 300, seed);
+        assert!(r.samples > 10 * k * k, "{k}: {} samples", r.samples);
+    }
+}
+
+#[test]
+fn perforated_plates_of_regular_grids() {
+    // Cocircular contacts everywhere: four holes meet at every cell corner.
+    for k in [1, 2, 3, 4, 6] {
+        let (s, a) = axis_of(samples::perforated_plate(k));
+        check(&s, &a, 300, k as u64);
+    }
+}
+
+#[test]
+fn holes_nearly_touching_each_other_and_the_outside() {
+    // Gaps of 1e-4 of the size: thin necks between holes and towards the
+    // outer boundary, where the augmenting disks are tiny.
+    let (s, a) = axis_of(vec![
+        rect(0.0, 0.0, 4.0, 2.0),
+        circle(1.0, 1.0, 0.9999),
+        poly(&[(2.0001, 0.2), (3.5, 0.2), (3.5, 1.8), (2.0001, 1.8)]),
+    ]);
+    check(&s, &a, 400, 7);
+}
+
+#[test]
+fn holes_stacked_so_each_disk_lands_on_the_next() {
+    // Each hole's augmenting disk touches the hole below it: the chain of
+    // loops reaches the outer boundary only through all the others.
+    let mut loops = vec![rect(0.0, 0.0, 2.0, 11.0)];
+    for k in 0..10 {
+        let y = 0.6 + k as f64;
+        loops.push(poly(&[(0.7, y), (1.3, y + 0.1), (1.2, y + 0.7), (0.75, y + 0.6)]));
+    }
+    let (s, a) = axis_of(loops);
+    check(&s, &a, 400, 8);
+}
+
+#[test]
+fn same_axis_under_transformations_with_holes() {
+    let base = samples::random_holes(3, 9);
+    let (s, a) = axis_of(base.clone());
+    check(&s, &a, 100, 9);
+    let key = |a: &MedialAxis2d| {
+        let mut b: Vec<(f64, f64, f64)> =
+            a.nodes.iter().filter(|n| n.kind == NodeKind::Branch).map(|n| (n.point.x, n.point.y, n.radius)).collect();
+        b.sort_by(|p, q| p.partial_cmp(q).unwrap());
+        b
+    };
+    let want = key(&a);
+    let same = |got: Vec<(f64, f64, f64)>, tol: f64, what: &str| {
+        assert_eq!(got.len(), want.len(), "{what}");
+        for p in &want {
+            let best = got
+                .iter()
+                .map(|q| (p.0 - q.0).abs().max((p.1 - q.1).abs()).max((p.2 - q.2).abs()))
+                .fold(f64::INFINITY, f64::min);
+            assert!(best <= tol, "{what}: {p:?} off by {best:e}");
+        }
+    };
+    // Holes listed in another order, each starting at another vertex.
+    let mut shuffled: Vec<Vec<Vertex>> = vec![base[0].clone()];
+    for h in base[1..].iter().rev() {
+        let mut h = h.clone();
+        h.rotate_left(1);
+        shuffled.push(h);
+    }
+    same(key(&axis_of(shuffled).1), 1e-9, "reordered");
+    // Every loop reversed (the library normalises orientation).
+    let reversed: Vec<Vec<Vertex>> = base
+        .iter()
+        .map(|l| {
+            let n = l.len();
+            (0..n).map(|i| v(l[(n - i) % n].p.x, l[(n - i) % n].p.y, -l[(n - 1 - i) % n].bulge)).collect()
+        })
+        .collect();
+    same(key(&axis_of(reversed).1), 1e-9, "reversed");
+    for (k, d) in [(1e-3, 0.0), (1e3, 0.0), (1.0, 1e4)] {
+        let moved: Vec<Vec<Vertex>> =
+            base.iter().map(|l| l.iter().map(|w| v(w.p.x * k + d, w.p.y * k + d, w.bulge)).collect()).collect();
+        let got = key(&axis_of(moved).1).into_iter().map(|(x, y, r)| ((x - d) / k, (y - d) / k, r / k)).collect();
+        same(got, if d != 0.0 { 1e-7 } else { 1e-9 }, &format!("scaled {k} moved {d}"));
+    }
+}
