@@ -105,6 +105,7 @@ fn main() {
                     Piece::Chain { from, to } => {
                         println!("   chain {:?} {:?} -> {:?} {:?}", from, from.point(&shape), to, to.point(&shape))
                     }
+                    Piece::Tour { from, to } => println!("   tour range {from}..={to}"),
                 }
             }
         }

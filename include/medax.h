@@ -562,9 +562,10 @@ enum mx_status mx_axis_options_default(struct mx_axis_options *out);
 /**
  * Computes the medial axis of `shape` (thesis Algorithm 2) and writes a new
  * handle to `*out`. `options` may be NULL (defaults). The handle keeps its
- * own copy of the shape. Fails with `MX_ERR_UNSUPPORTED` for shapes with
- * holes (not supported yet), `MX_ERR_NUMERICAL` when the construction
- * breaks down (position in `mx_error_info`), `MX_ERR_CANCELLED` when the
+ * own copy of the shape. Shapes with holes give an axis with one cycle
+ * per hole. Fails with `MX_ERR_NUMERICAL` when the construction breaks
+ * down (position in `mx_error_info`, or the hole's `loop_index` when no
+ * augmenting disk was found for it), `MX_ERR_CANCELLED` when the
  * progress callback asks to stop, `MX_ERR_INVALID_ARGUMENT` for bad
  * options; `*out` is then untouched.
  *

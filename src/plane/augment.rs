@@ -370,7 +370,7 @@ mod tests {
             .iter()
             .filter_map(|p| match p {
                 Piece::Chain { from, .. } => Some(from.loop_index),
-                Piece::Aux { .. } => None,
+                Piece::Aux { .. } | Piece::Tour { .. } => None,
             })
             .collect();
         // From the outer loop's one contact: 1, 2, 3 nested, back out, outer.

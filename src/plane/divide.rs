@@ -24,6 +24,7 @@ use super::augment::{augment, AugmentError, Augmentation};
 use super::maxdisk::{DiskFinder, Footpoint, MaxDisk};
 use super::maxdisk_star::slide_to_third;
 use super::subshape::{hugged_disk, BoundaryPos, ChainParts, Cut, Piece, Subshape, HUGGED_TIP, SLIVER_END};
+use super::tour::Tour;
 use crate::kernel::{AxisKernel, Contact, Point};
 use crate::shape::samples::Mix;
 use crate::shape::{ElementRef, JointKind, Shape2d};
@@ -52,6 +53,28 @@ pub fn original_parts(shape: &Shape2d, s: &Subshape) -> usize {
     s.chains().map(|(from, to)| ChainParts::new(shape, from, to).len()).sum()
 }
 
+/// [`original_parts`] counting the ranges of the augmented cycle `tour` too.
+fn parts_in(shape: &Shape2d, s: &Subshape, tour: &Tour) -> usize {
+    original_parts(shape, s)
+        + s.pieces
+            .iter()
+            .map(|p| if let Piece::Tour { from, to } = *p { tour.parts(from, to) } else { 0 })
+            .sum::<usize>()
+}
+
+/// Reflex single points of `s` (see [`leaf_size`]), ranges of `tour` included.
+fn points_in(shape: &Shape2d, s: &Subshape, tour: &Tour) -> usize {
+    reflex_points(shape, s).len()
+        + s.pieces
+            .iter()
+            .map(|p| if let Piece::Tour { from, to } = *p { tour.points(from, to) } else { 0 })
+            .sum::<usize>()
+}
+
+/// Subshapes of at most this many pieces once expanded hold no ranges of
+/// the augmented cycle: every rule of the divide step sees them whole.
+const EXPAND_BELOW: usize = 64;
+
 /// A seed for a subshape: its first piece and the caller's seed, so that
 /// the choice does not depend on the order in which subshapes are cut.
 fn seed_of(seed: u64, s: &Subshape) -> u64 {
@@ -60,6 +83,7 @@ fn seed_of(seed: u64, s: &Subshape) -> u64 {
         let (a, b) = match *p {
             Piece::Chain { from, to } => ((from.element as u64) << 32 ^ from.t.to_bits(), to.t.to_bits()),
             Piece::Aux { disk } => (disk as u64, 0),
+            Piece::Tour { from, to } => ((from as u64) << 32 ^ 0x746f_7572, to as u64),
         };
         h = (h ^ a).wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ b;
     }
@@ -68,12 +92,31 @@ fn seed_of(seed: u64, s: &Subshape) -> u64 {
 
 /// A random point on a random original part of `s`: the position and the
 /// part's fraction range, at a reflex end of the part when it has one.
-fn pick_point(shape: &Shape2d, s: &Subshape, rng: &mut Mix) -> Option<(BoundaryPos, (f64, f64))> {
-    let chains: Vec<(BoundaryPos, BoundaryPos)> = s.chains().collect();
-    if chains.is_empty() {
+fn pick_point(shape: &Shape2d, s: &Subshape, tour: &Tour, rng: &mut Mix) -> Option<(BoundaryPos, (f64, f64))> {
+    // The chains in piece order, those inside ranges of the augmented
+    // cycle counted in place.
+    let count = |p: &Piece| match *p {
+        Piece::Chain { from, to } => usize::from(from != to),
+        Piece::Tour { from, to } => tour.chains(from, to),
+        Piece::Aux { .. } => 0,
+    };
+    let total: usize = s.pieces.iter().map(count).sum();
+    if total == 0 {
         return None;
     }
-    let (from, to) = chains[rng.below(chains.len())];
+    let mut k = rng.below(total);
+    let (from, to) = s.pieces.iter().find_map(|p| {
+        let c = count(p);
+        if k >= c {
+            k -= c;
+            return None;
+        }
+        match *p {
+            Piece::Chain { from, to } => Some((from, to)),
+            Piece::Tour { from, .. } => Some(tour.chain(from, k)),
+            Piece::Aux { .. } => None,
+        }
+    })?;
     let parts = ChainParts::new(shape, from, to);
     if parts.is_empty() {
         return None;
@@ -122,11 +165,11 @@ fn dividing(
     shape: &Shape2d,
     s: &Subshape,
     parts: usize,
-    (disk, center, cuts): (usize, Point, &[Cut]),
+    (disk, center, cuts, tour): (usize, Point, &[Cut], &Tour),
     feet: &[BoundaryPos],
 ) -> Option<Vec<Subshape>> {
-    let children = s.split(shape, disk, feet, center, cuts)?;
-    children.iter().all(|c| original_parts(shape, c) < parts).then_some(children)
+    let children = tour.open_at(shape, s, feet).split(shape, disk, feet, center, cuts)?;
+    children.iter().all(|c| parts_in(shape, c, tour) < parts).then_some(children)
 }
 
 /// True when a footpoint of a disk of radius `r` lies within
@@ -157,7 +200,7 @@ fn cut_with<K: AxisKernel>(
     finder: &DiskFinder<K>,
     s: &Subshape,
     parts: usize,
-    cuts: &[Cut],
+    (cuts, tour): (&[Cut], &Tour),
     d: &MaxDisk,
     pos: BoundaryPos,
     (lo, hi): (f64, f64),
@@ -180,7 +223,7 @@ fn cut_with<K: AxisKernel>(
             .into_iter()
             .filter(|f| f.element != own && f.point.dist(pa) > tol && f.point.dist(pb) > tol);
         let feet: Vec<BoundaryPos> = ends.into_iter().chain(others.map(|f| position(shape, &f))).collect();
-        let children = dividing(shape, s, parts, (disk, d.center, cuts), &feet)?;
+        let children = dividing(shape, s, parts, (disk, d.center, cuts, tour), &feet)?;
         return Some((Cut { center: d.center, radius: d.radius }, children));
     }
     if d.radius == 0.0 || d.footpoints.len() < 2 {
@@ -191,8 +234,8 @@ fn cut_with<K: AxisKernel>(
     if foot_at_convex_corner(shape, &feet, d.radius) {
         return None;
     }
-    let children = s.split(shape, disk, &feet, d.center, cuts)?;
-    let counts: Vec<usize> = children.iter().map(|c| original_parts(shape, c)).collect();
+    let children = tour.open_at(shape, s, &feet).split(shape, disk, &feet, d.center, cuts)?;
+    let counts: Vec<usize> = children.iter().map(|c| parts_in(shape, c, tour)).collect();
     if counts.iter().all(|&c| c < parts) {
         return Some((Cut { center: d.center, radius: d.radius }, children));
     }
@@ -203,7 +246,8 @@ fn cut_with<K: AxisKernel>(
     // (on the side of the smaller subshape) to a disk touching a third part
     // or where a contact reaches its element's end (maxdisk*).
     let small = (0..children.len()).min_by_key(|&i| counts[i]).unwrap_or(0);
-    let ends: Vec<Point> = children[small].chains().flat_map(|(a, b)| [a.point(shape), b.point(shape)]).collect();
+    let ends: Vec<Point> =
+        tour.expand(&children[small]).chains().flat_map(|(a, b)| [a.point(shape), b.point(shape)]).collect();
     let junction = ends.iter().fold(Point::default(), |acc, &p| acc + p) * (1.0 / ends.len().max(1) as f64);
     let (c, r) = slide_to_third(finder, &d.footpoints[0], &d.footpoints[1], d.center, d.radius, junction)?;
     // Only an empty disk that touches the boundary can cut.
@@ -216,7 +260,7 @@ fn cut_with<K: AxisKernel>(
     if foot_at_convex_corner(shape, &feet, r) {
         return None;
     }
-    let children = dividing(shape, s, parts, (disk, c, cuts), &feet)?;
+    let children = dividing(shape, s, parts, (disk, c, cuts, tour), &feet)?;
     Some((Cut { center: c, radius: r }, children))
 }
 
@@ -300,7 +344,12 @@ pub fn decompose_in<K: AxisKernel>(
     leaf_parts: usize,
 ) -> Decomposition {
     let mut out = Decomposition { cuts: aug.cuts.clone(), ..Decomposition::default() };
-    divide_into(finder, &mut out, vec![aug.boundary.clone()], seed, leaf_parts);
+    if aug.cuts.is_empty() {
+        divide_into(finder, &mut out, vec![aug.boundary.clone()], seed, leaf_parts);
+    } else {
+        let tour = Tour::new(finder.shape(), &aug.boundary);
+        divide_along(finder, &mut out, vec![tour.root()], seed, leaf_parts, &tour);
+    }
     out
 }
 
@@ -315,39 +364,58 @@ pub fn divide_into<K: AxisKernel>(
     seed: u64,
     leaf_parts: usize,
 ) {
+    divide_along(finder, out, roots, seed, leaf_parts, &Tour::default());
+}
+
+/// [`divide_into`] for subshapes that may hold ranges of the augmented
+/// cycle `tour`; leaves and stuck subshapes come out expanded.
+fn divide_along<K: AxisKernel>(
+    finder: &DiskFinder<K>,
+    out: &mut Decomposition,
+    roots: Vec<Subshape>,
+    seed: u64,
+    leaf_parts: usize,
+    tour: &Tour,
+) {
     let shape = finder.shape();
     let mut todo = roots;
+    let ranged = |s: &Subshape| s.pieces.iter().any(|p| matches!(p, Piece::Tour { .. }));
     // Depth-first with an explicit stack: cut ids depend only on the order
     // of cuts, which is fixed by the seed.
-    while let Some(s) = todo.pop() {
-        let parts = original_parts(shape, &s);
-        let points = reflex_points(shape, &s);
+    while let Some(mut s) = todo.pop() {
+        if ranged(&s) && tour.expanded_len(&s) <= EXPAND_BELOW {
+            s = tour.expand(&s);
+        }
+        let parts = parts_in(shape, &s, tour);
         // Reflex vertices between auxiliary arcs are zero-length arcs: they
         // count towards a leaf's size like original parts.
         // A lobe's tip within a few tolerances of its one dividing disk is
         // a leaf however many parts it has: cutting it again would leave
         // bands of rounding between nearly equal disks.
-        if parts + points.len() <= leaf_parts
+        if parts + points_in(shape, &s, tour) <= leaf_parts
             || hugged_disk(shape, &s, &out.cuts, HUGGED_TIP * shape.tolerance()).is_some()
         {
-            out.leaves.push(s);
+            out.leaves.push(tour.expand(&s));
             continue;
         }
         let mut rng = Mix(seed_of(seed, &s));
         let found = (0..ATTEMPTS + (parts as u32) / 4)
             .find_map(|_| {
-                let (pos, range) = pick_point(shape, &s, &mut rng)?;
+                let (pos, range) = pick_point(shape, &s, tour, &mut rng)?;
                 let at = ElementRef { loop_index: pos.loop_index, element: pos.element };
                 let d = finder.max_disk(at, pos.t);
-                cut_with(finder, &s, parts, &out.cuts, &d, pos, range)
+                cut_with(finder, &s, parts, (&out.cuts, tour), &d, pos, range)
             })
-            .or_else(|| cluster_cut(finder, &s, &points, &out.cuts));
+            .or_else(|| {
+                let whole = tour.expand(&s);
+                cluster_cut(finder, &whole, &reflex_points(shape, &whole), &out.cuts)
+            });
         match found {
             Some((cut, children)) => {
                 out.cuts.push(cut);
                 todo.extend(children);
             }
-            None => out.stuck.push(s),
+            None => out.stuck.push(tour.expand(&s)),
         }
     }
 }

@@ -64,6 +64,15 @@ pub enum Piece {
         /// Which dividing disk.
         disk: usize,
     },
+    /// Pieces `from..=to` of an augmented domain's boundary cycle that no
+    /// cut has touched yet (see [`super::tour`]). Only the divide step sees
+    /// these; leaves and stuck subshapes come out with them expanded.
+    Tour {
+        /// First piece of the cycle.
+        from: usize,
+        /// Last piece of the cycle.
+        to: usize,
+    },
 }
 
 /// A dividing disk as subshapes see it.
@@ -169,9 +178,13 @@ pub(crate) const SLIVER_END: f64 = 4.0;
 /// circle. `None` for any other subshape. Stops at the first part that
 /// strays, so it costs little on ordinary subshapes.
 pub fn hugged_disk(shape: &Shape2d, s: &Subshape, cuts: &[Cut], slack: f64) -> Option<usize> {
+    // A range of the augmented cycle holds arcs of its own: not one disk's tip.
+    if s.pieces.iter().any(|p| matches!(p, Piece::Tour { .. })) {
+        return None;
+    }
     let mut disks = s.pieces.iter().filter_map(|p| match *p {
         Piece::Aux { disk } => Some(disk),
-        Piece::Chain { .. } => None,
+        Piece::Chain { .. } | Piece::Tour { .. } => None,
     });
     let (Some(disk), None) = (disks.next(), disks.next()) else { return None };
     let c = cuts[disk];
@@ -207,6 +220,11 @@ impl Subshape {
         })
     }
 
+    /// True when one of the chains holds `p`.
+    pub(crate) fn holds(&self, shape: &Shape2d, p: BoundaryPos) -> bool {
+        self.locate(shape, p).is_some()
+    }
+
     /// The chain piece holding `p` and where along it, if any.
     fn locate(&self, shape: &Shape2d, p: BoundaryPos) -> Option<(usize, (usize, f64))> {
         self.pieces.iter().enumerate().find_map(|(j, piece)| match *piece {
@@ -214,7 +232,7 @@ impl Subshape {
                 let (k, end) = (along(shape, from, p)?, along(shape, from, to)?);
                 (k >= (0, from.t) && k <= end).then_some((j, k))
             }
-            Piece::Aux { .. } => None,
+            Piece::Aux { .. } | Piece::Tour { .. } => None,
         })
     }
 
@@ -247,7 +265,7 @@ impl Subshape {
         let m_len = self.pieces.len();
         let dir = |j: usize| match self.pieces[j % m_len] {
             Piece::Aux { disk } => Some((cuts[disk].center - q).unit()),
-            Piece::Chain { .. } => None,
+            Piece::Chain { .. } | Piece::Tour { .. } => None,
         };
         // Directions within this much (radians) of a fan part's end are
         // that end: disks found by sliding meet a vertex to about 1e-8.
@@ -310,7 +328,7 @@ impl Subshape {
         let m = self.pieces.len();
         let chain = |j: usize| match self.pieces[j] {
             Piece::Chain { from, to } => (from, to),
-            Piece::Aux { .. } => unreachable!("footpoints are located on chains"),
+            Piece::Aux { .. } | Piece::Tour { .. } => unreachable!("footpoints are located on chains"),
         };
         let k = at.len();
         let mut out = Vec::with_capacity(k);
@@ -344,11 +362,11 @@ impl Subshape {
         let m = self.pieces.len();
         let start = |j: usize| match self.pieces[j % m] {
             Piece::Chain { from, .. } => Some(from.point(shape)),
-            Piece::Aux { .. } => None,
+            Piece::Aux { .. } | Piece::Tour { .. } => None,
         };
         let end = |j: usize| match self.pieces[j % m] {
             Piece::Chain { to, .. } => Some(to.point(shape)),
-            Piece::Aux { .. } => None,
+            Piece::Aux { .. } | Piece::Tour { .. } => None,
         };
         let mut out = Vec::new();
         for (j, piece) in self.pieces.iter().enumerate() {
@@ -373,6 +391,8 @@ impl Subshape {
                     }
                     out.push(Vertex { p: a, bulge: (sweep / 4.0).tan() });
                 }
+                // Ranges of an augmented cycle are expanded before drawing.
+                Piece::Tour { .. } => {}
             }
         }
         out
