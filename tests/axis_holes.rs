@@ -11,6 +11,7 @@ use common::{circle, poly, rect, shape, v};
 use medax::kernel::Point;
 use medax::plane::{medial_axis, AxisOptions, MedialAxis2d, NodeKind};
 use medax::shape::{samples, Vertex};
+use rand::{Rng, SeedableRng};
 
 fn axis_of(loops: Vec<Vec<Vertex>>) -> (medax::shape::Shape2d, MedialAxis2d) {
     let s = shape(loops);
@@ -148,5 +149,36 @@ fn same_axis_under_transformations_with_holes() {
             base.iter().map(|l| l.iter().map(|w| v(w.p.x * k + d, w.p.y * k + d, w.bulge)).collect()).collect();
         let got = key(&axis_of(moved).1).into_iter().map(|(x, y, r)| ((x - d) / k, (y - d) / k, r / k)).collect();
         same(got, if d != 0.0 { 1e-7 } else { 1e-9 }, &format!("scaled {k} moved {d}"));
+    }
+}
+
+#[test]
+fn a_hundred_and_a_thousand_holes() {
+    // Plates of 10 × 10 and 32 × 32 cells, a random hole in each (circles,
+    // polygons, rounded triangles): the augmented cycle is long and the
+    // divide step cuts it through ranges.
+    for (k, probes) in [(10, 400), (32, 300)] {
+        let (s, a) = axis_of(samples::random_holes(k, 40 + k as u64));
+        let r = check(&s, &a, probes, k as u64);
+        assert_eq!(s.loops().len(), k * k + 1);
+        assert!(r.samples > 20 * k * k, "{k}: {} samples", r.samples);
+    }
+}
+
+#[test]
+fn the_oracles_grid_agrees_with_a_scan() {
+    // The grid only prunes: its distances are the brute-force ones, for
+    // points inside, outside and far off the shape.
+    let s = shape(samples::random_holes(6, 11));
+    let b = common::oracle::Boundary::new(&s);
+    let bb = s.bbox();
+    let mut rng = rand::rngs::SmallRng::seed_from_u64(3);
+    for _ in 0..2000 {
+        let p = Point::new(
+            bb.min.x + rng.gen_range(-1.0..2.0) * bb.width(),
+            bb.min.y + rng.gen_range(-1.0..2.0) * bb.height(),
+        );
+        assert_eq!(b.distance(p), common::boundary_distance(&s, p), "{p:?}");
+        assert_eq!(b.inside(p), common::inside(&s, p), "{p:?}");
     }
 }

@@ -1,11 +1,130 @@
 //! The axis oracle: checks that share nothing with the library's
 //! constructions (brute-force distances, bisection along inward normals).
 
-use super::{bisected_radius, boundary_distance, inside};
-use medax::kernel::Point;
+use medax::kernel::{BBox, FilteredKernel, Point};
 use medax::plane::{MedialAxis2d, NodeKind};
 use medax::shape::{Element, JointKind, Shape2d};
 use rand::{Rng, SeedableRng};
+
+/// A uniform grid of items (by bounding box) answering "nearest item" by
+/// searching rings of cells outwards: plain enough to trust, and fast
+/// enough for shapes of thousands of holes in a debug build.
+pub struct Grid<T> {
+    items: Vec<T>,
+    origin: Point,
+    cell: f64,
+    nx: usize,
+    ny: usize,
+    cells: Vec<Vec<u32>>,
+}
+
+impl<T> Grid<T> {
+    /// Buckets `items` (each with its box) into about `items.len()` cells of `bbox`.
+    pub fn new(items: Vec<(T, BBox)>, bbox: BBox) -> Grid<T> {
+        let n = items.len().max(1) as f64;
+        let (w, h) = (bbox.width().max(1e-300), bbox.height().max(1e-300));
+        let cell = (w * h / n).sqrt().max(w.max(h) / 4096.0);
+        let nx = ((w / cell).ceil() as usize).max(1);
+        let ny = ((h / cell).ceil() as usize).max(1);
+        let mut cells = vec![Vec::new(); nx * ny];
+        let origin = bbox.min;
+        let ix = |x: f64, n: usize| ((x / cell).floor().max(0.0) as usize).min(n - 1);
+        let mut kept = Vec::with_capacity(items.len());
+        for (i, (t, b)) in items.into_iter().enumerate() {
+            let (x0, x1) = (ix(b.min.x - origin.x, nx), ix(b.max.x - origin.x, nx));
+            let (y0, y1) = (ix(b.min.y - origin.y, ny), ix(b.max.y - origin.y, ny));
+            for y in y0..=y1 {
+                for x in x0..=x1 {
+                    cells[y * nx + x].push(i as u32);
+                }
+            }
+            kept.push(t);
+        }
+        Grid { items: kept, origin, cell, nx, ny, cells }
+    }
+
+    /// The smallest `dist(item, p)`: rings of cells around `p` until the
+    /// best found is nearer than anything beyond the ring.
+    pub fn nearest(&self, p: Point, dist: impl Fn(&T, Point) -> f64) -> f64 {
+        let cx = ((p.x - self.origin.x) / self.cell).floor().clamp(0.0, (self.nx - 1) as f64) as i64;
+        let cy = ((p.y - self.origin.y) / self.cell).floor().clamp(0.0, (self.ny - 1) as f64) as i64;
+        let mut best = f64::INFINITY;
+        let rings = self.nx.max(self.ny) as i64;
+        let (nx, ny) = (self.nx as i64, self.ny as i64);
+        let visit = |x: i64, y: i64, best: &mut f64| {
+            if x >= 0 && y >= 0 && x < nx && y < ny {
+                for &i in &self.cells[(y * nx + x) as usize] {
+                    *best = best.min(dist(&self.items[i as usize], p));
+                }
+            }
+        };
+        for r in 0..=rings {
+            // The ring of cells at Chebyshev distance r: rows, then columns.
+            for x in cx - r..=cx + r {
+                visit(x, cy - r, &mut best);
+                if r > 0 {
+                    visit(x, cy + r, &mut best);
+                }
+            }
+            for y in cy - r + 1..cy + r {
+                visit(cx - r, y, &mut best);
+                visit(cx + r, y, &mut best);
+            }
+            // Cells not reached yet lie more than r cells away in x or y
+            // from p's (clamped) cell, so at least r cells from p itself.
+            if best <= r as f64 * self.cell {
+                break;
+            }
+        }
+        best
+    }
+}
+
+/// Distances to a shape's boundary by the grid: every element of every loop.
+pub struct Boundary<'s> {
+    shape: &'s Shape2d,
+    grid: Grid<Element>,
+    boxes: Vec<BBox>,
+}
+
+impl<'s> Boundary<'s> {
+    /// Indexes the elements of `shape`.
+    pub fn new(shape: &'s Shape2d) -> Boundary<'s> {
+        let items = shape.loops().iter().flat_map(|l| l.elements()).map(|e| (e, e.bbox())).collect();
+        let boxes = shape.loops().iter().map(|l| l.bbox()).collect();
+        Boundary { shape, grid: Grid::new(items, shape.bbox()), boxes }
+    }
+
+    /// Distance from `p` to the boundary.
+    pub fn distance(&self, p: Point) -> f64 {
+        self.grid.nearest(p, |e, q| e.closest_point(q).0)
+    }
+
+    /// Inside the shape: winding numbers with the exact kernel, only for
+    /// loops whose box holds `p` (outside its box a loop winds 0 times).
+    pub fn inside(&self, p: Point) -> bool {
+        let k = FilteredKernel;
+        let loops = self.shape.loops().iter().zip(&self.boxes);
+        loops.filter(|(_, b)| b.contains(p)).map(|(l, _)| l.winding_number(&k, p)).sum::<i32>() == 1
+    }
+
+    /// The largest t for which the disk of radius t at `p + t·n` stays
+    /// inside (as [`super::bisected_radius`], on the grid's distances).
+    pub fn bisected_radius(&self, p: Point, n: Point, diag: f64) -> f64 {
+        let fits = |t: f64| self.distance(p + n * t) >= t - 1e-12 * diag;
+        // No disk inside is wider than the diagonal.
+        let (mut lo, mut hi) = (0.0, diag);
+        for _ in 0..80 {
+            let mid = 0.5 * (lo + hi);
+            if fits(mid) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        lo
+    }
+}
 
 /// Distance from `p` to the sampled axis polyline.
 pub fn axis_distance(polylines: &[Vec<(Point, f64)>], p: Point) -> f64 {
@@ -38,6 +157,7 @@ pub struct Report {
 /// points of every loop.
 pub fn check(s: &Shape2d, axis: &MedialAxis2d, probes: usize, seed: u64) -> Report {
     let diag = s.bbox().diagonal();
+    let boundary = Boundary::new(s);
     let tol = 1e-9 * diag;
     let sample_tol = 1e-4 * diag;
     let lines = axis.sampled(s, sample_tol);
@@ -47,10 +167,10 @@ pub fn check(s: &Shape2d, axis: &MedialAxis2d, probes: usize, seed: u64) -> Repo
     for (e, pl) in axis.edges.iter().zip(&lines) {
         assert!(pl.len() >= 2, "edge {e:?}");
         for &(c, r) in pl {
-            let d = boundary_distance(s, c);
+            let d = boundary.distance(c);
             assert!((d - r).abs() <= tol, "edge {e:?}: sample {c:?} r {r} but distance {d}");
             if r > tol {
-                assert!(inside(s, c), "edge {e:?}: sample {c:?} outside");
+                assert!(boundary.inside(c), "edge {e:?}: sample {c:?} outside");
             }
             samples += 1;
         }
@@ -88,11 +208,22 @@ pub fn check(s: &Shape2d, axis: &MedialAxis2d, probes: usize, seed: u64) -> Repo
             NodeKind::Branch => assert!(deg[v] >= 3, "{n:?}"),
             NodeKind::Joint => assert_eq!(deg[v], 2, "{n:?}"),
         }
-        assert!((boundary_distance(s, n.point) - n.radius).abs() <= tol, "node {n:?}");
+        assert!((boundary.distance(n.point) - n.radius).abs() <= tol, "node {n:?}");
     }
     // Completeness: the maximal disk at random boundary points is centred
     // on the axis.
     let mut rng = rand::rngs::SmallRng::seed_from_u64(seed);
+    let mut pieces: Vec<((Point, Point), BBox)> = Vec::new();
+    for pl in &lines {
+        for w in pl.windows(2).map(|w| (w[0].0, w[1].0)).chain((pl.len() == 1).then(|| (pl[0].0, pl[0].0))) {
+            let b = BBox {
+                min: Point::new(w.0.x.min(w.1.x), w.0.y.min(w.1.y)),
+                max: Point::new(w.0.x.max(w.1.x), w.0.y.max(w.1.y)),
+            };
+            pieces.push((w, b));
+        }
+    }
+    let axis_grid = Grid::new(pieces, s.bbox());
     for _ in 0..probes {
         let lp = &s.loops()[rng.gen_range(0..s.loops().len())];
         let k = rng.gen_range(0..lp.len());
@@ -104,8 +235,12 @@ pub fn check(s: &Shape2d, axis: &MedialAxis2d, probes: usize, seed: u64) -> Repo
             Element::Arc(a) if a.is_ccw() => (a.center - p).unit(),
             Element::Arc(a) => (p - a.center).unit(),
         };
-        let c = p + n * bisected_radius(s, p, n, diag);
-        let d = axis_distance(&lines, c);
+        let c = p + n * boundary.bisected_radius(p, n, diag);
+        let d = axis_grid.nearest(c, |&(a, b), q| {
+            let ab = b - a;
+            let t = if ab.norm2() > 0.0 { ((q - a).dot(ab) / ab.norm2()).clamp(0.0, 1.0) } else { 0.0 };
+            q.dist(a + ab * t)
+        });
         assert!(d <= sample_tol + 1e-9 * diag, "probe at {p:?}: centre {c:?} is {d} from the axis");
     }
     Report { samples, probes }
