@@ -47,7 +47,7 @@ pub fn run(args: &AxisArgs) -> Result<(), ExitCode> {
     })?;
     let took = t.elapsed().as_secs_f64();
     let count = |k: NodeKind| axis.nodes.iter().filter(|n| n.kind == k).count();
-    println!(
+    out!(
         "medial axis: {} nodes ({} branch, {} corner, {} leaf, {} joint), {} edges",
         axis.nodes.len(),
         count(NodeKind::Branch),
@@ -56,16 +56,16 @@ pub fn run(args: &AxisArgs) -> Result<(), ExitCode> {
         count(NodeKind::Joint),
         axis.edges.len()
     );
-    println!("read in {read:.3} s, axis in {took:.3} s ({} elements)", shape.element_count());
+    out!("read in {read:.3} s, axis in {took:.3} s ({} elements)", shape.element_count());
     let tol = args.sample_tolerance.unwrap_or(1e-4 * shape.bbox().diagonal());
     if let Some(path) = &args.json {
         write_file(path, &axis.to_json(&shape, tol))?;
-        println!("wrote {}", path.display());
+        out!("wrote {}", path.display());
     }
     if let Some(path) = &args.svg {
         let pic = AxisPicture { width_px: 900.0, tolerance: tol, disks: args.disks };
         write_file(path, &axis.to_svg(&shape, &pic))?;
-        println!("wrote {}", path.display());
+        out!("wrote {}", path.display());
     }
     Ok(())
 }

@@ -16,11 +16,11 @@ pub fn run(output: &Path) -> Result<(), ExitCode> {
         ExitCode::from(70)
     };
     let shape = Shape2d::from_json_str(DEMO_SHAPE, &ShapeOptions::default()).map_err(|e| bug(e.to_string()))?;
-    println!("medax {} demo: the embedded profile", medax::VERSION);
-    print!("{}", report(&shape));
+    out!("medax {} demo: the embedded profile", medax::VERSION);
+    super::put(&report(&shape));
     let t = Instant::now();
     let axis = medial_axis(&shape, &AxisOptions::default()).map_err(|e| bug(e.to_string()))?;
-    println!(
+    out!(
         "medial axis: {} nodes, {} edges in {:.1} ms",
         axis.nodes.len(),
         axis.edges.len(),
@@ -28,6 +28,6 @@ pub fn run(output: &Path) -> Result<(), ExitCode> {
     );
     let pic = AxisPicture { width_px: 900.0, tolerance: 1e-4 * shape.bbox().diagonal(), disks: true };
     super::write_file(output, &axis.to_svg(&shape, &pic))?;
-    println!("wrote picture: {}", std::fs::canonicalize(output).unwrap_or(output.to_path_buf()).display());
+    out!("wrote picture: {}", std::fs::canonicalize(output).unwrap_or(output.to_path_buf()).display());
     Ok(())
 }

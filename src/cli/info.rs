@@ -30,7 +30,7 @@ pub fn report(s: &Shape2d) -> String {
 pub fn run(args: &ShapeArgs) -> Result<(), ExitCode> {
     let t = Instant::now();
     let s = args.load().map_err(|e| fail(&args.shape, &e))?;
-    print!("{}", report(&s));
-    println!("read and validated in {:.3} s", t.elapsed().as_secs_f64());
+    super::put(&report(&s));
+    out!("read and validated in {:.3} s", t.elapsed().as_secs_f64());
     Ok(())
 }

@@ -1,6 +1,21 @@
 //! Command-line interface: argument parsing and dispatch. Each subcommand
 //! lives in its own file and only calls the library's public API.
 
+/// `println!` that never panics: a closed stdout (`medax axis … | head`)
+/// loses the rest of the report, not the run.
+macro_rules! out {
+    ($($t:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stdout(), $($t)*);
+    }};
+}
+
+/// Writes `text` to stdout as it is, ignoring a closed stdout (see `out!`).
+fn put(text: &str) {
+    use std::io::Write as _;
+    let _ = std::io::stdout().write_all(text.as_bytes());
+}
+
 mod axis;
 mod demo;
 mod info;
@@ -98,7 +113,7 @@ pub fn run() -> ExitCode {
         Command::Info { shape } => info::run(&shape),
         Command::Axis(args) => axis::run(&args),
         Command::Draw { shape, output, width } => match shape.load() {
-            Ok(s) => write_file(&output, &s.to_svg(width)).map(|_| println!("wrote {}", output.display())),
+            Ok(s) => write_file(&output, &s.to_svg(width)).map(|_| out!("wrote {}", output.display())),
             Err(e) => Err(fail(&shape.shape, &e)),
         },
         Command::Demo { output } => demo::run(&output),
