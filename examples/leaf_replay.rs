@@ -1,5 +1,5 @@
 //! Solves one leaf written by `axis_debug` (`MEDAX_DUMP=DIR`) on its own:
-//! `cargo run --release --example leaf_replay -- star|flower|holes|plate N SEED LEAF.txt`.
+//! `cargo run --release --example leaf_replay -- star|flower|holes|plate|SHAPE.json N SEED LEAF.txt`.
 //! Rebuilds the sample shape, reads the leaf's pieces and dividing disks
 //! (exact bits, `plane::leaf_text`) and prints the base case's result, so a
 //! breakdown found in a large decomposition can be traced in seconds.
@@ -10,18 +10,23 @@ use medax::shape::{samples, Shape2d, ShapeOptions};
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     if args.len() < 5 {
-        eprintln!("usage: leaf_replay star|flower|holes|plate N SEED LEAF.txt");
+        eprintln!("usage: leaf_replay star|flower|holes|plate|SHAPE.json N SEED LEAF.txt");
         std::process::exit(2);
     }
     let n: usize = args[2].parse().expect("element count");
     let seed: u64 = args[3].parse().expect("star seed");
-    let loops = match args[1].as_str() {
-        "flower" => samples::flower_arcs(n),
-        "holes" => samples::random_holes(n, seed),
-        "plate" => samples::perforated_plate(n),
-        _ => samples::star_polygon(n, seed),
+    let shape = if args[1].ends_with(".json") {
+        let text = std::fs::read_to_string(&args[1]).expect("readable shape file");
+        Shape2d::from_json_str(&text, &ShapeOptions::default()).expect("valid shape file")
+    } else {
+        let loops = match args[1].as_str() {
+            "flower" => samples::flower_arcs(n),
+            "holes" => samples::random_holes(n, seed),
+            "plate" => samples::perforated_plate(n),
+            _ => samples::star_polygon(n, seed),
+        };
+        Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).expect("valid sample")
     };
-    let shape = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).expect("valid sample");
     let finder = DiskFinder::new(&shape);
     let text = std::fs::read_to_string(&args[4]).expect("readable leaf");
     let (s, cuts) = leaf_text::read_leaf(&shape, &text).unwrap_or_else(|e| panic!("{e}"));

@@ -182,3 +182,19 @@ fn the_oracles_grid_agrees_with_a_scan() {
         assert_eq!(b.inside(p), common::inside(&s, p), "{p:?}");
     }
 }
+
+#[test]
+fn augmenting_disks_meeting_at_one_vertex() {
+    // From the CGAL cross-check: a hole's lowest vertex is also where the
+    // augmenting disk of the hole above lands, on the near side of the
+    // vertex's fan. The boundary cycle must walk round the lower hole
+    // before taking that disk; taken in the wrong order, subshapes held a
+    // whole hole without the boundary facing it and base cases broke down.
+    for name in ["seed2_holed_36", "seed5_holed_7", "seed12345_holed_9"] {
+        let path = format!("{}/tests/data/holed_{name}.json", env!("CARGO_MANIFEST_DIR"));
+        let text = std::fs::read_to_string(&path).unwrap();
+        let s = medax::shape::Shape2d::from_json_str(&text, &medax::shape::ShapeOptions::default()).unwrap();
+        let a = medial_axis(&s, &AxisOptions::default()).unwrap_or_else(|e| panic!("{name}: {e}"));
+        check(&s, &a, 200, 12);
+    }
+}

@@ -70,6 +70,10 @@ struct Contact {
     dir: Point,
     /// The hole on the disk's other side; `None` for the hole's own contact.
     child: Option<usize>,
+    /// Sorted before the hole's own contact and moved behind it: at the
+    /// own contact's position, such a contact comes at the end of the walk
+    /// round the loop, not at its start.
+    wrapped: bool,
 }
 
 /// The augmented domain of `finder`'s shape. A shape without holes gives
@@ -109,8 +113,14 @@ fn disks<K: AxisKernel>(finder: &DiskFinder<K>, down: Point) -> Result<Vec<(Cont
         }
         let other = snapped(shape, f.element, f.point);
         let disk = hole - 1;
-        let own = Contact { pos: normalised(shape, pos), disk, dir: d.center - d.footpoints[0].point, child: None };
-        let far = Contact { pos: other, disk, dir: d.center - f.point, child: Some(hole) };
+        let own = Contact {
+            pos: normalised(shape, pos),
+            disk,
+            dir: d.center - d.footpoints[0].point,
+            child: None,
+            wrapped: false,
+        };
+        let far = Contact { pos: other, disk, dir: d.center - f.point, child: Some(hole), wrapped: false };
         out.push((own, far, Cut { center: d.center, radius: d.radius }));
     }
     // Every hole's chain of parents reaches the outer loop.
@@ -229,6 +239,10 @@ fn build(shape: &Shape2d, found: Vec<(Contact, Contact, Cut)>) -> Augmentation {
         if l > 0 {
             let own = list.iter().position(|c| c.child.is_none()).expect("every hole has its own contact");
             list.rotate_left(own);
+            let len = list.len();
+            for c in &mut list[len - own..] {
+                c.wrapped = true;
+            }
         }
     }
     let mut pieces = Vec::new();
@@ -270,8 +284,11 @@ fn build(shape: &Shape2d, found: Vec<(Contact, Contact, Cut)>) -> Augmentation {
 fn push_chain(shape: &Shape2d, pieces: &mut Vec<Piece>, list: &[Contact], k: usize) {
     let n = shape.loops()[list[0].pos.loop_index].len();
     let first = list[0].pos;
-    let lead = list.iter().take_while(|c| c.pos == first).count();
-    let at_end = |i: usize| i >= lead && list[i..].iter().all(|c| c.pos == first);
+    // Leading: at the first position and not wrapped round (those sort
+    // after the first contact in its vertex's fan); trailing: wrapped and
+    // at the first position (before it in the fan).
+    let lead = list.iter().take_while(|c| c.pos == first && !c.wrapped).count();
+    let at_end = |i: usize| i >= lead && list[i..].iter().all(|c| c.pos == first && c.wrapped);
     // Where the chain starts and ends: Start / End mark the first
     // position reached at the start of the walk round the loop or at its end.
     let from = list[k].pos;
