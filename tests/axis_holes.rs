@@ -198,3 +198,70 @@ fn augmenting_disks_meeting_at_one_vertex() {
         check(&s, &a, 200, 12);
     }
 }
+
+/// An outer loop starting at the apex of an upward spike (a reflex vertex
+/// where the outer loop's boundary cycle begins and ends), with holes
+/// above it; `extra` more holes make the cycle long enough to be cut
+/// through ranges.
+fn spike(twin: bool, extra: bool) -> Vec<Vec<Vertex>> {
+    let mut loops = vec![vec![
+        v(5.5, 1.0, 0.0),
+        v(6.0, 0.0, 0.0),
+        v(30.0, 0.0, 0.0),
+        v(30.0, 10.0, 0.0),
+        v(0.0, 10.0, 0.0),
+        v(0.0, 0.0, 0.0),
+        v(5.0, 0.0, 0.0),
+    ]];
+    if twin {
+        // Two holes whose augmenting disks both land on the apex.
+        loops.push(vec![v(5.45, 2.0, -1.0), v(4.95, 2.0, -1.0)]);
+        loops.push(vec![v(6.05, 2.0, -1.0), v(5.55, 2.0, -1.0)]);
+    } else {
+        loops.push(vec![v(6.0, 2.0, -1.0), v(5.0, 2.0, -1.0)]);
+        loops.push(vec![v(4.6, 2.1, -1.0), v(4.0, 2.1, -1.0)]);
+        loops.push(vec![v(7.1, 2.2, -1.0), v(6.5, 2.2, -1.0)]);
+    }
+    if extra {
+        for i in 0..6 {
+            for j in 0..5 {
+                let (x, y) = (9.0 + 3.5 * i as f64 + 0.1 * j as f64, 2.0 + 1.7 * j as f64 + 0.05 * i as f64);
+                loops.push(vec![v(x + 0.4, y, -1.0), v(x - 0.4, y, -1.0)]);
+            }
+        }
+    }
+    loops
+}
+
+#[test]
+fn disks_landing_on_a_reflex_vertex_of_the_outer_loop() {
+    // Review findings: the cycle's last chain and first arc meet at the
+    // apex (opened pieces must wrap round the cycle's end), and two
+    // augmenting disks at one vertex leave a single point between their
+    // arcs that shares its position with the chain beyond them.
+    for (twin, extra) in [(false, false), (false, true), (true, false), (true, true)] {
+        let (s, a) = axis_of(spike(twin, extra));
+        check(&s, &a, 300, 13);
+        for seed in 1..6 {
+            let b = medial_axis(&s, &AxisOptions { seed, ..AxisOptions::default() })
+                .unwrap_or_else(|e| panic!("twin {twin} extra {extra} seed {seed}: {e}"));
+            assert_eq!(b.edges.len() + 1, b.nodes.len() + s.loops().len() - 1);
+        }
+    }
+}
+
+#[test]
+fn a_row_of_holes_each_landing_on_the_outer_loop() {
+    // Every augmenting disk lands on the outer loop's bottom edge: a loop
+    // with hundreds of contacts, found by binary search.
+    let h = 300;
+    let mut loops = vec![vec![v(0.0, 0.0, 0.0), v(h as f64, 0.0, 0.0), v(h as f64, 1.0, 0.0), v(0.0, 1.0, 0.0)]];
+    for i in 0..h {
+        let x = i as f64 + 0.5 + 0.05 * ((i * 7919 % 13) as f64 / 13.0 - 0.5);
+        let y = 0.5 + 0.05 * ((i * 104_729 % 17) as f64 / 17.0 - 0.5);
+        let r = 0.3 + 0.02 * ((i * 31 % 11) as f64 / 11.0);
+        loops.push(vec![v(x + r, y, -1.0), v(x - r, y, -1.0)]);
+    }
+    let (s, a) = axis_of(loops);
+    check(&s, &a, 300, 14);
+}

@@ -358,7 +358,7 @@ fn check_graph(axis: &MedialAxis2d, holes: usize) -> Result<(), AxisError> {
 /// Every subtree of the axis ends in leaves, and on a polygon every leaf
 /// is a convex corner: one corner node per convex vertex, each at its
 /// vertex, is what shows that no piece of the axis went missing between
-/// subshapes (the tree check cannot: the rest of a tree is a tree).
+/// subshapes (the graph check cannot: the rest of a tree is a tree).
 fn check_corners(shape: &Shape2d, axis: &MedialAxis2d) -> Result<(), AxisError> {
     let mut at: Vec<Point> = axis.nodes.iter().filter(|n| n.kind == NodeKind::Corner).map(|n| n.point).collect();
     if at.len() == shape.joint_counts()[JointKind::Convex as usize] {

@@ -113,7 +113,7 @@ fn pick_point(shape: &Shape2d, s: &Subshape, tour: &Tour, rng: &mut Mix) -> Opti
         }
         match *p {
             Piece::Chain { from, to } => Some((from, to)),
-            Piece::Tour { from, .. } => Some(tour.chain(from, k)),
+            Piece::Tour { from, .. } => tour.chain(from, k),
             Piece::Aux { .. } => None,
         }
     })?;

@@ -94,7 +94,7 @@ pub struct Subshape {
 /// Where a position lies along a chain starting at `from`: (elements
 /// after `from.element`, fraction), comparable lexicographically. `None`
 /// on another loop.
-fn along(shape: &Shape2d, from: BoundaryPos, p: BoundaryPos) -> Option<(usize, f64)> {
+pub(crate) fn along(shape: &Shape2d, from: BoundaryPos, p: BoundaryPos) -> Option<(usize, f64)> {
     if p.loop_index != from.loop_index {
         return None;
     }
@@ -220,11 +220,6 @@ impl Subshape {
         })
     }
 
-    /// True when one of the chains holds `p`.
-    pub(crate) fn holds(&self, shape: &Shape2d, p: BoundaryPos) -> bool {
-        self.locate(shape, p).is_some()
-    }
-
     /// The chain piece holding `p` and where along it, if any.
     fn locate(&self, shape: &Shape2d, p: BoundaryPos) -> Option<(usize, (usize, f64))> {
         self.pieces.iter().enumerate().find_map(|(j, piece)| match *piece {
@@ -284,29 +279,31 @@ impl Subshape {
                 BoundaryPos { element: w, t: 0.0, ..p }
             },
         ];
-        let found: Vec<(usize, (usize, f64), BoundaryPos)> = reps
-            .iter()
-            .filter_map(|&r| {
-                let (j, k) = self.locate_end_aware(shape, r)?;
-                holds(j, r).then_some((j, k, r))
-            })
-            .collect();
-        found.first().copied()
-    }
-
-    /// The chain that starts exactly at `p`, if any.
-    fn locate_from(&self, p: BoundaryPos) -> Option<(usize, (usize, f64))> {
-        self.pieces.iter().enumerate().find_map(|(j, piece)| match *piece {
-            Piece::Chain { from, .. } if from == p => Some((j, (0, p.t))),
-            _ => None,
+        // Every chain holding either way of writing the vertex (one that
+        // starts there first: chains meeting at the vertex both hold it),
+        // the first whose part of the fan holds the disk. A single point
+        // between two augmenting disks at one vertex shares its position
+        // with the chain beyond them, so the first candidate is not enough.
+        reps.iter().find_map(|&r| {
+            self.every_location(shape, r).into_iter().find(|&(j, _)| holds(j, r)).map(|(j, k)| (j, k, r))
         })
     }
 
-    /// [`locate`](Self::locate), but a chain that starts exactly at `p` is
-    /// preferred to one that only ends there (consecutive chains meeting at
-    /// a vertex both hold it).
-    fn locate_end_aware(&self, shape: &Shape2d, p: BoundaryPos) -> Option<(usize, (usize, f64))> {
-        self.locate_from(p).or_else(|| self.locate(shape, p))
+    /// Every chain piece holding `p` and where along it: those that start
+    /// exactly at `p` first, then the rest in piece order.
+    fn every_location(&self, shape: &Shape2d, p: BoundaryPos) -> Vec<(usize, (usize, f64))> {
+        let starts = self.pieces.iter().enumerate().filter_map(|(j, piece)| match *piece {
+            Piece::Chain { from, .. } if from == p => Some((j, (0, p.t))),
+            _ => None,
+        });
+        let holding = self.pieces.iter().enumerate().filter_map(|(j, piece)| match *piece {
+            Piece::Chain { from, to } if from != p => {
+                let (k, end) = (along(shape, from, p)?, along(shape, from, to)?);
+                (k >= (0, from.t) && k <= end).then_some((j, k))
+            }
+            _ => None,
+        });
+        starts.chain(holding).collect()
     }
 
     /// Cuts this subshape by disk `disk` (centred at `center`) touching it

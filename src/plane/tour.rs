@@ -1,7 +1,7 @@
 //! The augmented domain's boundary cycle (thesis 2.3.1) kept whole while
 //! the divide step cuts it.
 //!
-//! With h holes the cycle has about 3h pieces, and each cut copies the
+//! With h holes the cycle has about 4h pieces, and each cut copies the
 //! pieces of the subshape it cuts: a plate of holes, whose tree of loops
 //! is a comb of columns, would cost O(h^1.5) or worse. Subshapes hold
 //! [`Piece::Tour`] ranges of the cycle instead, opened into real pieces
@@ -10,7 +10,7 @@
 //! Counts over ranges (original parts, reflex points, chains, auxiliary
 //! arcs) come from prefix sums.
 
-use super::subshape::{BoundaryPos, ChainParts, Piece, Subshape};
+use super::subshape::{along, BoundaryPos, ChainParts, Piece, Subshape};
 use crate::shape::{JointKind, Shape2d};
 use std::borrow::Cow;
 
@@ -24,8 +24,11 @@ pub struct Tour {
     points: Vec<usize>,
     chains: Vec<usize>,
     aux: Vec<usize>,
-    /// For each loop, the indices of its chains in the cycle.
+    /// For each loop, the indices of its chains in the cycle, and where
+    /// each starts along the loop from the first one's start (a whole turn
+    /// on for those starting back there after the walk went round).
     on_loop: Vec<Vec<usize>>,
+    on_key: Vec<Vec<(usize, f64)>>,
 }
 
 /// Pieces opened on either side of one a footpoint lands on: the side
@@ -43,6 +46,7 @@ impl Tour {
             chains: Vec::with_capacity(n + 1),
             aux: Vec::with_capacity(n + 1),
             on_loop: vec![Vec::new(); shape.loops().len()],
+            on_key: vec![Vec::new(); shape.loops().len()],
         };
         let (mut parts, mut points, mut chains, mut aux) = (0, 0, 0, 0);
         for (i, p) in boundary.pieces.iter().enumerate() {
@@ -61,13 +65,34 @@ impl Tour {
                     t.on_loop[from.loop_index].push(i);
                 }
                 Piece::Aux { .. } => aux += 1,
-                Piece::Tour { .. } => unreachable!("a tour is made of chains and arcs"),
+                // A cycle is made of chains and arcs; a range in it holds nothing.
+                Piece::Tour { .. } => {}
             }
         }
         t.parts.push(parts);
         t.points.push(points);
         t.chains.push(chains);
         t.aux.push(aux);
+        for (l, list) in t.on_loop.iter().enumerate() {
+            let from_of = |i: usize| match t.pieces[i] {
+                Piece::Chain { from, .. } => from,
+                _ => BoundaryPos { loop_index: l, element: 0, t: 0.0 },
+            };
+            let Some(&first) = list.first() else { continue };
+            let origin = from_of(first);
+            let n = shape.loops()[l].len();
+            let mut went_on = false;
+            for &i in list {
+                let f = from_of(i);
+                let k = if f == origin && went_on {
+                    (n, origin.t)
+                } else {
+                    along(shape, origin, f).unwrap_or((n, origin.t))
+                };
+                went_on |= f != origin;
+                t.on_key[l].push(k);
+            }
+        }
         t
     }
 
@@ -96,14 +121,15 @@ impl Tour {
         self.aux[to + 1] - self.aux[from]
     }
 
-    /// The `k`-th chain (more than a point) in range `from..=to`.
-    pub fn chain(&self, from: usize, k: usize) -> (BoundaryPos, BoundaryPos) {
-        let want = self.chains[from] + k;
-        // The first piece whose prefix passes `want` is the chain.
-        let i = self.chains.partition_point(|&c| c <= want) - 1;
-        match self.pieces[i] {
-            Piece::Chain { from, to } => (from, to),
-            _ => unreachable!("prefix counts step only at chains"),
+    /// The `k`-th chain (more than a point) of the range starting at
+    /// `from`; `None` past the cycle's end.
+    pub fn chain(&self, from: usize, k: usize) -> Option<(BoundaryPos, BoundaryPos)> {
+        let want = self.chains.get(from)? + k;
+        // The piece after which the prefix passes `want` is the chain.
+        let i = self.chains.partition_point(|&c| c <= want).checked_sub(1)?;
+        match self.pieces.get(i)? {
+            &Piece::Chain { from, to } => Some((from, to)),
+            _ => None,
         }
     }
 
@@ -124,6 +150,59 @@ impl Tour {
         s.pieces.iter().map(|p| if let Piece::Tour { from, to } = *p { to + 1 - from } else { 1 }).sum()
     }
 
+    /// Pushes the cycle's chains on `q`'s loop that hold `q`. A loop's
+    /// chains follow its travel order from the first one's start, so a
+    /// binary search finds the last chain starting at or before `q`; the
+    /// chains starting at that same place (single points between disks
+    /// at one vertex) and the one before them are the only others that
+    /// can hold it.
+    fn chains_holding(&self, shape: &Shape2d, q: BoundaryPos, out: &mut Vec<usize>) {
+        let list = &self.on_loop[q.loop_index];
+        let from_of = |i: usize| match self.pieces[i] {
+            Piece::Chain { from, to } => Some((from, to)),
+            _ => None,
+        };
+        let Some((origin, _)) = list.first().and_then(|&i| from_of(i)) else { return };
+        let keys = &self.on_key[q.loop_index];
+        let key = |j: usize| keys[j];
+        let holds = |i: usize| {
+            from_of(i).is_some_and(|(from, to)| {
+                let (k, end) = (along(shape, from, q), along(shape, from, to));
+                matches!((k, end), (Some(k), Some(end)) if k >= (0, from.t) && k <= end)
+            })
+        };
+        let kq = along(shape, origin, q).unwrap_or((usize::MAX, 0.0));
+        let mut starts = vec![keys.partition_point(|&k| k <= kq)];
+        if q == origin {
+            starts.push(list.len());
+        }
+        for idx in starts {
+            // Back from the last chain starting at or before `q`: the run
+            // of chains starting where it does, and one more.
+            let mut j = idx;
+            let mut group: Option<(usize, f64)> = None;
+            while j > 0 {
+                j -= 1;
+                if holds(list[j]) {
+                    out.push(list[j]);
+                }
+                let kf = key(j);
+                match group {
+                    None => group = Some(kf),
+                    Some(g) if g != kf => break,
+                    Some(_) => {}
+                }
+            }
+        }
+        // Past everything (q before the first start on its element): the
+        // last chain runs round to it.
+        if let Some(&last) = list.last() {
+            if holds(last) {
+                out.push(last);
+            }
+        }
+    }
+
     /// `s` with the cycle's chains that hold any of `feet` (either way of
     /// writing a vertex), and [`MARGIN`] pieces on either side, taken out
     /// of their ranges as real pieces.
@@ -139,16 +218,18 @@ impl Tour {
                 1.0 => Some(BoundaryPos { element: (f.element + 1) % n, t: 0.0, ..f }),
                 _ => None,
             };
-            for &i in &self.on_loop[f.loop_index] {
-                let Piece::Chain { from, to } = self.pieces[i] else { continue };
-                let probe = Subshape { pieces: vec![Piece::Chain { from, to }] };
-                if [Some(f), other].into_iter().flatten().any(|q| probe.holds(shape, q)) {
-                    hit.push(i);
-                }
+            for q in [Some(f), other].into_iter().flatten() {
+                self.chains_holding(shape, q, &mut hit);
             }
         }
-        hit.sort_unstable();
-        hit.dedup();
+        // The hit pieces and their neighbours, round the end of the cycle
+        // too (its last chain and its first arc meet at the outer loop's
+        // first contact).
+        let n = self.pieces.len();
+        let mut open: Vec<usize> =
+            hit.iter().flat_map(|&h| (0..=2 * MARGIN).map(move |d| (h + n + d - MARGIN) % n)).collect();
+        open.sort_unstable();
+        open.dedup();
         let mut pieces = Vec::with_capacity(s.pieces.len() + 4 * hit.len());
         for p in &s.pieces {
             let Piece::Tour { from, to } = *p else {
@@ -156,16 +237,13 @@ impl Tour {
                 continue;
             };
             let mut next = from;
-            for &h in hit.iter().filter(|&&h| h + MARGIN >= from && h <= to + MARGIN) {
-                let (a, b) = (h.saturating_sub(MARGIN).max(next), (h + MARGIN).min(to));
-                if a > b {
-                    continue;
+            let first = open.partition_point(|&h| h < from);
+            for &h in open[first..].iter().take_while(|&&h| h <= to) {
+                if h > next {
+                    pieces.push(Piece::Tour { from: next, to: h - 1 });
                 }
-                if a > next {
-                    pieces.push(Piece::Tour { from: next, to: a - 1 });
-                }
-                pieces.extend_from_slice(&self.pieces[a..=b]);
-                next = b + 1;
+                pieces.push(self.pieces[h]);
+                next = h + 1;
             }
             if next <= to {
                 pieces.push(Piece::Tour { from: next, to });
@@ -208,7 +286,7 @@ mod tests {
             let aux = whole.pieces.iter().filter(|p| matches!(p, Piece::Aux { .. })).count();
             assert_eq!(tour.aux(from, to), aux);
             for k in 0..tour.chains(from, to) {
-                assert_eq!(tour.chain(from, k), whole.chains().nth(k).unwrap());
+                assert_eq!(tour.chain(from, k), whole.chains().nth(k));
             }
             // Opening at a chain's points keeps the sequence.
             let first = whole.chains().next();
@@ -246,6 +324,99 @@ mod tests {
             let covered: f64 = leaves.iter().map(|s| chain_length(&shape, s)).sum();
             let perimeter: f64 = shape.loops().iter().map(Loop::perimeter).sum();
             assert!((covered - perimeter).abs() <= 1e-9 * perimeter, "{k}: {covered} vs {perimeter}");
+        }
+    }
+}
+
+#[cfg(test)]
+mod apex_tests {
+    use super::*;
+    use crate::kernel::Point;
+    use crate::plane::augment::augment;
+    use crate::plane::subshape::Cut;
+    use crate::plane::DiskFinder;
+    use crate::shape::{ElementRef, ShapeOptions, Vertex};
+
+    fn v(x: f64, y: f64, bulge: f64) -> Vertex {
+        Vertex { p: Point::new(x, y), bulge }
+    }
+
+    /// An outer loop starting at a reflex apex with holes above it (the
+    /// review's repros); `many` adds 30 holes so the cycle is cut through
+    /// ranges.
+    fn apex_shape(twin: bool, many: bool) -> Shape2d {
+        let mut loops = vec![vec![
+            v(5.5, 1.0, 0.0),
+            v(6.0, 0.0, 0.0),
+            v(30.0, 0.0, 0.0),
+            v(30.0, 10.0, 0.0),
+            v(0.0, 10.0, 0.0),
+            v(0.0, 0.0, 0.0),
+            v(5.0, 0.0, 0.0),
+        ]];
+        if twin {
+            loops.push(vec![v(5.45, 2.0, -1.0), v(4.95, 2.0, -1.0)]);
+            loops.push(vec![v(6.05, 2.0, -1.0), v(5.55, 2.0, -1.0)]);
+        } else {
+            loops.push(vec![v(6.0, 2.0, -1.0), v(5.0, 2.0, -1.0)]);
+        }
+        if many {
+            for i in 0..6 {
+                for j in 0..5 {
+                    let (x, y) = (9.0 + 3.5 * i as f64 + 0.1 * j as f64, 2.0 + 1.7 * j as f64 + 0.05 * i as f64);
+                    loops.push(vec![v(x + 0.4, y, -1.0), v(x - 0.4, y, -1.0)]);
+                }
+            }
+        }
+        Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).unwrap()
+    }
+
+    /// Splits `root` (ranges of `tour`) by the maximal disk grown at the
+    /// apex from `element` at fraction `t`, the apex written as `apex`;
+    /// the children's sizes once expanded.
+    fn split_sizes(
+        s: &Shape2d,
+        tour: &Tour,
+        root: &Subshape,
+        cuts: &[Cut],
+        element: usize,
+        t: f64,
+        apex: BoundaryPos,
+    ) -> Option<Vec<usize>> {
+        let finder = DiskFinder::new(s);
+        let d = finder.max_disk(ElementRef { loop_index: 0, element }, t);
+        let feet: Vec<BoundaryPos> = std::iter::once(apex)
+            .chain(d.footpoints[1..].iter().map(|f| {
+                let e = s.loops()[f.element.loop_index].element(f.element.element);
+                BoundaryPos { loop_index: f.element.loop_index, element: f.element.element, t: e.param_of(f.point) }
+            }))
+            .collect();
+        let mut cuts = cuts.to_vec();
+        cuts.push(Cut { center: d.center, radius: d.radius });
+        let children = tour.open_at(s, root, &feet).split(s, cuts.len() - 1, &feet, d.center, &cuts)?;
+        let mut sizes: Vec<usize> = children.iter().map(|c| tour.expanded_len(c)).collect();
+        sizes.sort_unstable();
+        Some(sizes)
+    }
+
+    #[test]
+    fn a_cut_at_the_apex_splits_alike_however_the_apex_is_written() {
+        for (twin, many) in [(false, true), (true, false), (true, true)] {
+            let s = apex_shape(twin, many);
+            let finder = DiskFinder::new(&s);
+            let aug = augment(&finder).unwrap();
+            let tour = Tour::new(&s, &aug.boundary);
+            let n = s.loops()[0].len();
+            let start = BoundaryPos { loop_index: 0, element: 0, t: 0.0 };
+            let end = BoundaryPos { loop_index: 0, element: n - 1, t: 1.0 };
+            for root in [aug.boundary.clone(), tour.root()] {
+                for (element, t) in [(0, 0.0), (n - 1, 1.0)] {
+                    let a = split_sizes(&s, &tour, &root, &aug.cuts, element, t, start);
+                    let b = split_sizes(&s, &tour, &root, &aug.cuts, element, t, end);
+                    assert!(a.is_some(), "twin {twin} many {many}: the cut at the apex from {element} was lost");
+                    assert_eq!(a, b, "twin {twin} many {many} from element {element}");
+                }
+            }
         }
     }
 }

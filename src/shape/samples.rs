@@ -150,8 +150,8 @@ pub fn slanted_comb(teeth: usize, len: f64) -> Vec<Vec<Vertex>> {
 /// at a random offset: a circle (two half arcs), a random convex polygon
 /// of 3–8 vertices, or a rounded triangle (segments and arcs), chosen by
 /// `seed`. Jittered so that no two augmenting disks or branch points are
-/// symmetric by construction; the outer square's edges are split once so
-/// the outer loop has reflex-free corners only.
+/// symmetric by construction; the outer square's bottom edge has a
+/// slightly lowered midpoint (a nearly flat convex corner).
 pub fn random_holes(k: usize, seed: u64) -> Vec<Vec<Vertex>> {
     let k = k.max(1);
     let s = k as f64;
