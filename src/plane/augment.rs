@@ -31,7 +31,7 @@ use crate::shape::{Element, ElementRef, Shape2d};
 /// Directions tried for "down", in turn, when some hole's augmenting disk
 /// touches more than two places (symmetric inputs: a hole centred over a
 /// corner). Any one direction used for every hole keeps the argument above.
-const DOWNS: [f64; 4] = [0.0, 0.013_7, -0.029_3, 0.047_1];
+const DOWNS: [f64; 8] = [0.0, 0.013_7, -0.029_3, 0.047_1, -0.061_9, 0.083_3, -0.101_7, 0.127_9];
 
 /// The augmented domain of a shape with holes.
 #[derive(Debug, Clone)]
@@ -123,18 +123,24 @@ fn disks<K: AxisKernel>(finder: &DiskFinder<K>, down: Point) -> Result<Vec<(Cont
         let far = Contact { pos: other, disk, dir: d.center - f.point, child: Some(hole), wrapped: false };
         out.push((own, far, Cut { center: d.center, radius: d.radius }));
     }
-    // Every hole's chain of parents reaches the outer loop.
+    // Every hole's chain of parents reaches the outer loop. Loops known to
+    // reach it end a walk early, so each loop is walked over once.
     let parent: Vec<usize> = out.iter().map(|(_, far, _)| far.pos.loop_index).collect();
+    let mut reaches = vec![false; holes + 1];
+    reaches[0] = true;
+    let mut path = Vec::new();
     for hole in 1..=holes {
+        path.clear();
         let mut l = hole;
-        for _ in 0..=holes {
-            if l == 0 {
-                break;
+        while !reaches[l] {
+            if path.len() > holes {
+                return Err(AugmentError::Cycle { hole });
             }
+            path.push(l);
             l = parent[l - 1];
         }
-        if l != 0 {
-            return Err(AugmentError::Cycle { hole });
+        for &p in &path {
+            reaches[p] = true;
         }
     }
     Ok(out)
