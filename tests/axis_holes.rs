@@ -199,40 +199,6 @@ fn augmenting_disks_meeting_at_one_vertex() {
     }
 }
 
-/// An outer loop starting at the apex of an upward spike (a reflex vertex
-/// where the outer loop's boundary cycle begins and ends), with holes
-/// above it; `extra` more holes make the cycle long enough to be cut
-/// through ranges.
-fn spike(twin: bool, extra: bool) -> Vec<Vec<Vertex>> {
-    let mut loops = vec![vec![
-        v(5.5, 1.0, 0.0),
-        v(6.0, 0.0, 0.0),
-        v(30.0, 0.0, 0.0),
-        v(30.0, 10.0, 0.0),
-        v(0.0, 10.0, 0.0),
-        v(0.0, 0.0, 0.0),
-        v(5.0, 0.0, 0.0),
-    ]];
-    if twin {
-        // Two holes whose augmenting disks both land on the apex.
-        loops.push(vec![v(5.45, 2.0, -1.0), v(4.95, 2.0, -1.0)]);
-        loops.push(vec![v(6.05, 2.0, -1.0), v(5.55, 2.0, -1.0)]);
-    } else {
-        loops.push(vec![v(6.0, 2.0, -1.0), v(5.0, 2.0, -1.0)]);
-        loops.push(vec![v(4.6, 2.1, -1.0), v(4.0, 2.1, -1.0)]);
-        loops.push(vec![v(7.1, 2.2, -1.0), v(6.5, 2.2, -1.0)]);
-    }
-    if extra {
-        for i in 0..6 {
-            for j in 0..5 {
-                let (x, y) = (9.0 + 3.5 * i as f64 + 0.1 * j as f64, 2.0 + 1.7 * j as f64 + 0.05 * i as f64);
-                loops.push(vec![v(x + 0.4, y, -1.0), v(x - 0.4, y, -1.0)]);
-            }
-        }
-    }
-    loops
-}
-
 #[test]
 fn disks_landing_on_a_reflex_vertex_of_the_outer_loop() {
     // Review findings: the cycle's last chain and first arc meet at the
@@ -240,7 +206,7 @@ fn disks_landing_on_a_reflex_vertex_of_the_outer_loop() {
     // augmenting disks at one vertex leave a single point between their
     // arcs that shares its position with the chain beyond them.
     for (twin, extra) in [(false, false), (false, true), (true, false), (true, true)] {
-        let (s, a) = axis_of(spike(twin, extra));
+        let (s, a) = axis_of(samples::spike_holes(twin, extra));
         check(&s, &a, 300, 13);
         for seed in 1..6 {
             let b = medial_axis(&s, &AxisOptions { seed, ..AxisOptions::default() })

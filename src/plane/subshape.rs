@@ -44,6 +44,25 @@ impl BoundaryPos {
             _ => None,
         }
     }
+
+    /// The same vertex written the other way: the end of the element
+    /// before (`t` = 1) for the start of an element (`t` = 0), and back.
+    /// `None` inside an element.
+    pub fn other_way(&self, shape: &Shape2d) -> Option<BoundaryPos> {
+        let n = shape.loops()[self.loop_index].len();
+        match self.t {
+            0.0 => Some(BoundaryPos { element: (self.element + n - 1) % n, t: 1.0, ..*self }),
+            1.0 => Some(BoundaryPos { element: (self.element + 1) % n, t: 0.0, ..*self }),
+            _ => None,
+        }
+    }
+}
+
+/// Where the chain from `from` to `to` holds `p` (as [`along`] from
+/// `from`), or `None` when it does not.
+pub(crate) fn chain_holds(shape: &Shape2d, from: BoundaryPos, to: BoundaryPos, p: BoundaryPos) -> Option<(usize, f64)> {
+    let (k, end) = (along(shape, from, p)?, along(shape, from, to)?);
+    (k >= (0, from.t) && k <= end).then_some(k)
 }
 
 /// One piece of a subshape's boundary, in travel order (interior on the left).
@@ -223,10 +242,7 @@ impl Subshape {
     /// The chain piece holding `p` and where along it, if any.
     fn locate(&self, shape: &Shape2d, p: BoundaryPos) -> Option<(usize, (usize, f64))> {
         self.pieces.iter().enumerate().find_map(|(j, piece)| match *piece {
-            Piece::Chain { from, to } => {
-                let (k, end) = (along(shape, from, p)?, along(shape, from, to)?);
-                (k >= (0, from.t) && k <= end).then_some((j, k))
-            }
+            Piece::Chain { from, to } => chain_holds(shape, from, to, p).map(|k| (j, k)),
             Piece::Aux { .. } | Piece::Tour { .. } => None,
         })
     }
@@ -254,7 +270,6 @@ impl Subshape {
         let Some(w) = p.vertex(shape).filter(|&w| shape.joint(p.loop_index, w) == JointKind::Reflex) else {
             return self.locate(shape, p).map(|(j, k)| (j, k, p));
         };
-        let n = shape.loops()[p.loop_index].len();
         let q = shape.loops()[p.loop_index].vertices()[w].p;
         let m = (center - q).unit();
         let m_len = self.pieces.len();
@@ -271,22 +286,15 @@ impl Subshape {
             let before_ok = from != at || dir(j + m_len - 1).is_none_or(|d| d.cross(m) <= FAN_SLACK);
             after_ok && before_ok
         };
-        let reps = [
-            p,
-            if p.t == 0.0 {
-                BoundaryPos { element: (w + n - 1) % n, t: 1.0, ..p }
-            } else {
-                BoundaryPos { element: w, t: 0.0, ..p }
-            },
-        ];
+        let reps = [Some(p), p.other_way(shape)];
         // Every chain holding either way of writing the vertex (one that
         // starts there first: chains meeting at the vertex both hold it),
         // the first whose part of the fan holds the disk. A single point
         // between two augmenting disks at one vertex shares its position
         // with the chain beyond them, so the first candidate is not enough.
-        reps.iter().find_map(|&r| {
-            self.every_location(shape, r).into_iter().find(|&(j, _)| holds(j, r)).map(|(j, k)| (j, k, r))
-        })
+        reps.into_iter()
+            .flatten()
+            .find_map(|r| self.every_location(shape, r).into_iter().find(|&(j, _)| holds(j, r)).map(|(j, k)| (j, k, r)))
     }
 
     /// Every chain piece holding `p` and where along it: those that start
@@ -297,10 +305,7 @@ impl Subshape {
             _ => None,
         });
         let holding = self.pieces.iter().enumerate().filter_map(|(j, piece)| match *piece {
-            Piece::Chain { from, to } if from != p => {
-                let (k, end) = (along(shape, from, p)?, along(shape, from, to)?);
-                (k >= (0, from.t) && k <= end).then_some((j, k))
-            }
+            Piece::Chain { from, to } if from != p => chain_holds(shape, from, to, p).map(|k| (j, k)),
             _ => None,
         });
         starts.chain(holding).collect()

@@ -7,10 +7,10 @@
 //! [`Piece::Tour`] ranges of the cycle instead, opened into real pieces
 //! only where a cut's footpoints land (and wholly once a subshape is small),
 //! so a subshape stays a handful of pieces, as on a shape without holes.
-//! Counts over ranges (original parts, reflex points, chains, auxiliary
-//! arcs) come from prefix sums.
+//! Counts over ranges (original parts, reflex points, chains) come from
+//! prefix sums.
 
-use super::subshape::{along, BoundaryPos, ChainParts, Piece, Subshape};
+use super::subshape::{along, chain_holds, BoundaryPos, ChainParts, Piece, Subshape};
 use crate::shape::{JointKind, Shape2d};
 use std::borrow::Cow;
 
@@ -19,11 +19,10 @@ use std::borrow::Cow;
 pub struct Tour {
     pieces: Vec<Piece>,
     /// Prefix sums over pieces: original parts, reflex single points,
-    /// chains that are more than a point, auxiliary arcs.
+    /// chains that are more than a point.
     parts: Vec<usize>,
     points: Vec<usize>,
     chains: Vec<usize>,
-    aux: Vec<usize>,
     /// For each loop, the indices of its chains in the cycle, and where
     /// each starts along the loop from the first one's start (a whole turn
     /// on for those starting back there after the walk went round).
@@ -44,16 +43,14 @@ impl Tour {
             parts: Vec::with_capacity(n + 1),
             points: Vec::with_capacity(n + 1),
             chains: Vec::with_capacity(n + 1),
-            aux: Vec::with_capacity(n + 1),
             on_loop: vec![Vec::new(); shape.loops().len()],
             on_key: vec![Vec::new(); shape.loops().len()],
         };
-        let (mut parts, mut points, mut chains, mut aux) = (0, 0, 0, 0);
+        let (mut parts, mut points, mut chains) = (0, 0, 0);
         for (i, p) in boundary.pieces.iter().enumerate() {
             t.parts.push(parts);
             t.points.push(points);
             t.chains.push(chains);
-            t.aux.push(aux);
             match *p {
                 Piece::Chain { from, to } => {
                     let k = ChainParts::new(shape, from, to).len();
@@ -64,15 +61,13 @@ impl Tour {
                     points += usize::from(k == 0 && reflex);
                     t.on_loop[from.loop_index].push(i);
                 }
-                Piece::Aux { .. } => aux += 1,
-                // A cycle is made of chains and arcs; a range in it holds nothing.
-                Piece::Tour { .. } => {}
+                // A cycle's arcs and (never present) ranges count nothing.
+                Piece::Aux { .. } | Piece::Tour { .. } => {}
             }
         }
         t.parts.push(parts);
         t.points.push(points);
         t.chains.push(chains);
-        t.aux.push(aux);
         for (l, list) in t.on_loop.iter().enumerate() {
             let from_of = |i: usize| match t.pieces[i] {
                 Piece::Chain { from, .. } => from,
@@ -114,11 +109,6 @@ impl Tour {
     /// Chains that are more than a point in range `from..=to`.
     pub fn chains(&self, from: usize, to: usize) -> usize {
         self.chains[to + 1] - self.chains[from]
-    }
-
-    /// Auxiliary arcs in range `from..=to`.
-    pub fn aux(&self, from: usize, to: usize) -> usize {
-        self.aux[to + 1] - self.aux[from]
     }
 
     /// The `k`-th chain (more than a point) of the range starting at
@@ -164,13 +154,7 @@ impl Tour {
         };
         let Some((origin, _)) = list.first().and_then(|&i| from_of(i)) else { return };
         let keys = &self.on_key[q.loop_index];
-        let key = |j: usize| keys[j];
-        let holds = |i: usize| {
-            from_of(i).is_some_and(|(from, to)| {
-                let (k, end) = (along(shape, from, q), along(shape, from, to));
-                matches!((k, end), (Some(k), Some(end)) if k >= (0, from.t) && k <= end)
-            })
-        };
+        let holds = |i: usize| from_of(i).is_some_and(|(from, to)| chain_holds(shape, from, to, q).is_some());
         let kq = along(shape, origin, q).unwrap_or((usize::MAX, 0.0));
         let mut starts = vec![keys.partition_point(|&k| k <= kq)];
         if q == origin {
@@ -186,7 +170,7 @@ impl Tour {
                 if holds(list[j]) {
                     out.push(list[j]);
                 }
-                let kf = key(j);
+                let kf = keys[j];
                 match group {
                     None => group = Some(kf),
                     Some(g) if g != kf => break,
@@ -212,13 +196,7 @@ impl Tour {
         }
         let mut hit: Vec<usize> = Vec::new();
         for &f in feet {
-            let n = shape.loops()[f.loop_index].len();
-            let other = match f.t {
-                0.0 => Some(BoundaryPos { element: (f.element + n - 1) % n, t: 1.0, ..f }),
-                1.0 => Some(BoundaryPos { element: (f.element + 1) % n, t: 0.0, ..f }),
-                _ => None,
-            };
-            for q in [Some(f), other].into_iter().flatten() {
+            for q in [Some(f), f.other_way(shape)].into_iter().flatten() {
                 self.chains_holding(shape, q, &mut hit);
             }
         }
@@ -283,8 +261,6 @@ mod tests {
             let parts: usize = whole.chains().map(|(f, t)| ChainParts::new(&shape, f, t).len()).sum();
             assert_eq!(tour.parts(from, to), parts);
             assert_eq!(tour.chains(from, to), whole.chains().count());
-            let aux = whole.pieces.iter().filter(|p| matches!(p, Piece::Aux { .. })).count();
-            assert_eq!(tour.aux(from, to), aux);
             for k in 0..tour.chains(from, to) {
                 assert_eq!(tour.chain(from, k), whole.chains().nth(k));
             }
@@ -331,44 +307,13 @@ mod tests {
 #[cfg(test)]
 mod apex_tests {
     use super::*;
-    use crate::kernel::Point;
     use crate::plane::augment::augment;
     use crate::plane::subshape::Cut;
     use crate::plane::DiskFinder;
-    use crate::shape::{ElementRef, ShapeOptions, Vertex};
+    use crate::shape::{samples, ElementRef, ShapeOptions};
 
-    fn v(x: f64, y: f64, bulge: f64) -> Vertex {
-        Vertex { p: Point::new(x, y), bulge }
-    }
-
-    /// An outer loop starting at a reflex apex with holes above it (the
-    /// review's repros); `many` adds 30 holes so the cycle is cut through
-    /// ranges.
     fn apex_shape(twin: bool, many: bool) -> Shape2d {
-        let mut loops = vec![vec![
-            v(5.5, 1.0, 0.0),
-            v(6.0, 0.0, 0.0),
-            v(30.0, 0.0, 0.0),
-            v(30.0, 10.0, 0.0),
-            v(0.0, 10.0, 0.0),
-            v(0.0, 0.0, 0.0),
-            v(5.0, 0.0, 0.0),
-        ]];
-        if twin {
-            loops.push(vec![v(5.45, 2.0, -1.0), v(4.95, 2.0, -1.0)]);
-            loops.push(vec![v(6.05, 2.0, -1.0), v(5.55, 2.0, -1.0)]);
-        } else {
-            loops.push(vec![v(6.0, 2.0, -1.0), v(5.0, 2.0, -1.0)]);
-        }
-        if many {
-            for i in 0..6 {
-                for j in 0..5 {
-                    let (x, y) = (9.0 + 3.5 * i as f64 + 0.1 * j as f64, 2.0 + 1.7 * j as f64 + 0.05 * i as f64);
-                    loops.push(vec![v(x + 0.4, y, -1.0), v(x - 0.4, y, -1.0)]);
-                }
-            }
-        }
-        Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).unwrap()
+        Shape2d::from_bulge_loops(samples::spike_holes(twin, many), &ShapeOptions::default()).unwrap()
     }
 
     /// Splits `root` (ranges of `tour`) by the maximal disk grown at the

@@ -194,3 +194,39 @@ pub fn random_holes(k: usize, seed: u64) -> Vec<Vec<Vertex>> {
     }
     loops
 }
+
+/// A 30 × 10 box whose outer loop starts at the apex of an upward spike
+/// (a reflex vertex where the augmented boundary cycle begins and ends),
+/// with small circular holes just above the apex: three, or with `twin`
+/// two whose augmenting disks both land on the apex. `many` adds 30 holes
+/// so that the cycle is long enough to be cut through ranges.
+pub fn spike_holes(twin: bool, many: bool) -> Vec<Vec<Vertex>> {
+    let v = |x: f64, y: f64, bulge: f64| Vertex { p: Point::new(x, y), bulge };
+    let circle = |x: f64, y: f64, r: f64| vec![v(x + r, y, -1.0), v(x - r, y, -1.0)];
+    let mut loops = vec![vec![
+        v(5.5, 1.0, 0.0),
+        v(6.0, 0.0, 0.0),
+        v(30.0, 0.0, 0.0),
+        v(30.0, 10.0, 0.0),
+        v(0.0, 10.0, 0.0),
+        v(0.0, 0.0, 0.0),
+        v(5.0, 0.0, 0.0),
+    ]];
+    if twin {
+        loops.push(circle(5.2, 2.0, 0.25));
+        loops.push(circle(5.8, 2.0, 0.25));
+    } else {
+        loops.push(circle(5.5, 2.0, 0.5));
+        loops.push(circle(4.3, 2.1, 0.3));
+        loops.push(circle(6.8, 2.2, 0.3));
+    }
+    if many {
+        for i in 0..6 {
+            for j in 0..5 {
+                let (x, y) = (9.0 + 3.5 * i as f64 + 0.1 * j as f64, 2.0 + 1.7 * j as f64 + 0.05 * i as f64);
+                loops.push(circle(x, y, 0.4));
+            }
+        }
+    }
+    loops
+}

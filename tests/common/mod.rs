@@ -95,8 +95,14 @@ pub fn inside(s: &medax::shape::Shape2d, p: Point) -> bool {
 /// the boundary (distance from its centre at least t, up to rounding of
 /// coordinates: 1e-12 × `diag`), by bisection on [`boundary_distance`].
 pub fn bisected_radius(s: &medax::shape::Shape2d, p: Point, n: Point, diag: f64) -> f64 {
-    let fits = |t: f64| boundary_distance(s, p + n * t) >= t - 1e-12 * diag;
-    let (mut lo, mut hi) = (0.0, 4.0 * diag);
+    bisect_radius(|q| boundary_distance(s, q), p, n, 4.0 * diag, diag)
+}
+
+/// The largest t ≤ `reach` for which `distance(p + t·n) ≥ t` up to
+/// 1e-12 × `diag`, by 80 bisection steps.
+pub fn bisect_radius(distance: impl Fn(Point) -> f64, p: Point, n: Point, reach: f64, diag: f64) -> f64 {
+    let fits = |t: f64| distance(p + n * t) >= t - 1e-12 * diag;
+    let (mut lo, mut hi) = (0.0, reach);
     for _ in 0..80 {
         let mid = 0.5 * (lo + hi);
         if fits(mid) {

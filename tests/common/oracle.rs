@@ -111,18 +111,8 @@ impl<'s> Boundary<'s> {
     /// The largest t for which the disk of radius t at `p + t·n` stays
     /// inside (as [`super::bisected_radius`], on the grid's distances).
     pub fn bisected_radius(&self, p: Point, n: Point, diag: f64) -> f64 {
-        let fits = |t: f64| self.distance(p + n * t) >= t - 1e-12 * diag;
         // No disk inside is wider than the diagonal.
-        let (mut lo, mut hi) = (0.0, diag);
-        for _ in 0..80 {
-            let mid = 0.5 * (lo + hi);
-            if fits(mid) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        lo
+        super::bisect_radius(|q| self.distance(q), p, n, diag, diag)
     }
 }
 
