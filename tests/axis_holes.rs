@@ -28,7 +28,12 @@ fn one_circular_hole_in_a_square() {
     check(&s, &a, 400, 1);
     assert_eq!(a.nodes.iter().filter(|n| n.kind == NodeKind::Corner).count(), 4);
     // The cycle passes below the hole at radius 0.5, the augmenting disk.
-    assert!(a.nodes.iter().all(|n| n.radius <= 2.0));
+    // Four branch points on the diagonals, each touching two sides and the
+    // hole: √2·(2 − r) = 1 + r.
+    let r = (2.0 * 2f64.sqrt() - 1.0) / (2f64.sqrt() + 1.0);
+    let branches: Vec<_> = a.nodes.iter().filter(|n| n.kind == NodeKind::Branch).collect();
+    assert_eq!(branches.len(), 4, "{branches:?}");
+    assert!(branches.iter().all(|n| (n.radius - r).abs() < 1e-9 && (n.point.x.abs() - (2.0 - r)).abs() < 1e-9));
     let below = a
         .sampled(&s, 1e-6)
         .into_iter()
