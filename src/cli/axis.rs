@@ -1,6 +1,6 @@
 //! `medax axis`: the medial axis of a shape as JSON and/or SVG.
 
-use super::{fail, write_file, ShapeArgs};
+use super::{fail, write_file, RunArgs, ShapeArgs};
 use medax::plane::{medial_axis, AxisOptions, AxisPicture, NodeKind};
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -17,15 +17,8 @@ pub struct AxisArgs {
     /// Write a picture of the shape and its axis.
     #[arg(long)]
     pub svg: Option<PathBuf>,
-    /// Chordal tolerance of the samples, model units (default: 1e-4 × bounding-box diagonal).
-    #[arg(long)]
-    pub sample_tolerance: Option<f64>,
-    /// Seed of the divide step's random choices.
-    #[arg(long, default_value_t = AxisOptions::default().seed)]
-    pub seed: u64,
-    /// Worker threads (default: all cores).
-    #[arg(long)]
-    pub threads: Option<usize>,
+    #[command(flatten)]
+    pub run: RunArgs,
     /// Draw the maximal disks at branch points in the picture.
     #[arg(long)]
     pub disks: bool,
@@ -35,11 +28,8 @@ pub fn run(args: &AxisArgs) -> Result<(), ExitCode> {
     let t = Instant::now();
     let shape = args.shape.load().map_err(|e| fail(&args.shape.shape, &e))?;
     let read = t.elapsed().as_secs_f64();
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(args.threads.unwrap_or(0)).build().map_err(|e| {
-        eprintln!("medax: cannot start threads: {e}");
-        ExitCode::from(3)
-    })?;
-    let opts = AxisOptions { seed: args.seed, ..AxisOptions::default() };
+    let pool = args.run.pool()?;
+    let opts = AxisOptions { seed: args.run.seed, ..AxisOptions::default() };
     let t = Instant::now();
     let axis = pool.install(|| medial_axis(&shape, &opts)).map_err(|e| {
         eprintln!("medax: {}: {e}", args.shape.shape.display());
@@ -57,7 +47,7 @@ pub fn run(args: &AxisArgs) -> Result<(), ExitCode> {
         axis.edges.len()
     );
     out!("read in {read:.3} s, axis in {took:.3} s ({} elements)", shape.element_count());
-    let tol = args.sample_tolerance.unwrap_or(1e-4 * shape.bbox().diagonal());
+    let tol = args.run.sample_tolerance.unwrap_or(1e-4 * shape.bbox().diagonal());
     if let Some(path) = &args.json {
         write_file(path, &axis.to_json(&shape, tol))?;
         out!("wrote {}", path.display());

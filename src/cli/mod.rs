@@ -19,6 +19,7 @@ fn put(text: &str) {
 mod axis;
 mod demo;
 mod info;
+mod voronoi;
 
 use clap::{Parser, Subcommand};
 use medax::shape::{Shape2d, ShapeError, ShapeOptions};
@@ -61,6 +62,30 @@ impl ShapeArgs {
     }
 }
 
+/// Options shared by commands that compute an axis.
+#[derive(clap::Args)]
+struct RunArgs {
+    /// Chordal tolerance of the samples, model units (default: 1e-4 × bounding-box diagonal).
+    #[arg(long)]
+    sample_tolerance: Option<f64>,
+    /// Seed of the divide step's random choices.
+    #[arg(long, default_value_t = medax::plane::AxisOptions::default().seed)]
+    seed: u64,
+    /// Worker threads (default: all cores).
+    #[arg(long)]
+    threads: Option<usize>,
+}
+
+impl RunArgs {
+    /// A thread pool of the requested size.
+    fn pool(&self) -> Result<rayon::ThreadPool, ExitCode> {
+        rayon::ThreadPoolBuilder::new().num_threads(self.threads.unwrap_or(0)).build().map_err(|e| {
+            eprintln!("medax: cannot start threads: {e}");
+            ExitCode::from(3)
+        })
+    }
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Validate a shape and report loops, elements, joints, area and extent.
@@ -81,6 +106,8 @@ enum Command {
     },
     /// Compute the medial axis: nodes, conic edges with their boundary sites, samples.
     Axis(axis::AxisArgs),
+    /// Compute the Voronoi diagram of sites (regions today; points and curves to come).
+    Voronoi(voronoi::VoronoiArgs),
     /// Run the demo: validate and draw the embedded demo shape (the default).
     Demo {
         /// Output SVG file.
@@ -112,6 +139,7 @@ pub fn run() -> ExitCode {
     let result = match cli.command.unwrap_or(Command::Demo { output: "medax-demo.svg".into() }) {
         Command::Info { shape } => info::run(&shape),
         Command::Axis(args) => axis::run(&args),
+        Command::Voronoi(args) => voronoi::run(&args),
         Command::Draw { shape, output, width } => match shape.load() {
             Ok(s) => write_file(&output, &s.to_svg(width)).map(|_| out!("wrote {}", output.display())),
             Err(e) => Err(fail(&shape.shape, &e)),

@@ -75,19 +75,60 @@ pub fn read_loops_fast_in_pieces(bytes: &[u8], piece_bytes: usize) -> Option<Vec
 /// the fuzz target compare them).
 #[doc(hidden)]
 pub fn read_loops_generic(text: &str) -> Result<Vec<RawPolyline>, ParseError> {
-    let file: ShapeFile = serde_json::from_str(text).map_err(|e| ParseError {
-        format: Format::Json,
-        line: e.line(),
-        column: e.column(),
-        message: e.to_string(),
-        unsupported: false,
-    })?;
+    let file: ShapeFile = serde_json::from_str(text).map_err(parse_error)?;
     Ok(file
         .loops
         .into_iter()
         .enumerate()
         .map(|(li, lp)| RawPolyline { vertices: lp.into_iter().map(|v| v.0).collect(), closed: true, source: li })
         .collect())
+}
+
+/// A serde error as a [`ParseError`] at its line and column.
+fn parse_error(e: serde_json::Error) -> ParseError {
+    ParseError { format: Format::Json, line: e.line(), column: e.column(), message: e.to_string(), unsupported: false }
+}
+
+/// Voronoi sites as read from a sites file (`medax voronoi`):
+/// `{"points": [[x, y], ...], "curves": [[[x, y, bulge], ...], ...],
+/// "regions": [[[x, y, bulge], ...], ...], "boundary": [[x, y, bulge], ...]}`,
+/// every key optional. Plain numbers: validation happens when the sites
+/// are used.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct RawSites {
+    /// Point sites `[x, y]`.
+    pub points: Vec<[f64; 2]>,
+    /// Open curves, vertex chains (the last vertex's bulge is ignored).
+    pub curves: Vec<Vec<RawVertex>>,
+    /// Closed regions, bulge loops.
+    pub regions: Vec<Vec<RawVertex>>,
+    /// The caller's outer boundary, when given.
+    pub boundary: Option<Vec<RawVertex>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SitesFile {
+    #[serde(default)]
+    points: Vec<[f64; 2]>,
+    #[serde(default)]
+    curves: Vec<Vec<JsonVertex>>,
+    #[serde(default)]
+    regions: Vec<Vec<JsonVertex>>,
+    #[serde(default)]
+    boundary: Option<Vec<JsonVertex>>,
+}
+
+/// Reads a sites file; errors carry the line and column.
+pub fn read_sites(text: &str) -> Result<RawSites, ParseError> {
+    let file: SitesFile = serde_json::from_str(text).map_err(parse_error)?;
+    let plain = |l: Vec<JsonVertex>| l.into_iter().map(|v| v.0).collect::<Vec<_>>();
+    Ok(RawSites {
+        points: file.points,
+        curves: file.curves.into_iter().map(plain).collect(),
+        regions: file.regions.into_iter().map(plain).collect(),
+        boundary: file.boundary.map(plain),
+    })
 }
 
 /// Writes loops as shape JSON, one loop per line, with shortest round-trip
@@ -123,6 +164,18 @@ mod tests {
         assert_eq!(loops[0].vertices[0], RawVertex { x: 0.0, y: 0.0, bulge: 0.5 });
         assert_eq!(loops[0].vertices[1].bulge, 0.0);
         assert_eq!(loops[0].vertices[2].bulge, -1.0);
+    }
+
+    #[test]
+    fn reads_sites_with_every_key_optional() {
+        let s = read_sites(r#"{"points": [[1, 2]], "regions": [[[0,0],[1,0,0.5],[1,1]]]}"#).unwrap();
+        assert_eq!(s.points, vec![[1.0, 2.0]]);
+        assert_eq!(s.regions[0][1], RawVertex { x: 1.0, y: 0.0, bulge: 0.5 });
+        assert!(s.curves.is_empty() && s.boundary.is_none());
+        assert_eq!(read_sites("{}").unwrap(), RawSites::default());
+        let e = read_sites("{\"regions\": [],\n \"pionts\": []}").unwrap_err();
+        assert_eq!(e.line, 2);
+        assert!(e.message.contains("pionts"), "{}", e.message);
     }
 
     #[test]

@@ -17,7 +17,7 @@ use crate::kernel::bisector::ConicKind;
 use crate::shape::Shape2d;
 use serde_json::{json, Value};
 
-fn node_kind(k: NodeKind) -> &'static str {
+pub(crate) fn node_kind(k: NodeKind) -> &'static str {
     match k {
         NodeKind::Branch => "branch",
         NodeKind::Corner => "corner",
@@ -26,7 +26,7 @@ fn node_kind(k: NodeKind) -> &'static str {
     }
 }
 
-fn conic(k: ConicKind) -> &'static str {
+pub(crate) fn conic(k: ConicKind) -> &'static str {
     match k {
         ConicKind::Line => "line",
         ConicKind::Parabola => "parabola",

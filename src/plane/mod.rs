@@ -19,9 +19,16 @@ pub mod maxdisk;
 pub mod maxdisk_star;
 pub mod subshape;
 pub mod tour;
+pub mod voronoi;
+mod voronoi_draw;
+mod voronoi_frame;
+pub mod voronoi_json;
+pub mod voronoi_regions;
 
 pub use axis::{AxisEdge, AxisNode, MedialAxis2d, NodeKind, Primitive};
 pub use conquer::{medial_axis, medial_axis_with, AxisError, AxisOptions};
 pub use draw::AxisPicture;
 pub use maxdisk::{DiskFinder, Footpoint, MaxDisk};
 pub use subshape::{BoundaryPos, Cut, Piece, Subshape};
+pub use voronoi::{voronoi, SiteId, Sites, VoronoiDiagram, VoronoiEdge, VoronoiError, VoronoiOptions};
+pub use voronoi_regions::SiteRegion;

@@ -1,0 +1,205 @@
+//! The frame Γ the library chooses around Voronoi sites (thesis 2.3:
+//! "the outer curve Γ can always be chosen in a way such that each vertex
+//! of V(S \ {Γ}) is also a vertex of V(S)").
+//!
+//! Γ is a circle around the sites. It keeps every Voronoi vertex of the
+//! sites exactly when the edges that reach it are the edges that run to
+//! infinity without Γ, and those are known beforehand: one per bridge of
+//! the sites' convex hull (a hull edge that does not run along a site:
+//! between two sites, or across a concavity of one site, which gives an
+//! unbounded self-edge). A vertex beyond Γ shows as a pair of sites meeting
+//! Γ that no bridge joins, so Γ grows until the two multisets agree.
+
+use super::voronoi::{SiteId, VoronoiDiagram};
+use crate::kernel::{BBox, FilteredKernel, Kernel, Orientation, Point};
+use crate::shape::{Element, Loop, Vertex};
+
+/// How many times the frame grows before the diagram is returned as
+/// incomplete, and by how much each time: up to 8^5 × the sites' diagonal,
+/// where `f64` radii still resolve the touching tolerance.
+const GROWTHS: u32 = 5;
+const FACTOR: f64 = 8.0;
+
+/// Arcs of sites are sampled at this angular step (radians) for the hull:
+/// the hull only decides which sites are on it, and at least one interior
+/// sample per arc keeps a concave arc's ends from looking adjacent.
+const ARC_STEP: f64 = std::f64::consts::PI / 64.0;
+
+/// The frame loop: a counter-clockwise circle (two half arcs).
+pub(crate) fn frame_loop(center: Point, radius: f64) -> Vec<Vertex> {
+    vec![
+        Vertex { p: center + Point::new(radius, 0.0), bulge: 1.0 },
+        Vertex { p: center - Point::new(radius, 0.0), bulge: 1.0 },
+    ]
+}
+
+/// The frame's size and the bridges it must reproduce.
+pub(crate) struct FrameCheck {
+    center: Point,
+    radius: f64,
+    growths: u32,
+    /// Site pairs of the hull's bridges, each pair sorted, the list sorted.
+    bridges: Vec<(SiteId, SiteId)>,
+}
+
+/// A hull sample: the point, its site, its index along the site's
+/// samples, and how many samples the site has.
+#[derive(Debug, Clone, Copy)]
+struct Sample {
+    p: Point,
+    site: SiteId,
+    index: usize,
+    count: usize,
+}
+
+impl FrameCheck {
+    /// The first frame for region sites `regions` within `bbox`: a circle
+    /// one diagonal in radius around the box's centre.
+    pub(crate) fn new(regions: &[Vec<Vertex>], bbox: BBox) -> FrameCheck {
+        let mut samples = Vec::new();
+        for (i, r) in regions.iter().enumerate() {
+            let pts = loop_samples(&Loop::new(r.clone()));
+            let count = pts.len();
+            samples.extend(pts.into_iter().enumerate().map(|(index, p)| Sample {
+                p,
+                site: SiteId::Region(i),
+                index,
+                count,
+            }));
+        }
+        let mut bridges = hull_bridges(samples);
+        bridges.sort();
+        let center = bbox.min.mid(bbox.max);
+        FrameCheck { center, radius: bbox.diagonal().max(f64::MIN_POSITIVE), growths: 0, bridges }
+    }
+
+    /// Centre of the frame circle, model units.
+    pub(crate) fn center(&self) -> Point {
+        self.center
+    }
+
+    /// Radius of the frame circle, model units.
+    pub(crate) fn radius(&self) -> f64 {
+        self.radius
+    }
+
+    /// Grows the frame; false when it has reached its limit.
+    pub(crate) fn grow(&mut self) -> bool {
+        if self.growths == GROWTHS {
+            return false;
+        }
+        self.growths += 1;
+        self.radius *= FACTOR;
+        true
+    }
+
+    /// True when the edges between sites that reach the frame pair the
+    /// same sites as the hull's bridges.
+    pub(crate) fn accepts(&self, vd: &VoronoiDiagram) -> bool {
+        let mut reaching = Vec::new();
+        for (e, v) in vd.axis.edges.iter().zip(&vd.edges) {
+            if v.sides.contains(&SiteId::Frame) {
+                continue;
+            }
+            let [a, b] = v.sides;
+            let pair = (a.min(b), a.max(b));
+            for n in [e.from, e.to] {
+                if vd.frontier[n] {
+                    reaching.push(pair);
+                }
+            }
+        }
+        reaching.sort();
+        reaching == self.bridges
+    }
+}
+
+/// Points along a loop in order: its vertices and, on every arc, interior
+/// points at most [`ARC_STEP`] apart in angle (at least one).
+fn loop_samples(l: &Loop) -> Vec<Point> {
+    let mut out = Vec::with_capacity(l.len());
+    for (v, e) in l.vertices().iter().zip(l.elements()) {
+        out.push(v.p);
+        if let Element::Arc(a) = e {
+            let steps = ((a.sweep().abs() / ARC_STEP).ceil() as usize).max(2);
+            out.extend((1..steps).map(|k| e.point_at(k as f64 / steps as f64)));
+        }
+    }
+    out
+}
+
+/// The site pairs of the convex hull's bridges: consecutive hull points
+/// not next to each other along one site. Collinear points on the hull are
+/// kept (each is the end of an unbounded edge), with exact orientations.
+fn hull_bridges(mut pts: Vec<Sample>) -> Vec<(SiteId, SiteId)> {
+    pts.sort_by(|a, b| a.p.x.total_cmp(&b.p.x).then(a.p.y.total_cmp(&b.p.y)));
+    pts.dedup_by(|a, b| a.p == b.p);
+    if pts.len() < 2 {
+        return Vec::new();
+    }
+    let k = FilteredKernel;
+    let mut hull: Vec<Sample> = Vec::with_capacity(2 * pts.len());
+    let chain = |it: &mut dyn Iterator<Item = &Sample>, hull: &mut Vec<Sample>| {
+        let base = hull.len();
+        for s in it {
+            while hull.len() >= base + 2
+                && k.orientation(hull[hull.len() - 2].p, hull[hull.len() - 1].p, s.p) == Orientation::Right
+            {
+                hull.pop();
+            }
+            hull.push(*s);
+        }
+        hull.pop();
+    };
+    chain(&mut pts.iter(), &mut hull);
+    chain(&mut pts.iter().rev(), &mut hull);
+    let n = hull.len();
+    let adjacent = |a: &Sample, b: &Sample| {
+        a.site == b.site && {
+            let d = (a.index + a.count - b.index) % a.count;
+            d == 1 || d == a.count - 1
+        }
+    };
+    (0..n)
+        .map(|i| (hull[i], hull[(i + 1) % n]))
+        .filter(|(a, b)| !adjacent(a, b))
+        .map(|(a, b)| (a.site.min(b.site), a.site.max(b.site)))
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sample(x: f64, y: f64, site: usize) -> Sample {
+        Sample { p: Point::new(x, y), site: SiteId::Region(site), index: 0, count: 1 }
+    }
+
+    #[test]
+    fn bridges_of_points_in_convex_and_collinear_position() {
+        // A triangle of three single-sample sites: three bridges.
+        let tri = hull_bridges(vec![sample(0.0, 0.0, 0), sample(1.0, 0.0, 1), sample(0.3, 1.0, 2)]);
+        assert_eq!(tri.len(), 3);
+        // Three collinear sites: the hull walks there and back, four bridges.
+        let line = hull_bridges(vec![sample(0.0, 0.0, 0), sample(1.0, 0.0, 1), sample(2.0, 0.0, 2)]);
+        assert_eq!(line.len(), 4);
+        // A site inside the triangle of three others is on no bridge.
+        let inner =
+            hull_bridges(vec![sample(0.0, 0.0, 0), sample(4.0, 0.0, 1), sample(2.0, 4.0, 2), sample(2.0, 1.0, 3)]);
+        assert!(inner.iter().all(|&(a, b)| a != SiteId::Region(3) && b != SiteId::Region(3)));
+        assert_eq!(inner.len(), 3);
+    }
+
+    #[test]
+    fn a_concavity_on_the_hull_is_a_self_bridge() {
+        // A U-shaped region: the hull bridges its mouth.
+        let u = [(0.0, 0.0), (3.0, 0.0), (3.0, 3.0), (2.0, 3.0), (2.0, 1.0), (1.0, 1.0), (1.0, 3.0), (0.0, 3.0)];
+        let count = u.len();
+        let pts = u
+            .iter()
+            .enumerate()
+            .map(|(index, &(x, y))| Sample { p: Point::new(x, y), site: SiteId::Region(0), index, count })
+            .collect();
+        assert_eq!(hull_bridges(pts), vec![(SiteId::Region(0), SiteId::Region(0))]);
+    }
+}

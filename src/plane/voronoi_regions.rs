@@ -1,0 +1,107 @@
+//! The region of each Voronoi site (thesis Corollary 2): bounded by the
+//! edges between the site and other sites, walked with the site on the
+//! left (counter-clockwise around it). Self-edges of the site reach into
+//! its region from that walk and are listed apart.
+
+use super::axis::MedialAxis2d;
+use super::voronoi::{SiteId, VoronoiEdge};
+
+/// The region of one site.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SiteRegion {
+    /// The site.
+    pub site: SiteId,
+    /// The boundary walk: axis edge indices, each with `true` when walked
+    /// from its `from` node to its `to` node (the site on the walk's left).
+    /// Consecutive entries share a node, and the last leads back to the
+    /// first.
+    pub boundary: Vec<(usize, bool)>,
+    /// How many closed walks the boundary edges form: 1 for every region
+    /// of a valid diagram (regions are simply connected), 0 for a site
+    /// without edges to other sites.
+    pub walks: usize,
+    /// The site's self-edges (axis edge indices).
+    pub self_edges: Vec<usize>,
+    /// The boundary meets the library's frame: the region is unbounded in
+    /// the sites' own diagram.
+    pub unbounded: bool,
+}
+
+/// The regions of every site but the library's frame (`loop_sites[0]`
+/// when it is [`SiteId::Frame`] and `skip_frame`), in loop order.
+pub(crate) fn site_regions(
+    axis: &MedialAxis2d,
+    edges: &[VoronoiEdge],
+    loop_sites: &[SiteId],
+    skip_frame: bool,
+) -> Vec<SiteRegion> {
+    let mut by_site: std::collections::HashMap<SiteId, Vec<(usize, bool)>> = Default::default();
+    let mut selfs: std::collections::HashMap<SiteId, Vec<usize>> = Default::default();
+    for (i, v) in edges.iter().enumerate() {
+        if v.self_edge {
+            selfs.entry(v.sides[0]).or_default().push(i);
+            continue;
+        }
+        by_site.entry(v.sides[0]).or_default().push((i, true));
+        by_site.entry(v.sides[1]).or_default().push((i, false));
+    }
+    loop_sites
+        .iter()
+        .filter(|&&s| !(skip_frame && s == SiteId::Frame))
+        .map(|&site| {
+            let directed = by_site.remove(&site).unwrap_or_default();
+            let unbounded = skip_frame && directed.iter().any(|&(i, _)| edges[i].sides.contains(&SiteId::Frame));
+            let (boundary, walks) = closed_walks(axis, &directed);
+            SiteRegion { site, boundary, walks, self_edges: selfs.remove(&site).unwrap_or_default(), unbounded }
+        })
+        .collect()
+}
+
+/// The directed edges joined into closed walks (Hierholzer): the walk, and
+/// how many separate walks it is made of.
+fn closed_walks(axis: &MedialAxis2d, directed: &[(usize, bool)]) -> (Vec<(usize, bool)>, usize) {
+    let ends = |&(i, fwd): &(usize, bool)| {
+        let e = &axis.edges[i];
+        if fwd {
+            (e.from, e.to)
+        } else {
+            (e.to, e.from)
+        }
+    };
+    let mut out_of: std::collections::HashMap<usize, Vec<usize>> = Default::default();
+    for (k, d) in directed.iter().enumerate().rev() {
+        out_of.entry(ends(d).0).or_default().push(k);
+    }
+    let mut used = vec![false; directed.len()];
+    let mut walk = Vec::with_capacity(directed.len());
+    let mut walks = 0;
+    for start in 0..directed.len() {
+        if used[start] {
+            continue;
+        }
+        walks += 1;
+        used[start] = true;
+        let mut stack = vec![start];
+        let mut circuit = Vec::new();
+        while let Some(&top) = stack.last() {
+            let head = ends(&directed[top]).1;
+            let next = out_of.get_mut(&head).and_then(|v| {
+                while let Some(k) = v.pop() {
+                    if !used[k] {
+                        return Some(k);
+                    }
+                }
+                None
+            });
+            match next {
+                Some(k) => {
+                    used[k] = true;
+                    stack.push(k);
+                }
+                None => circuit.push(stack.pop().unwrap_or(top)),
+            }
+        }
+        walk.extend(circuit.into_iter().rev().map(|k| directed[k]));
+    }
+    (walk, walks)
+}

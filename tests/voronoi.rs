@@ -1,0 +1,442 @@
+//! Voronoi diagrams of region sites (thesis 2.3, Observation 6), checked
+//! by oracles that share nothing with the algorithm: distances to the
+//! sites by scanning every element, nearest sites of random points against
+//! the regions' boundary walks (winding numbers of their samples), and the
+//! axis oracle of tests/common on the frame with the sites as holes.
+
+mod common;
+
+use common::oracle::check;
+use common::{circle, poly, rect};
+use medax::kernel::{FilteredKernel, Point};
+use medax::plane::voronoi::{voronoi, SiteId, Sites, VoronoiDiagram, VoronoiError, VoronoiOptions};
+use medax::shape::{Element, Loop, ShapeError, Vertex};
+use rand::{Rng, SeedableRng};
+
+fn regions(loops: Vec<Vec<Vertex>>) -> Sites {
+    Sites { regions: loops, ..Sites::default() }
+}
+
+fn vd_of(sites: &Sites) -> VoronoiDiagram {
+    voronoi(sites, &VoronoiOptions::default()).expect("voronoi")
+}
+
+/// Every site's elements, by site.
+fn site_elements(sites: &Sites) -> Vec<(SiteId, Vec<Element>)> {
+    sites
+        .regions
+        .iter()
+        .enumerate()
+        .map(|(i, r)| (SiteId::Region(i), Loop::new(r.clone()).elements().collect()))
+        .collect()
+}
+
+/// Distance from `p` to each site, by scanning.
+fn site_distances(els: &[(SiteId, Vec<Element>)], p: Point) -> Vec<(SiteId, f64)> {
+    els.iter().map(|(s, es)| (*s, es.iter().map(|e| e.closest_point(p).0).fold(f64::INFINITY, f64::min))).collect()
+}
+
+fn inside_some_site(sites: &Sites, p: Point) -> bool {
+    let k = FilteredKernel;
+    sites.regions.iter().any(|r| Loop::new(r.clone()).winding_number(&k, p) != 0)
+}
+
+/// Winding number of `p` around a closed polyline.
+fn winding(poly: &[Point], p: Point) -> i32 {
+    let mut w = 0;
+    for i in 0..poly.len() {
+        let (a, b) = (poly[i], poly[(i + 1) % poly.len()]);
+        let side = (b - a).cross(p - a);
+        if a.y <= p.y && b.y > p.y && side > 0.0 {
+            w += 1;
+        } else if a.y > p.y && b.y <= p.y && side < 0.0 {
+            w -= 1;
+        }
+    }
+    w
+}
+
+/// The closed polyline of a region's boundary walk.
+fn region_polygon(vd: &VoronoiDiagram, site: SiteId, tol: f64) -> Vec<Point> {
+    let r = vd.region(site).expect("region");
+    let mut out = Vec::new();
+    for &(i, fwd) in &r.boundary {
+        let mut s: Vec<Point> =
+            vd.axis.edges[i].sample(vd.shape(), &vd.axis.nodes, tol).into_iter().map(|(c, _)| c).collect();
+        if !fwd {
+            s.reverse();
+        }
+        out.extend(s);
+    }
+    out
+}
+
+/// Everything the oracles can say about one diagram: the axis oracle on
+/// the framed shape; each kept edge's samples equidistant from the two
+/// sites it separates and no nearer to any other; every region one closed
+/// walk round its site; random points in the region of their nearest site
+/// and the library's nearest-site query agreeing with the scan.
+fn check_diagram(sites: &Sites, vd: &VoronoiDiagram, probes: usize, seed: u64) {
+    check(vd.shape(), &vd.axis, 100, seed);
+    let els = site_elements(sites);
+    let site_box = vd.shape().loops()[1..].iter().fold(medax::kernel::BBox::EMPTY, |b, l| b.union(&l.bbox()));
+    let diag = site_box.diagonal();
+    let tol = 1e-8 * diag.max(1e-300);
+    for i in vd.diagram_edges(true) {
+        let e = &vd.axis.edges[i];
+        let v = vd.edges[i];
+        for (c, r) in e.sample(vd.shape(), &vd.axis.nodes, 1e-4 * diag) {
+            let d = site_distances(&els, c);
+            let nearest = d.iter().map(|x| x.1).fold(f64::INFINITY, f64::min);
+            let dist_of = |s: SiteId| d.iter().find(|x| x.0 == s).map(|x| x.1).unwrap();
+            assert!((nearest - r).abs() <= tol, "edge {i}: sample {c:?} radius {r}, nearest site at {nearest}");
+            for s in v.sides {
+                assert!((dist_of(s) - r).abs() <= tol, "edge {i} {v:?}: {s} at {} not {r}", dist_of(s));
+            }
+        }
+    }
+    for r in &vd.regions {
+        assert_eq!(r.walks, 1, "{}: {} walks", r.site, r.walks);
+        let n = r.boundary.len();
+        for k in 0..n {
+            let end = |(i, fwd): (usize, bool), head: bool| {
+                let e = &vd.axis.edges[i];
+                if fwd == head {
+                    e.to
+                } else {
+                    e.from
+                }
+            };
+            assert_eq!(end(r.boundary[k], true), end(r.boundary[(k + 1) % n], false), "{}: walk breaks", r.site);
+        }
+    }
+    let polys: Vec<(SiteId, Vec<Point>)> =
+        vd.regions.iter().map(|r| (r.site, region_polygon(vd, r.site, 1e-6 * diag))).collect();
+    let frame = &vd.shape().loops()[0];
+    let mut rng = rand::rngs::SmallRng::seed_from_u64(seed);
+    let (lo, hi) = (site_box.min - Point::new(diag, diag), site_box.max + Point::new(diag, diag));
+    let mut tried = 0;
+    while tried < probes {
+        let p = Point::new(rng.gen_range(lo.x..hi.x), rng.gen_range(lo.y..hi.y));
+        if inside_some_site(sites, p) {
+            continue;
+        }
+        let d = site_distances(&els, p);
+        let frame_d = frame.elements().map(|e| e.closest_point(p).0).fold(f64::INFINITY, f64::min);
+        let mut sorted = d.clone();
+        sorted.sort_by(|a, b| a.1.total_cmp(&b.1));
+        // Clear of every tie and of the frame's own region.
+        if sorted.len() > 1 && sorted[1].1 - sorted[0].1 < 1e-6 * diag || frame_d <= sorted[0].1 + 1e-6 * diag {
+            continue;
+        }
+        tried += 1;
+        let (want, want_d) = sorted[0];
+        let (got, got_d, foot) = vd.nearest_site(p).expect("a nearest site");
+        assert_eq!(got, want, "nearest site of {p:?}");
+        assert!((got_d - want_d).abs() <= tol && (foot.dist(p) - want_d).abs() <= tol);
+        for (s, poly) in &polys {
+            // The walk goes counter-clockwise round its site.
+            let w = winding(poly, p);
+            assert_eq!(w, i32::from(*s == want), "{p:?} (nearest {want}) in the walk of {s}: winding {w}");
+        }
+    }
+}
+
+/// Which polygon sites have a vertex on the convex hull of all vertices
+/// (monotone chain, collinear hull points kept).
+fn hull_sites(sites: &Sites) -> Vec<bool> {
+    let mut pts: Vec<(Point, usize)> =
+        sites.regions.iter().enumerate().flat_map(|(i, r)| r.iter().map(move |v| (v.p, i))).collect();
+    pts.sort_by(|a, b| a.0.x.total_cmp(&b.0.x).then(a.0.y.total_cmp(&b.0.y)));
+    let mut on = vec![false; sites.regions.len()];
+    for order in [false, true] {
+        let mut chain: Vec<(Point, usize)> = Vec::new();
+        let it: Box<dyn Iterator<Item = &(Point, usize)>> =
+            if order { Box::new(pts.iter().rev()) } else { Box::new(pts.iter()) };
+        for &q in it {
+            while chain.len() >= 2 && {
+                let (a, b) = (chain[chain.len() - 2].0, chain[chain.len() - 1].0);
+                (b - a).cross(q.0 - a) < -1e-12
+            } {
+                chain.pop();
+            }
+            chain.push(q);
+        }
+        for (_, i) in chain {
+            on[i] = true;
+        }
+    }
+    on
+}
+
+fn squares_grid(k: usize, size: f64, pitch: f64, jitter: f64, seed: u64) -> Sites {
+    let mut rng = rand::rngs::SmallRng::seed_from_u64(seed);
+    let mut out = Vec::new();
+    for i in 0..k {
+        for j in 0..k {
+            let mut shake = || if jitter > 0.0 { rng.gen_range(0.0..jitter) } else { 0.0 };
+            let (x, y) = (i as f64 * pitch + shake(), j as f64 * pitch + shake());
+            out.push(rect(x, y, x + size, y + size));
+        }
+    }
+    regions(out)
+}
+
+#[test]
+fn two_squares_are_split_by_their_bisector() {
+    let sites = regions(vec![rect(0.0, 0.0, 1.0, 1.0), rect(3.0, 0.0, 4.0, 1.0)]);
+    let vd = vd_of(&sites);
+    assert!(vd.complete && vd.auto_frame);
+    check_diagram(&sites, &vd, 300, 1);
+    // The line x = 2 between the facing sides, running to infinity at both
+    // ends: two frontier nodes.
+    let between: Vec<usize> = vd.diagram_edges(false).into_iter().filter(|&i| !vd.edges[i].self_edge).collect();
+    assert!(!between.is_empty());
+    for &i in &between {
+        for (c, _) in vd.axis.edges[i].sample(vd.shape(), &vd.axis.nodes, 1e-6) {
+            if c.y > -0.5 && c.y < 1.5 {
+                assert!((c.x - 2.0).abs() < 1e-9, "{c:?}");
+            }
+        }
+    }
+    assert_eq!(vd.frontier.iter().filter(|&&f| f).count(), 2);
+    assert!(vd.regions.iter().all(|r| r.unbounded));
+}
+
+#[test]
+fn cocircular_circles_meet_in_one_vertex() {
+    // Four equal circles at the corners of a square: their four bisectors
+    // meet at the centre, a vertex of degree four (or two branch points
+    // within the merge tolerance joined by a vanishing edge).
+    let sites =
+        regions(vec![circle(0.0, 0.0, 0.5), circle(3.0, 0.0, 0.5), circle(3.0, 3.0, 0.5), circle(0.0, 3.0, 0.5)]);
+    let vd = vd_of(&sites);
+    check_diagram(&sites, &vd, 400, 2);
+    let centre: Vec<_> = vd.axis.nodes.iter().filter(|n| n.point.dist(Point::new(1.5, 1.5)) < 1e-6).collect();
+    assert!(!centre.is_empty(), "no vertex at the centre");
+    assert!(centre.iter().all(|n| (n.radius - (1.5 * 2f64.sqrt() - 0.5)).abs() < 1e-9));
+    // The inner site-only vertex is enclosed: no region of the four is
+    // bounded (each is on the hull), and the centre is in none.
+    assert!(vd.regions.iter().all(|r| r.unbounded));
+}
+
+#[test]
+fn a_region_inside_the_hull_is_bounded() {
+    let sites = regions(vec![
+        rect(0.0, 0.0, 1.0, 1.0),
+        rect(6.0, 0.0, 7.0, 1.0),
+        rect(3.0, 5.0, 4.0, 6.0),
+        circle(3.5, 2.2, 0.4),
+    ]);
+    let vd = vd_of(&sites);
+    check_diagram(&sites, &vd, 400, 3);
+    assert!(!vd.region(SiteId::Region(3)).unwrap().unbounded);
+    assert!(vd.region(SiteId::Region(0)).unwrap().unbounded);
+}
+
+#[test]
+fn a_u_shaped_site_has_self_edges_that_the_switch_drops() {
+    let u = poly(&[(0.0, 0.0), (3.0, 0.0), (3.0, 3.0), (2.0, 3.0), (2.0, 1.0), (1.0, 1.0), (1.0, 3.0), (0.0, 3.0)]);
+    let sites = regions(vec![u, circle(6.0, 1.5, 0.5)]);
+    let vd = vd_of(&sites);
+    check_diagram(&sites, &vd, 300, 4);
+    let r = vd.region(SiteId::Region(0)).unwrap();
+    assert!(!r.self_edges.is_empty(), "the mouth of the U");
+    // The self-edge in the mouth runs up the line x = 1.5 and on to
+    // infinity (the hull bridges the mouth).
+    let mouth = r.self_edges.iter().any(|&i| {
+        vd.axis.edges[i]
+            .sample(vd.shape(), &vd.axis.nodes, 1e-6)
+            .iter()
+            .any(|(c, _)| (c.x - 1.5).abs() < 1e-9 && c.y > 3.0)
+    });
+    assert!(mouth);
+    let with = vd.diagram_edges(true);
+    let without = vd.diagram_edges(false);
+    assert!(without.len() < with.len());
+    assert!(without.iter().all(|&i| !vd.edges[i].self_edge));
+    assert!(vd.to_json(1e-3, false).len() < vd.to_json(1e-3, true).len());
+}
+
+#[test]
+fn a_single_site_has_no_edges_to_others() {
+    let sites = regions(vec![circle(2.0, 3.0, 1.0)]);
+    let vd = vd_of(&sites);
+    assert!(vd.complete);
+    assert!(vd.diagram_edges(true).is_empty());
+    let r = vd.region(SiteId::Region(0)).unwrap();
+    assert!(r.unbounded && r.self_edges.is_empty());
+    assert_eq!(vd.nearest_site(Point::new(10.0, 3.0)).map(|n| (n.0, n.1)), Some((SiteId::Region(0), 7.0)));
+}
+
+#[test]
+fn grids_and_nearly_touching_sites() {
+    // A regular grid (many cocircular quadruples, collinear sides on the
+    // hull) and a jittered one.
+    for (k, jitter, seed) in [(4, 0.0, 5), (6, 0.4, 6)] {
+        let sites = squares_grid(k, 0.6, 1.0, jitter, seed);
+        let vd = vd_of(&sites);
+        check_diagram(&sites, &vd, 300, seed);
+        assert!(vd.complete);
+        // A region is unbounded exactly when its site reaches the convex
+        // hull of all sites.
+        let on_hull = hull_sites(&sites);
+        for r in &vd.regions {
+            let SiteId::Region(i) = r.site else { panic!() };
+            assert_eq!(r.unbounded, on_hull[i], "{}", r.site);
+        }
+        if jitter == 0.0 {
+            assert_eq!(on_hull.iter().filter(|&&h| !h).count(), (k - 2) * (k - 2));
+        }
+    }
+    // Two sites 1e-4 apart, and one 1e-4 from a caller's boundary.
+    let sites = regions(vec![rect(0.0, 0.0, 1.0, 1.0), rect(1.0001, 0.0, 2.0, 1.0)]);
+    check_diagram(&sites, &vd_of(&sites), 200, 7);
+    let opts = VoronoiOptions { boundary: Some(rect(-1.0, -0.0001 - 1.0, 3.0, 3.0)), ..VoronoiOptions::default() };
+    let near_frame = regions(vec![rect(0.0, -1.0, 1.0, 0.0), circle(2.0, 1.0, 0.5)]);
+    let vd = voronoi(&near_frame, &opts).expect("voronoi");
+    assert!(!vd.auto_frame && vd.complete);
+    check(vd.shape(), &vd.axis, 200, 8);
+    assert!(vd.region(SiteId::Frame).is_some(), "a caller's boundary is a site with a region");
+}
+
+#[test]
+fn nearly_collinear_sites_grow_the_frame() {
+    // Three small circles nearly on a line: the Voronoi vertex of all
+    // three lies far below (radius ~ 1/(2 × sag)); the first frame misses
+    // it, the frame grows until it is inside.
+    let sag = 0.02;
+    let sites = regions(vec![circle(0.0, 0.0, 0.1), circle(1.0, sag, 0.1), circle(2.0, 0.0, 0.1)]);
+    let vd = vd_of(&sites);
+    assert!(vd.complete);
+    check_diagram(&sites, &vd, 200, 9);
+    let at_frame: Vec<bool> = (0..vd.axis.nodes.len())
+        .map(|n| {
+            vd.axis
+                .edges
+                .iter()
+                .zip(&vd.edges)
+                .any(|(e, v)| (e.from == n || e.to == n) && v.sides.contains(&SiteId::Frame))
+        })
+        .collect();
+    let far = (0..vd.axis.nodes.len())
+        .filter(|&n| !at_frame[n] && vd.axis.nodes[n].point.y < -10.0 && vd.axis.nodes[n].radius > 10.0)
+        .count();
+    let shape_diag = vd.shape().bbox().diagonal();
+    assert_eq!(far, 1, "the far vertex (frame diagonal {shape_diag})");
+}
+
+#[test]
+fn the_frame_keeps_every_vertex_of_a_much_larger_one() {
+    // The site-only vertices (nodes with no frame edge) of the auto frame
+    // and of a caller's circle 50 times larger agree.
+    let sites = squares_grid(5, 0.5, 1.0, 0.45, 10);
+    let auto = vd_of(&sites);
+    let big: Vec<Vertex> = circle(2.5, 2.5, 400.0);
+    let given = voronoi(&sites, &VoronoiOptions { boundary: Some(big), ..VoronoiOptions::default() }).unwrap();
+    let site_vertices = |vd: &VoronoiDiagram| {
+        let mut touches_frame = vec![false; vd.axis.nodes.len()];
+        let mut deg = vec![0; vd.axis.nodes.len()];
+        for (e, v) in vd.axis.edges.iter().zip(&vd.edges) {
+            for n in [e.from, e.to] {
+                deg[n] += 1;
+                touches_frame[n] |= v.sides.contains(&SiteId::Frame);
+            }
+        }
+        let mut pts: Vec<(f64, f64, f64)> = (0..vd.axis.nodes.len())
+            .filter(|&n| deg[n] >= 3 && !touches_frame[n])
+            .map(|n| (vd.axis.nodes[n].point.x, vd.axis.nodes[n].point.y, vd.axis.nodes[n].radius))
+            .collect();
+        pts.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        pts
+    };
+    let (a, b) = (site_vertices(&auto), site_vertices(&given));
+    assert_eq!(a.len(), b.len());
+    for (p, q) in a.iter().zip(&b) {
+        assert!((p.0 - q.0).abs() < 1e-9 && (p.1 - q.1).abs() < 1e-9 && (p.2 - q.2).abs() < 1e-9, "{p:?} {q:?}");
+    }
+}
+
+#[test]
+fn metamorphic_translate_scale_reorder() {
+    let base = vec![
+        rect(0.0, 0.0, 1.0, 1.0),
+        circle(3.0, 0.7, 0.6),
+        poly(&[(1.0, 3.0), (2.0, 2.5), (2.5, 4.0)]),
+        circle(4.0, 3.5, 0.3),
+    ];
+    let count = |vd: &VoronoiDiagram| {
+        let mut radii: Vec<f64> = vd
+            .diagram_edges(true)
+            .iter()
+            .flat_map(|&i| [vd.axis.edges[i].from, vd.axis.edges[i].to])
+            .map(|n| vd.axis.nodes[n].radius)
+            .collect();
+        radii.sort_by(f64::total_cmp);
+        radii.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
+        radii
+    };
+    let vd0 = vd_of(&regions(base.clone()));
+    check_diagram(&regions(base.clone()), &vd0, 200, 11);
+    let r0 = count(&vd0);
+    let moved: Vec<Vec<Vertex>> = base
+        .iter()
+        .map(|l| l.iter().map(|v| Vertex { p: v.p * 1000.0 + Point::new(1e5, -3e4), bulge: v.bulge }).collect())
+        .collect();
+    let vd1 = vd_of(&regions(moved.clone()));
+    check_diagram(&regions(moved), &vd1, 200, 12);
+    let r1: Vec<f64> = count(&vd1).iter().map(|r| r / 1000.0).collect();
+    assert_eq!(r0.len(), r1.len());
+    assert!(r0.iter().zip(&r1).all(|(a, b)| (a - b).abs() < 1e-9), "{r0:?} {r1:?}");
+    let mut rev = base.clone();
+    rev.reverse();
+    let vd2 = vd_of(&regions(rev.clone()));
+    check_diagram(&regions(rev), &vd2, 200, 13);
+    let r2 = count(&vd2);
+    assert!(r0.len() == r2.len() && r0.iter().zip(&r2).all(|(a, b)| (a - b).abs() < 1e-9));
+}
+
+#[test]
+fn random_sites_up_to_a_hundred() {
+    for (k, seed) in [(3, 21), (7, 22), (10, 23)] {
+        let mut rng = rand::rngs::SmallRng::seed_from_u64(seed);
+        let mut out = Vec::new();
+        for i in 0..k {
+            for j in 0..k {
+                let (x, y) = (i as f64 + rng.gen_range(0.3..0.7), j as f64 + rng.gen_range(0.3..0.7));
+                let r = rng.gen_range(0.05..0.25);
+                out.push(if rng.gen_bool(0.5) { circle(x, y, r) } else { rect(x - r, y - r, x + r, y + r * 0.7) });
+            }
+        }
+        let sites = regions(out);
+        let vd = vd_of(&sites);
+        assert!(vd.complete, "k = {k}");
+        check_diagram(&sites, &vd, 300, seed);
+    }
+}
+
+#[test]
+fn bad_sites_get_typed_errors_naming_the_site() {
+    assert_eq!(voronoi(&Sites::default(), &VoronoiOptions::default()).unwrap_err(), VoronoiError::NoSites);
+    let overlapping = regions(vec![rect(0.0, 0.0, 1.0, 1.0), circle(5.0, 5.0, 1.0), rect(0.5, 0.5, 2.0, 2.0)]);
+    match voronoi(&overlapping, &VoronoiOptions::default()).unwrap_err() {
+        VoronoiError::Invalid { site: Some(SiteId::Region(r)), error } => {
+            assert!(r == 0 || r == 2, "{r}");
+            assert!(matches!(error, ShapeError::Intersection { .. } | ShapeError::HoleInsideHole { .. }), "{error}");
+        }
+        e => panic!("{e}"),
+    }
+    let nested = regions(vec![rect(0.0, 0.0, 4.0, 4.0), rect(1.0, 1.0, 2.0, 2.0)]);
+    let e = voronoi(&nested, &VoronoiOptions::default()).unwrap_err();
+    assert!(matches!(e, VoronoiError::Invalid { site: Some(SiteId::Region(_)), .. }), "{e}");
+    let outside = VoronoiOptions { boundary: Some(rect(0.0, 0.0, 1.0, 1.0)), ..VoronoiOptions::default() };
+    let e = voronoi(&regions(vec![circle(5.0, 5.0, 1.0)]), &outside).unwrap_err();
+    assert!(matches!(e, VoronoiError::Invalid { site: Some(SiteId::Region(0)), .. }), "{e}");
+    let pts = Sites { points: vec![Point::new(0.0, 0.0)], ..Sites::default() };
+    assert_eq!(
+        voronoi(&pts, &VoronoiOptions::default()).unwrap_err(),
+        VoronoiError::Unsupported { site: SiteId::Point(0) }
+    );
+    let nan = regions(vec![poly(&[(0.0, 0.0), (f64::NAN, 0.0), (1.0, 1.0)])]);
+    assert!(voronoi(&nan, &VoronoiOptions::default()).is_err());
+}
