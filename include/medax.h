@@ -255,6 +255,28 @@ typedef enum mx_conic_kind {
 } mx_conic_kind;
 
 /**
+ * What kind of site an `mx_site` is.
+ */
+typedef enum mx_site_kind {
+  /**
+   * `points[index]`.
+   */
+  MX_SITE_POINT = 0,
+  /**
+   * `curves[index]`.
+   */
+  MX_SITE_CURVE = 1,
+  /**
+   * `regions[index]`.
+   */
+  MX_SITE_REGION = 2,
+  /**
+   * The outer boundary (the caller's, or the library's frame); `index` 0.
+   */
+  MX_SITE_BOUNDARY = 3,
+} mx_site_kind;
+
+/**
  * A computed medial axis of a 2D shape: nodes (maximal disks) joined by
  * conic edges. Opaque; create with `mx_axis_compute`, release with
  * `mx_axis_free`. It owns a copy of the shape, so it stays valid after the
@@ -281,6 +303,13 @@ typedef struct mx_mesh3d mx_mesh3d;
  * several threads at once.
  */
 typedef struct mx_shape2d mx_shape2d;
+
+/**
+ * A computed Voronoi diagram. Opaque; create with `mx_voronoi_compute`,
+ * release with `mx_voronoi_free`. Immutable: a `const mx_voronoi*` may be
+ * used from several threads at once.
+ */
+typedef struct mx_voronoi mx_voronoi;
 
 /**
  * Progress callback: `fraction` in [0, 1] of the work done; `user` is
@@ -546,6 +575,198 @@ typedef struct mx_bbox {
    */
   double ymax;
 } mx_bbox;
+
+/**
+ * Options for `mx_voronoi_compute`. Initialise with
+ * `mx_voronoi_options_default` (which sets `struct_size`).
+ */
+typedef struct mx_voronoi_options {
+  /**
+   * `sizeof(mx_voronoi_options)` as the caller was compiled.
+   */
+  size_t struct_size;
+  /**
+   * Seed of the divide step's random choices (as `mx_axis_options.seed`).
+   */
+  uint64_t seed;
+  /**
+   * Worker threads, as `mx_axis_options.threads`.
+   */
+  size_t threads;
+  /**
+   * Absolute touching tolerance, model units; 0 = 1e-9 × the sites'
+   * bounding-box diagonal.
+   */
+  double tolerance;
+  /**
+   * Optional progress callback, as `mx_axis_options.progress` (called
+   * with 0 before and 1 after; nonzero at 0 cancels).
+   */
+  mx_progress_fn progress;
+  /**
+   * Passed unchanged to `progress`.
+   */
+  void *user;
+} mx_voronoi_options;
+
+/**
+ * The input sites, as plain arrays (model units). Every array may be NULL
+ * when its count is 0. Sites must be pairwise disjoint.
+ */
+typedef struct mx_sites {
+  /**
+   * `x, y` pairs, `2 × point_count` doubles.
+   */
+  const double *points_xy;
+  /**
+   * Number of point sites.
+   */
+  size_t point_count;
+  /**
+   * `x, y, bulge` triples of every open curve back to back (the bulge of
+   * a curve's last vertex is ignored).
+   */
+  const double *curves_xyb;
+  /**
+   * Doubles in `curves_xyb`: 3 × the curve lengths' sum.
+   */
+  size_t curves_xyb_len;
+  /**
+   * Vertex count of each curve.
+   */
+  const size_t *curve_lengths;
+  /**
+   * Number of curve sites.
+   */
+  size_t curve_count;
+  /**
+   * `x, y, bulge` triples of every closed region back to back, as the
+   * holes of `mx_shape2d_from_bulges`.
+   */
+  const double *regions_xyb;
+  /**
+   * Doubles in `regions_xyb`: 3 × the region lengths' sum.
+   */
+  size_t regions_xyb_len;
+  /**
+   * Vertex count of each region.
+   */
+  const size_t *region_lengths;
+  /**
+   * Number of region sites.
+   */
+  size_t region_count;
+  /**
+   * The caller's outer boundary Γ as `x, y, bulge` triples enclosing
+   * every site (a site itself then), or NULL to let the library choose
+   * a frame that keeps every Voronoi vertex.
+   */
+  const double *boundary_xyb;
+  /**
+   * Vertex count of the boundary (0 with NULL); the array holds 3 ×
+   * this many doubles.
+   */
+  size_t boundary_length;
+} mx_sites;
+
+/**
+ * Facts about a whole diagram.
+ */
+typedef struct mx_voronoi_info {
+  /**
+   * 1 when the library chose the frame, 0 for the caller's boundary.
+   */
+  int32_t auto_frame;
+  /**
+   * 1 when every Voronoi vertex of the sites lies inside the frame; 0
+   * when the frame stopped growing first (nearly collinear sites).
+   */
+  int32_t complete;
+  /**
+   * Number of sites with a region (the library's frame has none).
+   */
+  size_t region_count;
+} mx_voronoi_info;
+
+/**
+ * A site, numbered as the caller gave it.
+ */
+typedef struct mx_site {
+  /**
+   * Which list.
+   */
+  enum mx_site_kind kind;
+  /**
+   * Index in that list.
+   */
+  size_t index;
+} mx_site;
+
+/**
+ * What an edge of the diagram's axis separates.
+ */
+typedef struct mx_voronoi_edge {
+  /**
+   * The sites on either side; `sides[0]` is on the left walking from the
+   * edge's `from` node to its `to` node (`mx_axis_get_edge`).
+   */
+  struct mx_site sides[2];
+  /**
+   * 1 when both sides are one site (points with two nearest points on
+   * it), else 0.
+   */
+  int32_t is_self;
+  /**
+   * 1 when the edge belongs to the sites' diagram: 0 only for edges
+   * facing the library's frame.
+   */
+  int32_t in_diagram;
+} mx_voronoi_edge;
+
+/**
+ * The region of one site.
+ */
+typedef struct mx_voronoi_region {
+  /**
+   * Edges in the boundary walk (`mx_voronoi_region_walk`).
+   */
+  size_t walk_length;
+  /**
+   * Closed walks the boundary edges form: 1 for a valid diagram, 0 for a
+   * site without edges to other sites.
+   */
+  size_t walks;
+  /**
+   * Number of the site's self-edges.
+   */
+  size_t self_edge_count;
+  /**
+   * 1 when the region reaches the library's frame (unbounded).
+   */
+  int32_t unbounded;
+} mx_voronoi_region;
+
+/**
+ * The site nearest to a point.
+ */
+typedef struct mx_nearest_site {
+  /**
+   * The site.
+   */
+  struct mx_site site;
+  /**
+   * Its distance, model units.
+   */
+  double distance;
+  /**
+   * The nearest point on it, x.
+   */
+  double foot_x;
+  /**
+   * The nearest point on it, y.
+   */
+  double foot_y;
+} mx_nearest_site;
 
 #ifdef __cplusplus
 extern "C" {
@@ -882,6 +1103,122 @@ const char *mx_version(void);
  * The version of the loaded library as `major * 10000 + minor * 100 + patch`.
  */
 uint32_t mx_version_number(void);
+
+/**
+ * Fills `out` with the default options (and its `struct_size`).
+ *
+ * # Safety
+ * `out` must be NULL or point to a writable `mx_voronoi_options`.
+ */
+enum mx_status mx_voronoi_options_default(struct mx_voronoi_options *out);
+
+/**
+ * Computes the Voronoi diagram of `sites` (thesis 2.3: the medial axis of
+ * the frame with the sites as holes) and writes a new handle to `*out`.
+ * `options` may be NULL. Fails with `MX_ERR_EMPTY` without sites,
+ * `MX_ERR_UNSUPPORTED` for point and curve sites (not yet supported),
+ * a validation status (e.g. `MX_ERR_INTERSECTION`) naming the site for
+ * overlapping or invalid sites, `MX_ERR_NUMERICAL` or `MX_ERR_CANCELLED`
+ * as `mx_axis_compute`; `*out` is then untouched.
+ *
+ * # Safety
+ * `sites` NULL or valid with arrays valid for their counts; `options` NULL
+ * or valid; `out` NULL or writable.
+ */
+enum mx_status mx_voronoi_compute(const struct mx_sites *sites,
+                                  const struct mx_voronoi_options *options,
+                                  struct mx_voronoi **out);
+
+/**
+ * Releases a diagram (and its axis). NULL is a no-op.
+ *
+ * # Safety
+ * `vd` must be NULL or a handle from medax not yet freed.
+ */
+void mx_voronoi_free(struct mx_voronoi *vd);
+
+/**
+ * The diagram's medial axis: nodes, edges and their samples through the
+ * `mx_axis_*` functions (loop 0 of its sites is the frame, loop 1 + i is
+ * region i). Borrowed: valid until `mx_voronoi_free`; do not free it.
+ *
+ * # Safety
+ * `vd` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_voronoi_axis(const struct mx_voronoi *vd, const struct mx_axis **out);
+
+/**
+ * Facts about the diagram.
+ *
+ * # Safety
+ * `vd` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_voronoi_get_info(const struct mx_voronoi *vd, struct mx_voronoi_info *out);
+
+/**
+ * What axis edge `index` separates.
+ *
+ * # Safety
+ * `vd` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_voronoi_get_edge(const struct mx_voronoi *vd,
+                                   size_t index,
+                                   struct mx_voronoi_edge *out);
+
+/**
+ * 1 when axis node `index` is where an edge between sites meets the
+ * library's frame (it runs on to infinity there), else 0.
+ *
+ * # Safety
+ * `vd` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_voronoi_node_frontier(const struct mx_voronoi *vd, size_t index, int32_t *out);
+
+/**
+ * The region of the site (`site_kind` an `mx_site_kind` value,
+ * `site_index` its index; `MX_ERR_INDEX_OUT_OF_RANGE` for a site that
+ * does not exist, or the library's frame).
+ *
+ * # Safety
+ * `vd` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_voronoi_get_region(const struct mx_voronoi *vd,
+                                     uint32_t site_kind,
+                                     size_t site_index,
+                                     struct mx_voronoi_region *out);
+
+/**
+ * The boundary walk of the site's region (site as in
+ * `mx_voronoi_get_region`), counter-clockwise round the site:
+ * `edges[k]` an axis edge index, `forward[k]` 1 when walked from its
+ * `from` node to its `to` node. `capacity` entries each (`forward` may be
+ * NULL); `*count` receives the walk length. Size query: `capacity` 0
+ * writes only `*count`; a shorter buffer gives `MX_ERR_BUFFER_TOO_SMALL`.
+ *
+ * # Safety
+ * `vd` NULL or a live handle; `edges` and `forward` NULL or `capacity`
+ * writable entries; `count` NULL or writable.
+ */
+enum mx_status mx_voronoi_region_walk(const struct mx_voronoi *vd,
+                                      uint32_t site_kind,
+                                      size_t site_index,
+                                      size_t *edges,
+                                      int32_t *forward,
+                                      size_t capacity,
+                                      size_t *count);
+
+/**
+ * The site nearest to (`x`, `y`) (model units), its distance and nearest
+ * point; never the library's frame. `MX_ERR_INVALID_ARGUMENT` for a
+ * non-finite point.
+ *
+ * # Safety
+ * `vd` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_voronoi_nearest_site(const struct mx_voronoi *vd,
+                                       double x,
+                                       double y,
+                                       struct mx_nearest_site *out);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -18,8 +18,8 @@ use std::ffi::{c_int, c_void};
 /// threads at once.
 #[allow(non_camel_case_types)]
 pub struct mx_axis {
-    shape: Shape2d,
-    axis: MedialAxis2d,
+    pub(crate) shape: Shape2d,
+    pub(crate) axis: MedialAxis2d,
 }
 
 /// Progress callback: `fraction` in [0, 1] of the work done; `user` is
@@ -163,7 +163,7 @@ pub struct mx_axis_edge {
     pub sites: [mx_axis_site; 2],
 }
 
-fn axis_error(e: AxisError) -> FfiError {
+pub(crate) fn axis_error(e: AxisError) -> FfiError {
     let message = e.to_string();
     match e {
         AxisError::Augment { hole } => {
@@ -196,10 +196,22 @@ unsafe fn options(p: *const mx_axis_options) -> Result<mx_axis_options, FfiError
 }
 
 /// Reports `fraction` to the caller's callback; true when it asks to cancel.
-fn progress(o: &mx_axis_options, fraction: f64) -> bool {
+pub(crate) fn progress(callback: mx_progress_fn, user: *mut c_void, fraction: f64) -> bool {
     // SAFETY: the caller supplied the callback and its `user` pointer for
     // this call; the callback's contract is documented on `mx_progress_fn`.
-    o.progress.is_some_and(|f| unsafe { f(fraction, o.user) } != 0)
+    callback.is_some_and(|f| unsafe { f(fraction, user) } != 0)
+}
+
+/// Runs `f` on the shared pool (`threads` 0) or on a pool of exactly
+/// `threads` threads.
+pub(crate) fn in_pool<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> Result<T, FfiError> {
+    if threads == 0 {
+        return Ok(f());
+    }
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| {
+        FfiError::new(mx_status::MX_ERR_INVALID_ARGUMENT, format!("cannot start {threads} threads: {e}"))
+    })?;
+    Ok(pool.install(f))
 }
 
 /// Computes the medial axis of `shape` (thesis Algorithm 2) and writes a new
@@ -223,25 +235,16 @@ pub unsafe extern "C" fn mx_axis_compute(
         check_out(out, "out")?;
         // SAFETY: caller contract.
         let (s, o) = unsafe { (deref(shape, "shape")?, self::options(options)?) };
-        if progress(&o, 0.0) {
+        if progress(o.progress, o.user, 0.0) {
             return Err(FfiError::new(
                 mx_status::MX_ERR_CANCELLED,
                 "mx_axis_compute cancelled by the progress callback",
             ));
         }
         let opts = AxisOptions { seed: o.seed, ..AxisOptions::default() };
-        let run = || medial_axis(&s.inner, &opts);
-        let axis = if o.threads == 0 {
-            run()
-        } else {
-            let pool = rayon::ThreadPoolBuilder::new().num_threads(o.threads).build().map_err(|e| {
-                FfiError::new(mx_status::MX_ERR_INVALID_ARGUMENT, format!("cannot start {} threads: {e}", o.threads))
-            })?;
-            pool.install(run)
-        }
-        .map_err(axis_error)?;
+        let axis = in_pool(o.threads, || medial_axis(&s.inner, &opts))?.map_err(axis_error)?;
         let h = Box::new(mx_axis { shape: s.inner.clone(), axis });
-        progress(&o, 1.0);
+        progress(o.progress, o.user, 1.0);
         let h = Box::into_raw(h);
         // SAFETY: checked non-NULL above.
         unsafe { write_out(out, h) };

@@ -17,6 +17,7 @@ mod last_error;
 mod shape2d;
 mod status;
 mod version;
+mod voronoi;
 
 pub use axis::*;
 pub use handles::*;
@@ -24,3 +25,4 @@ pub use last_error::*;
 pub use shape2d::*;
 pub use status::*;
 pub use version::*;
+pub use voronoi::*;

@@ -177,6 +177,31 @@ fn publish(out: *mut *mut mx_shape2d, shape: Shape2d) {
     unsafe { write_out(out, h) };
 }
 
+/// `x, y, bulge` triples for chains back to back (`data`), cut into
+/// chains of `lens[i]` vertices; `name` names the array in errors.
+pub(crate) fn split_bulges(data: &[f64], lens: &[usize], name: &str) -> Result<Vec<Vec<Vertex>>, FfiError> {
+    let total = lens.iter().try_fold(0usize, |a, &n| a.checked_add(n));
+    if total.and_then(|t| t.checked_mul(3)) != Some(data.len()) {
+        return Err(FfiError::new(
+            mx_status::MX_ERR_INVALID_ARGUMENT,
+            format!(
+                "{name} holds {} doubles but the lengths add up to {:?} vertices (3 doubles each)",
+                data.len(),
+                total
+            ),
+        ));
+    }
+    let mut out = Vec::with_capacity(lens.len());
+    let mut at = 0;
+    for &n in lens {
+        out.push(
+            data[at..at + 3 * n].chunks_exact(3).map(|c| Vertex { p: Point::new(c[0], c[1]), bulge: c[2] }).collect(),
+        );
+        at += 3 * n;
+    }
+    Ok(out)
+}
+
 /// Creates a shape from bulge loops. `xyb` holds `x, y, bulge` triples for
 /// all loops back to back (`xyb_len` doubles = 3 × total vertices);
 /// `loop_lengths[i]` is the vertex count of loop `i`; loop 0 is the outer
@@ -202,28 +227,7 @@ pub unsafe extern "C" fn mx_shape2d_from_bulges(
         let (data, lens, opts) = unsafe {
             (slice(xyb, xyb_len, "xyb")?, slice(loop_lengths, loop_count, "loop_lengths")?, self::options(options)?)
         };
-        let total = lens.iter().try_fold(0usize, |a, &n| a.checked_add(n));
-        if total.and_then(|t| t.checked_mul(3)) != Some(data.len()) {
-            return Err(FfiError::new(
-                mx_status::MX_ERR_INVALID_ARGUMENT,
-                format!(
-                    "xyb_len = {} but the loop lengths add up to {:?} vertices (3 doubles each)",
-                    data.len(),
-                    total
-                ),
-            ));
-        }
-        let mut loops = Vec::with_capacity(lens.len());
-        let mut at = 0;
-        for &n in lens {
-            let vs = data[at..at + 3 * n]
-                .chunks_exact(3)
-                .map(|c| Vertex { p: Point::new(c[0], c[1]), bulge: c[2] })
-                .collect();
-            loops.push(vs);
-            at += 3 * n;
-        }
-        publish(out, Shape2d::from_bulge_loops(loops, &opts)?);
+        publish(out, Shape2d::from_bulge_loops(split_bulges(data, lens, "xyb")?, &opts)?);
         Ok(())
     })
 }
