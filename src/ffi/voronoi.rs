@@ -253,7 +253,10 @@ unsafe fn read_sites(s: &mx_sites) -> Result<(Sites, Option<Vec<crate::shape::Ve
         )
     };
     let boundary_len = s.boundary_length.checked_mul(3).ok_or_else(|| {
-        FfiError::new(mx_status::MX_ERR_INVALID_ARGUMENT, format!("boundary_length = {} is too large", s.boundary_length))
+        FfiError::new(
+            mx_status::MX_ERR_INVALID_ARGUMENT,
+            format!("boundary_length = {} is too large", s.boundary_length),
+        )
     })?;
     // SAFETY: as above; `split_bulges` checks the lengths add up.
     let (curves_xyb, regions_xyb, boundary_xyb) = unsafe {

@@ -175,9 +175,10 @@ pub struct VoronoiDiagram {
     /// The library's frame is so large that every Voronoi vertex of the
     /// sites lies inside it (checked against the convex hull of the sites:
     /// the edges reaching the frame are exactly those that run to
-    /// infinity). False when growing it to its limit did not get there
-    /// (vertices of nearly collinear sites, far away); always true for a
-    /// caller's boundary.
+    /// infinity). False when growing it to its limit (2^20 of the sites'
+    /// diagonals, or the coordinate range) did not get there: vertices of
+    /// nearly collinear sites, very far away; always true for a caller's
+    /// boundary.
     pub complete: bool,
     /// Index of the sites' elements (loops `first_site_loop..`), for
     /// nearest-site queries.
@@ -238,9 +239,17 @@ pub fn voronoi(sites: &Sites, opts: &VoronoiOptions) -> Result<VoronoiDiagram, V
         return Ok(VoronoiDiagram::new(shape, loop_sites, axis, false, true));
     }
     let mut check = FrameCheck::new(&sites.regions, bbox);
+    let mut last: Option<VoronoiDiagram> = None;
     loop {
-        let shape = build(frame_loop(check.center(), check.radius()))?;
-        let axis = medial_axis(&shape, &opts.axis)?;
+        let framed = build(frame_loop(check.center(), check.radius()))
+            .and_then(|shape| Ok((medial_axis(&shape, &opts.axis)?, shape)));
+        // A larger frame that breaks down leaves the smaller one's
+        // diagram, incomplete, as the answer.
+        let (axis, shape) = match (framed, last) {
+            (Ok(done), _) => done,
+            (Err(_), Some(vd)) => return Ok(vd),
+            (Err(e), None) => return Err(e),
+        };
         let vd = VoronoiDiagram::new(shape, loop_sites.clone(), axis, true, false);
         if check.accepts(&vd) {
             return Ok(VoronoiDiagram { complete: true, ..vd });
@@ -248,6 +257,7 @@ pub fn voronoi(sites: &Sites, opts: &VoronoiOptions) -> Result<VoronoiDiagram, V
         if !check.grow() {
             return Ok(vd);
         }
+        last = Some(vd);
     }
 }
 

@@ -8,17 +8,25 @@
 //! the sites' convex hull (a hull edge that does not run along a site:
 //! between two sites, or across a concavity of one site, which gives an
 //! unbounded self-edge). A vertex beyond Γ shows as a pair of sites meeting
-//! Γ that no bridge joins, so Γ grows until the two multisets agree.
+//! Γ that no bridge joins, so Γ grows until the two multisets agree. It
+//! starts large (the frame costs two arcs whatever its size) and rarely
+//! needs to grow.
 
 use super::voronoi::{SiteId, VoronoiDiagram};
 use crate::kernel::{BBox, FilteredKernel, Kernel, Orientation, Point};
-use crate::shape::{Element, Loop, Vertex};
+use crate::shape::{Element, Loop, Vertex, MAX_COORDINATE};
 
+/// The first frame's radius in sites' diagonals: far enough that the
+/// vertices of nearly collinear rows of sites (a grid's edge) are inside
+/// it at the first try (a growth costs a whole second computation), near
+/// enough that coordinates on it keep the touching tolerance's digits.
+const FIRST_RADIUS: f64 = 4096.0;
 /// How many times the frame grows before the diagram is returned as
-/// incomplete, and by how much each time: up to 8^5 × the sites' diagonal,
-/// where `f64` radii still resolve the touching tolerance.
-const GROWTHS: u32 = 5;
-const FACTOR: f64 = 8.0;
+/// incomplete, and by how much each time: up to 2^20 sites' diagonals,
+/// where rounding on the frame (2^20 × 2^-52 of a diagonal) is still far
+/// below the touching tolerance (1e-9 of it by default).
+const GROWTHS: u32 = 2;
+const FACTOR: f64 = 16.0;
 
 /// Arcs of sites are sampled at this angular step (radians) for the hull:
 /// the hull only decides which sites are on it, and at least one interior
@@ -37,6 +45,8 @@ pub(crate) fn frame_loop(center: Point, radius: f64) -> Vec<Vertex> {
 pub(crate) struct FrameCheck {
     center: Point,
     radius: f64,
+    /// The largest radius whose circle keeps within ±`MAX_COORDINATE`.
+    room: f64,
     growths: u32,
     /// Site pairs of the hull's bridges, each pair sorted, the list sorted.
     bridges: Vec<(SiteId, SiteId)>,
@@ -54,7 +64,8 @@ struct Sample {
 
 impl FrameCheck {
     /// The first frame for region sites `regions` within `bbox`: a circle
-    /// one diagonal in radius around the box's centre.
+    /// [`FIRST_RADIUS`] diagonals in radius around the box's centre, or as
+    /// large as the coordinate range allows.
     pub(crate) fn new(regions: &[Vec<Vertex>], bbox: BBox) -> FrameCheck {
         let mut samples = Vec::new();
         for (i, r) in regions.iter().enumerate() {
@@ -70,7 +81,9 @@ impl FrameCheck {
         let mut bridges = hull_bridges(samples);
         bridges.sort();
         let center = bbox.min.mid(bbox.max);
-        FrameCheck { center, radius: bbox.diagonal().max(f64::MIN_POSITIVE), growths: 0, bridges }
+        let diag = bbox.diagonal().max(f64::MIN_POSITIVE);
+        let room = MAX_COORDINATE - center.x.abs().max(center.y.abs());
+        FrameCheck { center, radius: (FIRST_RADIUS * diag).min(room).max(diag), room, growths: 0, bridges }
     }
 
     /// Centre of the frame circle, model units.
@@ -85,7 +98,7 @@ impl FrameCheck {
 
     /// Grows the frame; false when it has reached its limit.
     pub(crate) fn grow(&mut self) -> bool {
-        if self.growths == GROWTHS {
+        if self.growths == GROWTHS || self.radius * FACTOR > self.room {
             return false;
         }
         self.growths += 1;
