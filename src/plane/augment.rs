@@ -393,7 +393,7 @@ mod tests {
             .iter()
             .filter_map(|p| match p {
                 Piece::Chain { from, .. } => Some(from.loop_index),
-                Piece::Aux { .. } | Piece::Tour { .. } => None,
+                Piece::Aux { .. } => None,
             })
             .collect();
         // From the outer loop's one contact: 1, 2, 3 nested, back out, outer.

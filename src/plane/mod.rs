@@ -18,7 +18,7 @@ pub mod leaf_text;
 pub mod maxdisk;
 pub mod maxdisk_star;
 pub mod subshape;
-pub mod tour;
+mod tour;
 
 pub use axis::{AxisEdge, AxisNode, MedialAxis2d, NodeKind, Primitive};
 pub use conquer::{medial_axis, medial_axis_with, AxisError, AxisOptions};
