@@ -7,7 +7,7 @@
 mod common;
 
 use common::oracle::check;
-use common::{circle, poly, rect, shape, v};
+use common::{circle, poly, rect, same_axis_moved, shape, v};
 use medax::kernel::Point;
 use medax::plane::{medial_axis, AxisOptions, MedialAxis2d, NodeKind};
 use medax::shape::{samples, Vertex};
@@ -53,18 +53,48 @@ fn polygon_holes_with_vertices_lowest() {
 }
 
 #[test]
-fn hexagon_with_a_centred_hole_is_symmetric_below_the_hole() {
+fn hexagon_with_a_centred_hole_has_a_symmetric_axis() {
     // The hexagon's bottom is a convex corner straight below the hole's
     // lowest point: the straight-down disk touches both edges beside it
-    // and the hole (three contacts); the augmentation turns its "down".
+    // and the hole (three contacts); the augmentation turns its "down",
+    // and so cuts the shape with no symmetry at all. The axis must still
+    // have every symmetry of the loops, their vertices included (a vertex
+    // of the hole is a joint of the axis): a circle of two half arcs has
+    // the half turn and the mirrors in both axes, one of six arcs with
+    // vertices facing the hexagon's sides all six turns and six mirrors.
     let hex: Vec<(f64, f64)> = (0..6)
         .map(|k| {
             let t = std::f64::consts::TAU * k as f64 / 6.0 - std::f64::consts::FRAC_PI_2;
             (3.0 * t.cos(), 3.0 * t.sin())
         })
         .collect();
-    let (s, a) = axis_of(vec![poly(&hex), circle(0.0, 0.0, 1.0)]);
-    check(&s, &a, 400, 3);
+    let sixths: Vec<Vertex> = (0..6)
+        .map(|k| {
+            let t = std::f64::consts::FRAC_PI_3 * k as f64;
+            v(t.cos(), t.sin(), (std::f64::consts::PI / 12.0).tan())
+        })
+        .collect();
+    for (hole, turns) in [(circle(0.0, 0.0, 1.0), vec![0, 3]), (sixths, (0..6).collect())] {
+        let arcs = hole.len();
+        let (s, a) = axis_of(vec![poly(&hex), hole]);
+        check(&s, &a, 400, 3);
+        // A cycle round the hole with a spoke to each corner.
+        let kinds = |k: NodeKind| a.nodes.iter().filter(|n| n.kind == k).count();
+        assert_eq!((kinds(NodeKind::Corner), kinds(NodeKind::Branch)), (6, 6), "{arcs} arcs: {:?}", a.nodes);
+        for k in turns {
+            let t = std::f64::consts::FRAC_PI_3 * k as f64;
+            let what = format!("{arcs} arcs, turned {k}·60°");
+            same_axis_moved(&a, &a, |p, r| (turned(p, t), r), 1e-9, &what);
+            let mirror = |p: Point| turned(Point::new(-p.x, p.y), t);
+            same_axis_moved(&a, &a, |p, r| (mirror(p), r), 1e-9, &format!("{what}, mirrored"));
+        }
+    }
+}
+
+/// `p` turned by `angle` radians about the origin.
+fn turned(p: Point, angle: f64) -> Point {
+    let (sin, cos) = angle.sin_cos();
+    Point::new(p.x * cos - p.y * sin, p.x * sin + p.y * cos)
 }
 
 #[test]
