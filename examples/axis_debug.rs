@@ -105,7 +105,6 @@ fn main() {
                     Piece::Chain { from, to } => {
                         println!("   chain {:?} {:?} -> {:?} {:?}", from, from.point(&shape), to, to.point(&shape))
                     }
-                    Piece::Tour { from, to } => println!("   tour range {from}..={to}"),
                 }
             }
         }

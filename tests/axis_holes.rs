@@ -7,9 +7,10 @@
 mod common;
 
 use common::oracle::check;
-use common::{circle, poly, rect, shape, v};
+use common::{circle, poly, rect, same_axis_moved, shape, v};
 use medax::kernel::Point;
-use medax::plane::{medial_axis, AxisOptions, MedialAxis2d, NodeKind};
+use medax::plane::augment::augment;
+use medax::plane::{medial_axis, AxisOptions, DiskFinder, MedialAxis2d, NodeKind};
 use medax::shape::{samples, Vertex};
 use rand::{Rng, SeedableRng};
 
@@ -53,18 +54,48 @@ fn polygon_holes_with_vertices_lowest() {
 }
 
 #[test]
-fn hexagon_with_a_centred_hole_is_symmetric_below_the_hole() {
+fn hexagon_with_a_centred_hole_has_a_symmetric_axis() {
     // The hexagon's bottom is a convex corner straight below the hole's
     // lowest point: the straight-down disk touches both edges beside it
-    // and the hole (three contacts); the augmentation turns its "down".
+    // and the hole (three contacts); the augmentation turns its "down",
+    // and so cuts the shape with no symmetry at all. The axis must still
+    // have every symmetry of the loops, their vertices included (a vertex
+    // of the hole is a joint of the axis): a circle of two half arcs has
+    // the half turn and the mirrors in both axes, one of six arcs with
+    // vertices facing the hexagon's sides all six turns and six mirrors.
     let hex: Vec<(f64, f64)> = (0..6)
         .map(|k| {
             let t = std::f64::consts::TAU * k as f64 / 6.0 - std::f64::consts::FRAC_PI_2;
             (3.0 * t.cos(), 3.0 * t.sin())
         })
         .collect();
-    let (s, a) = axis_of(vec![poly(&hex), circle(0.0, 0.0, 1.0)]);
-    check(&s, &a, 400, 3);
+    let sixths: Vec<Vertex> = (0..6)
+        .map(|k| {
+            let t = std::f64::consts::FRAC_PI_3 * k as f64;
+            v(t.cos(), t.sin(), (std::f64::consts::PI / 12.0).tan())
+        })
+        .collect();
+    for (hole, turns) in [(circle(0.0, 0.0, 1.0), vec![0, 3]), (sixths, (0..6).collect())] {
+        let arcs = hole.len();
+        let (s, a) = axis_of(vec![poly(&hex), hole]);
+        check(&s, &a, 400, 3);
+        // A cycle round the hole with a spoke to each corner.
+        let kinds = |k: NodeKind| a.nodes.iter().filter(|n| n.kind == k).count();
+        assert_eq!((kinds(NodeKind::Corner), kinds(NodeKind::Branch)), (6, 6), "{arcs} arcs: {:?}", a.nodes);
+        for k in turns {
+            let t = std::f64::consts::FRAC_PI_3 * k as f64;
+            let what = format!("{arcs} arcs, turned {k}·60°");
+            same_axis_moved(&a, &a, |p, r| (turned(p, t), r), 1e-9, &what);
+            let mirror = |p: Point| turned(Point::new(-p.x, p.y), t);
+            same_axis_moved(&a, &a, |p, r| (mirror(p), r), 1e-9, &format!("{what}, mirrored"));
+        }
+    }
+}
+
+/// `p` turned by `angle` radians about the origin.
+fn turned(p: Point, angle: f64) -> Point {
+    let (sin, cos) = angle.sin_cos();
+    Point::new(p.x * cos - p.y * sin, p.x * sin + p.y * cos)
 }
 
 #[test]
@@ -115,23 +146,6 @@ fn same_axis_under_transformations_with_holes() {
     let base = samples::random_holes(3, 9);
     let (s, a) = axis_of(base.clone());
     check(&s, &a, 100, 9);
-    let key = |a: &MedialAxis2d| {
-        let mut b: Vec<(f64, f64, f64)> =
-            a.nodes.iter().filter(|n| n.kind == NodeKind::Branch).map(|n| (n.point.x, n.point.y, n.radius)).collect();
-        b.sort_by(|p, q| p.partial_cmp(q).unwrap());
-        b
-    };
-    let want = key(&a);
-    let same = |got: Vec<(f64, f64, f64)>, tol: f64, what: &str| {
-        assert_eq!(got.len(), want.len(), "{what}");
-        for p in &want {
-            let best = got
-                .iter()
-                .map(|q| (p.0 - q.0).abs().max((p.1 - q.1).abs()).max((p.2 - q.2).abs()))
-                .fold(f64::INFINITY, f64::min);
-            assert!(best <= tol, "{what}: {p:?} off by {best:e}");
-        }
-    };
     // Holes listed in another order, each starting at another vertex.
     let mut shuffled: Vec<Vec<Vertex>> = vec![base[0].clone()];
     for h in base[1..].iter().rev() {
@@ -139,7 +153,7 @@ fn same_axis_under_transformations_with_holes() {
         h.rotate_left(1);
         shuffled.push(h);
     }
-    same(key(&axis_of(shuffled).1), 1e-9, "reordered");
+    same_axis_moved(&a, &axis_of(shuffled).1, |p, r| (p, r), 1e-9, "reordered");
     // Every loop reversed (the library normalises orientation).
     let reversed: Vec<Vec<Vertex>> = base
         .iter()
@@ -148,12 +162,34 @@ fn same_axis_under_transformations_with_holes() {
             (0..n).map(|i| v(l[(n - i) % n].p.x, l[(n - i) % n].p.y, -l[(n - 1 - i) % n].bulge)).collect()
         })
         .collect();
-    same(key(&axis_of(reversed).1), 1e-9, "reversed");
+    same_axis_moved(&a, &axis_of(reversed).1, |p, r| (p, r), 1e-9, "reversed");
     for (k, d) in [(1e-3, 0.0), (1e3, 0.0), (1.0, 1e4)] {
         let moved: Vec<Vec<Vertex>> =
             base.iter().map(|l| l.iter().map(|w| v(w.p.x * k + d, w.p.y * k + d, w.bulge)).collect()).collect();
-        let got = key(&axis_of(moved).1).into_iter().map(|(x, y, r)| ((x - d) / k, (y - d) / k, r / k)).collect();
-        same(got, if d != 0.0 { 1e-7 } else { 1e-9 }, &format!("scaled {k} moved {d}"));
+        let back = |p: Point, r: f64| (Point::new((p.x - d) / k, (p.y - d) / k), r / k);
+        let tol = if d != 0.0 { 1e-7 } else { 1e-9 };
+        same_axis_moved(&a, &axis_of(moved).1, back, tol, &format!("scaled {k} moved {d}"));
+    }
+    // Turned: the one transform that changes the augmentation, whose disks
+    // grow "down" from each hole's lowest point (another point, touching
+    // other loops, once the shape turns) and so cut other subshapes.
+    let augmenting = |loops: Vec<Vec<Vertex>>| augment(&DiskFinder::new(&shape(loops))).expect("augmented").cuts;
+    let own = augmenting(base.clone());
+    for t in [0.3, std::f64::consts::FRAC_PI_2, 2.1] {
+        let turned_loops: Vec<Vec<Vertex>> = base
+            .iter()
+            .map(|l| {
+                l.iter()
+                    .map(|w| {
+                        let p = turned(w.p, t);
+                        v(p.x, p.y, w.bulge)
+                    })
+                    .collect()
+            })
+            .collect();
+        let mut back = augmenting(turned_loops.clone()).into_iter().map(|c| turned(c.center, -t));
+        assert!(back.any(|c| own.iter().all(|o| o.center.dist(c) > 1e-6)), "turned {t} rad: the same augmenting disks");
+        same_axis_moved(&a, &axis_of(turned_loops).1, |p, r| (turned(p, -t), r), 1e-9, &format!("turned {t} rad"));
     }
 }
 

@@ -168,7 +168,7 @@ fn snapped(shape: &Shape2d, at: ElementRef, q: Point) -> BoundaryPos {
 /// `p` with a position at an element's end written as the next element's start.
 fn normalised(shape: &Shape2d, p: BoundaryPos) -> BoundaryPos {
     if p.t >= 1.0 {
-        BoundaryPos { element: (p.element + 1) % shape.loops()[p.loop_index].len(), t: 0.0, ..p }
+        BoundaryPos { t: 1.0, ..p }.other_way(shape).unwrap_or(p)
     } else {
         BoundaryPos { t: p.t.max(0.0), ..p }
     }
@@ -288,7 +288,6 @@ fn build(shape: &Shape2d, found: Vec<(Contact, Contact, Cut)>) -> Augmentation {
 /// start) is the whole loop; between two contacts at one position any
 /// other chain is that single point.
 fn push_chain(shape: &Shape2d, pieces: &mut Vec<Piece>, list: &[Contact], k: usize) {
-    let n = shape.loops()[list[0].pos.loop_index].len();
     let first = list[0].pos;
     // Leading: at the first position and not wrapped round (those sort
     // after the first contact in its vertex's fan); trailing: wrapped and
@@ -300,13 +299,8 @@ fn push_chain(shape: &Shape2d, pieces: &mut Vec<Piece>, list: &[Contact], k: usi
     let from = list[k].pos;
     let (to, to_end) = if k + 1 == list.len() { (first, true) } else { (list[k + 1].pos, at_end(k + 1)) };
     let from_start = k < lead;
-    let end_of = |p: BoundaryPos| {
-        if p.t == 0.0 {
-            BoundaryPos { element: (p.element + n - 1) % n, t: 1.0, ..p }
-        } else {
-            p
-        }
-    };
+    // A chain ending at a vertex ends on the element before it.
+    let end_of = |p: BoundaryPos| if p.t == 0.0 { p.other_way(shape).unwrap_or(p) } else { p };
     if from_start && to_end {
         // The whole loop, from `from` round to itself.
         let vertex = BoundaryPos { element: from.element, t: 0.0, ..from };
@@ -364,6 +358,35 @@ mod tests {
     }
 
     #[test]
+    fn the_cycle_writes_each_vertex_one_way() {
+        let at = |loop_index, element, t| BoundaryPos { loop_index, element, t };
+        let spike = shape_of(samples::spike_holes(true, false));
+        let n = spike.loops()[0].len();
+        // Contacts: an element's end is the next one's start, round the
+        // loop's end too.
+        assert_eq!(normalised(&spike, at(0, n - 1, 1.0)), at(0, 0, 0.0));
+        assert_eq!(normalised(&spike, at(0, 2, 1.0)), at(0, 3, 0.0));
+        assert_eq!(normalised(&spike, at(0, 2, 0.25)), at(0, 2, 0.25));
+        // The spike's disks land on its apex, vertex 0: the chain coming
+        // round to it ends on the loop's last element.
+        let last = at(0, n - 1, 1.0);
+        assert!(check_boundary(&spike)
+            .boundary
+            .pieces
+            .iter()
+            .any(|p| matches!(*p, Piece::Chain { to, .. } if to == last)));
+        // Chains start at an element's start and end at an element's end,
+        // so that a chain's ends name the elements it runs over.
+        for s in [spike, shape_of(samples::spike_holes(false, true)), shape_of(samples::random_holes(4, 2))] {
+            for p in &check_boundary(&s).boundary.pieces {
+                if let Piece::Chain { from, to } = *p {
+                    assert!(from == to || (from.t < 1.0 && to.t > 0.0), "{from:?} -> {to:?}");
+                }
+            }
+        }
+    }
+
+    #[test]
     fn stacked_holes_hang_on_each_other() {
         // Each hole's disk touches the hole below: a chain of loops, with
         // each hole's walk nested inside the one below it.
@@ -393,7 +416,7 @@ mod tests {
             .iter()
             .filter_map(|p| match p {
                 Piece::Chain { from, .. } => Some(from.loop_index),
-                Piece::Aux { .. } | Piece::Tour { .. } => None,
+                Piece::Aux { .. } => None,
             })
             .collect();
         // From the outer loop's one contact: 1, 2, 3 nested, back out, outer.

@@ -307,11 +307,6 @@ pub fn solve<K: AxisKernel>(
     tol: f64,
     finder: &DiskFinder<K>,
 ) -> Result<LocalAxis, BaseCaseError> {
-    // Ranges of an augmented cycle are the divide step's own; a leaf comes
-    // with them expanded.
-    if s.pieces.iter().any(|p| matches!(p, Piece::Tour { .. })) {
-        return Err(BaseCaseError::Inconsistent(Point::default()));
-    }
     if let Some(disk) = hugged_disk(shape, s, cuts, HUGGED_TIP * tol) {
         // The tip of a lobe cut at nearly its osculating circle: its true
         // axis runs on inside a sliver a few tolerances thin, where the
@@ -490,7 +485,7 @@ impl<K: AxisKernel> Builder<'_, K> {
         let m = s.pieces.len();
         let aux_center = |j: usize| match s.pieces[j % m] {
             Piece::Aux { disk } => Some((cuts[disk].center, cuts[disk].radius)),
-            Piece::Chain { .. } | Piece::Tour { .. } => None,
+            Piece::Chain { .. } => None,
         };
         // A single chain of a whole loop closes on itself.
         let closed = m == 1;
@@ -502,7 +497,7 @@ impl<K: AxisKernel> Builder<'_, K> {
                 if let Piece::Aux { disk } = *piece {
                     let end_of = |p: &Piece, start: bool| match *p {
                         Piece::Chain { from, to } => Some(if start { from } else { to }.point(shape)),
-                        Piece::Aux { .. } | Piece::Tour { .. } => None,
+                        Piece::Aux { .. } => None,
                     };
                     let c = cuts[disk];
                     let a = end_of(&s.pieces[(j + m - 1) % m], false).unwrap_or(c.center);

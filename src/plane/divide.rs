@@ -24,7 +24,7 @@ use super::augment::{augment, AugmentError, Augmentation};
 use super::maxdisk::{DiskFinder, Footpoint, MaxDisk};
 use super::maxdisk_star::slide_to_third;
 use super::subshape::{hugged_disk, BoundaryPos, ChainParts, Cut, Piece, Subshape, HUGGED_TIP, SLIVER_END};
-use super::tour::Tour;
+use super::tour::{Ranged, Span, Tour};
 use crate::kernel::{AxisKernel, Contact, Point};
 use crate::shape::samples::Mix;
 use crate::shape::{ElementRef, JointKind, Shape2d};
@@ -53,21 +53,24 @@ pub fn original_parts(shape: &Shape2d, s: &Subshape) -> usize {
     s.chains().map(|(from, to)| ChainParts::new(shape, from, to).len()).sum()
 }
 
-/// [`original_parts`] counting the ranges of the augmented cycle `tour` too.
-fn parts_in(shape: &Shape2d, s: &Subshape, tour: &Tour) -> usize {
-    original_parts(shape, s)
-        + s.pieces
-            .iter()
-            .map(|p| if let Piece::Tour { from, to } = *p { tour.parts(from, to) } else { 0 })
-            .sum::<usize>()
+/// [`original_parts`] of `s`, its ranges of the augmented cycle `tour` included.
+fn parts_in(shape: &Shape2d, s: &Ranged, tour: &Tour) -> usize {
+    s.spans
+        .iter()
+        .map(|p| match *p {
+            Span::Piece(Piece::Chain { from, to }) => ChainParts::new(shape, from, to).len(),
+            Span::Piece(Piece::Aux { .. }) => 0,
+            Span::Range { from, to } => tour.parts(from, to),
+        })
+        .sum()
 }
 
 /// Reflex single points of `s` (see [`leaf_size`]), ranges of `tour` included.
-fn points_in(shape: &Shape2d, s: &Subshape, tour: &Tour) -> usize {
-    reflex_points(shape, s).len()
-        + s.pieces
+fn points_in(shape: &Shape2d, s: &Ranged, tour: &Tour) -> usize {
+    s.pieces().filter(|&p| reflex_point(shape, p).is_some()).count()
+        + s.spans
             .iter()
-            .map(|p| if let Piece::Tour { from, to } = *p { tour.points(from, to) } else { 0 })
+            .map(|p| if let Span::Range { from, to } = *p { tour.points(from, to) } else { 0 })
             .sum::<usize>()
 }
 
@@ -77,13 +80,13 @@ const EXPAND_BELOW: usize = 64;
 
 /// A seed for a subshape: its first piece and the caller's seed, so that
 /// the choice does not depend on the order in which subshapes are cut.
-fn seed_of(seed: u64, s: &Subshape) -> u64 {
+fn seed_of(seed: u64, s: &Ranged) -> u64 {
     let mut h = seed ^ 0x5851_f42d_4c95_7f2d;
-    for p in s.pieces.iter().take(2) {
+    for p in s.spans.iter().take(2) {
         let (a, b) = match *p {
-            Piece::Chain { from, to } => ((from.element as u64) << 32 ^ from.t.to_bits(), to.t.to_bits()),
-            Piece::Aux { disk } => (disk as u64, 0),
-            Piece::Tour { from, to } => ((from as u64) << 32 ^ 0x746f_7572, to as u64),
+            Span::Piece(Piece::Chain { from, to }) => ((from.element as u64) << 32 ^ from.t.to_bits(), to.t.to_bits()),
+            Span::Piece(Piece::Aux { disk }) => (disk as u64, 0),
+            Span::Range { from, to } => ((from as u64) << 32 ^ 0x746f_7572, to as u64),
         };
         h = (h ^ a).wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ b;
     }
@@ -92,29 +95,29 @@ fn seed_of(seed: u64, s: &Subshape) -> u64 {
 
 /// A random point on a random original part of `s`: the position and the
 /// part's fraction range, at a reflex end of the part when it has one.
-fn pick_point(shape: &Shape2d, s: &Subshape, tour: &Tour, rng: &mut Mix) -> Option<(BoundaryPos, (f64, f64))> {
+fn pick_point(shape: &Shape2d, s: &Ranged, tour: &Tour, rng: &mut Mix) -> Option<(BoundaryPos, (f64, f64))> {
     // The chains in piece order, those inside ranges of the augmented
     // cycle counted in place.
-    let count = |p: &Piece| match *p {
-        Piece::Chain { from, to } => usize::from(from != to),
-        Piece::Tour { from, to } => tour.chains(from, to),
-        Piece::Aux { .. } => 0,
+    let count = |p: &Span| match *p {
+        Span::Piece(Piece::Chain { from, to }) => usize::from(from != to),
+        Span::Range { from, to } => tour.chains(from, to),
+        Span::Piece(Piece::Aux { .. }) => 0,
     };
-    let total: usize = s.pieces.iter().map(count).sum();
+    let total: usize = s.spans.iter().map(count).sum();
     if total == 0 {
         return None;
     }
     let mut k = rng.below(total);
-    let (from, to) = s.pieces.iter().find_map(|p| {
+    let (from, to) = s.spans.iter().find_map(|p| {
         let c = count(p);
         if k >= c {
             k -= c;
             return None;
         }
         match *p {
-            Piece::Chain { from, to } => Some((from, to)),
-            Piece::Tour { from, .. } => tour.chain(from, k),
-            Piece::Aux { .. } => None,
+            Span::Piece(Piece::Chain { from, to }) => Some((from, to)),
+            Span::Range { from, .. } => tour.chain(from, k),
+            Span::Piece(Piece::Aux { .. }) => None,
         }
     })?;
     let parts = ChainParts::new(shape, from, to);
@@ -163,12 +166,12 @@ fn position(shape: &Shape2d, f: &Footpoint) -> BoundaryPos {
 /// if every one of them has fewer original parts than `s` (`parts`).
 fn dividing(
     shape: &Shape2d,
-    s: &Subshape,
+    s: &Ranged,
     parts: usize,
     (disk, center, cuts, tour): (usize, Point, &[Cut], &Tour),
     feet: &[BoundaryPos],
-) -> Option<Vec<Subshape>> {
-    let children = tour.open_at(shape, s, feet).split(shape, disk, feet, center, cuts)?;
+) -> Option<Vec<Ranged>> {
+    let children = tour.cut(shape, s, disk, feet, center, cuts)?;
     children.iter().all(|c| parts_in(shape, c, tour) < parts).then_some(children)
 }
 
@@ -198,13 +201,13 @@ fn foot_at_convex_corner(shape: &Shape2d, feet: &[BoundaryPos], r: f64) -> bool 
 /// or `maxdisk*` after a redundant cut. `None` when the disk does not divide.
 fn cut_with<K: AxisKernel>(
     finder: &DiskFinder<K>,
-    s: &Subshape,
+    s: &Ranged,
     parts: usize,
     (cuts, tour): (&[Cut], &Tour),
     d: &MaxDisk,
     pos: BoundaryPos,
     (lo, hi): (f64, f64),
-) -> Option<(Cut, Vec<Subshape>)> {
+) -> Option<(Cut, Vec<Ranged>)> {
     let shape = finder.shape();
     let tol = finder.contact_tolerance();
     let disk = cuts.len();
@@ -234,7 +237,7 @@ fn cut_with<K: AxisKernel>(
     if foot_at_convex_corner(shape, &feet, d.radius) {
         return None;
     }
-    let children = tour.open_at(shape, s, &feet).split(shape, disk, &feet, d.center, cuts)?;
+    let children = tour.cut(shape, s, disk, &feet, d.center, cuts)?;
     let counts: Vec<usize> = children.iter().map(|c| parts_in(shape, c, tour)).collect();
     if counts.iter().all(|&c| c < parts) {
         return Some((Cut { center: d.center, radius: d.radius }, children));
@@ -273,14 +276,14 @@ pub fn decompose(shape: &Shape2d, seed: u64) -> Result<Decomposition, AugmentErr
 /// The subshape's single-point chains that are reflex vertices (the
 /// thesis's zero-length arcs between auxiliary arcs), in piece order.
 fn reflex_points(shape: &Shape2d, s: &Subshape) -> Vec<BoundaryPos> {
-    s.pieces
-        .iter()
-        .filter_map(|p| match *p {
-            Piece::Chain { from, to } if ChainParts::new(shape, from, to).is_empty() => Some(from),
-            _ => None,
-        })
-        .filter(|p| p.vertex(shape).is_some_and(|v| shape.joint(p.loop_index, v) == JointKind::Reflex))
-        .collect()
+    s.pieces.iter().filter_map(|&p| reflex_point(shape, p)).collect()
+}
+
+/// The position of `p` when it is a single-point chain at a reflex vertex.
+fn reflex_point(shape: &Shape2d, p: Piece) -> Option<BoundaryPos> {
+    let Piece::Chain { from, to } = p else { return None };
+    let reflex = from.vertex(shape).is_some_and(|v| shape.joint(from.loop_index, v) == JointKind::Reflex);
+    (reflex && ChainParts::new(shape, from, to).is_empty()).then_some(from)
 }
 
 /// A cluster of reflex vertices separated by auxiliary arcs only (thesis
@@ -364,7 +367,8 @@ pub fn divide_into<K: AxisKernel>(
     seed: u64,
     leaf_parts: usize,
 ) {
-    divide_along(finder, out, roots, seed, leaf_parts, &Tour::default());
+    // Plain subshapes hold no range: the empty cycle is never looked into.
+    divide_along(finder, out, roots.into_iter().map(Ranged::from).collect(), seed, leaf_parts, &Tour::default());
 }
 
 /// [`divide_into`] for subshapes that may hold ranges of the augmented
@@ -372,19 +376,18 @@ pub fn divide_into<K: AxisKernel>(
 fn divide_along<K: AxisKernel>(
     finder: &DiskFinder<K>,
     out: &mut Decomposition,
-    roots: Vec<Subshape>,
+    roots: Vec<Ranged>,
     seed: u64,
     leaf_parts: usize,
     tour: &Tour,
 ) {
     let shape = finder.shape();
     let mut todo = roots;
-    let ranged = |s: &Subshape| s.pieces.iter().any(|p| matches!(p, Piece::Tour { .. }));
     // Depth-first with an explicit stack: cut ids depend only on the order
     // of cuts, which is fixed by the seed.
     while let Some(mut s) = todo.pop() {
-        if ranged(&s) && tour.expanded_len(&s) <= EXPAND_BELOW {
-            s = tour.expand(&s);
+        if s.has_ranges() && tour.expanded_len(&s) <= EXPAND_BELOW {
+            s = tour.expand(&s).into();
         }
         let parts = parts_in(shape, &s, tour);
         // Reflex vertices between auxiliary arcs are zero-length arcs: they
@@ -392,8 +395,9 @@ fn divide_along<K: AxisKernel>(
         // A lobe's tip within a few tolerances of its one dividing disk is
         // a leaf however many parts it has: cutting it again would leave
         // bands of rounding between nearly equal disks.
+        // A range holds many pieces: never a lobe's tip.
         if parts + points_in(shape, &s, tour) <= leaf_parts
-            || hugged_disk(shape, &s, &out.cuts, HUGGED_TIP * shape.tolerance()).is_some()
+            || s.plain().is_some_and(|p| hugged_disk(shape, &p, &out.cuts, HUGGED_TIP * shape.tolerance()).is_some())
         {
             out.leaves.push(tour.expand(&s));
             continue;
@@ -408,7 +412,8 @@ fn divide_along<K: AxisKernel>(
             })
             .or_else(|| {
                 let whole = tour.expand(&s);
-                cluster_cut(finder, &whole, &reflex_points(shape, &whole), &out.cuts)
+                let (cut, children) = cluster_cut(finder, &whole, &reflex_points(shape, &whole), &out.cuts)?;
+                Some((cut, children.into_iter().map(Ranged::from).collect()))
             });
         match found {
             Some((cut, children)) => {

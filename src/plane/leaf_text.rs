@@ -60,9 +60,6 @@ pub fn write_leaf(s: &Subshape, cuts: &[Cut]) -> String {
                 let c = cuts.get(disk).copied().unwrap_or(Cut { center: Point::default(), radius: f64::NAN });
                 writeln!(out, "aux {:x} {:x} {:x}", c.center.x.to_bits(), c.center.y.to_bits(), c.radius.to_bits())
             }
-            // Only the divide step holds ranges of an augmented cycle;
-            // written for the record, refused by `read_leaf`.
-            Piece::Tour { from, to } => writeln!(out, "tour {from} {to}"),
         };
     }
     out

@@ -18,7 +18,7 @@ pub mod leaf_text;
 pub mod maxdisk;
 pub mod maxdisk_star;
 pub mod subshape;
-pub mod tour;
+mod tour;
 pub mod voronoi;
 mod voronoi_draw;
 mod voronoi_frame;

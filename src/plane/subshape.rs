@@ -66,6 +66,19 @@ pub(crate) fn chain_holds(shape: &Shape2d, from: BoundaryPos, to: BoundaryPos, p
 }
 
 /// One piece of a subshape's boundary, in travel order (interior on the left).
+///
+/// A piece stands for itself. The divide step's ranges of an augmented
+/// domain's cycle (thesis 2.3.1) index a cycle that a subshape does not
+/// carry, so they stay inside the divide step: no variant here, no public
+/// way to build one.
+///
+/// ```compile_fail,E0599
+/// let _ = medax::plane::Piece::Tour { from: 0, to: 1 };
+/// ```
+///
+/// ```compile_fail,E0603
+/// use medax::plane::tour::Tour;
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Piece {
     /// Original boundary from `from` forwards along its loop to `to`
@@ -83,15 +96,30 @@ pub enum Piece {
         /// Which dividing disk.
         disk: usize,
     },
-    /// Pieces `from..=to` of an augmented domain's boundary cycle that no
-    /// cut has touched yet (see [`super::tour`]). Only the divide step sees
-    /// these; leaves and stuck subshapes come out with them expanded.
-    Tour {
-        /// First piece of the cycle.
-        from: usize,
-        /// Last piece of the cycle.
-        to: usize,
-    },
+}
+
+/// An entry of a piece list that a cut splits: a [`Piece`], or, inside the
+/// divide step, a stand-in for a run of pieces that no footpoint lands on
+/// and that a cut copies whole (a range of an augmented domain's cycle).
+/// Crate-private so that a public [`Subshape`] only ever holds pieces that
+/// stand for themselves.
+pub(crate) trait Slot: Copy + From<Piece> {
+    /// The piece itself; `None` for a stand-in.
+    fn piece(self) -> Option<Piece>;
+
+    /// The chain's ends, when this is a chain.
+    fn chain(self) -> Option<(BoundaryPos, BoundaryPos)> {
+        match self.piece()? {
+            Piece::Chain { from, to } => Some((from, to)),
+            Piece::Aux { .. } => None,
+        }
+    }
+}
+
+impl Slot for Piece {
+    fn piece(self) -> Option<Piece> {
+        Some(self)
+    }
 }
 
 /// A dividing disk as subshapes see it.
@@ -197,13 +225,9 @@ pub(crate) const SLIVER_END: f64 = 4.0;
 /// circle. `None` for any other subshape. Stops at the first part that
 /// strays, so it costs little on ordinary subshapes.
 pub fn hugged_disk(shape: &Shape2d, s: &Subshape, cuts: &[Cut], slack: f64) -> Option<usize> {
-    // A range of the augmented cycle holds arcs of its own: not one disk's tip.
-    if s.pieces.iter().any(|p| matches!(p, Piece::Tour { .. })) {
-        return None;
-    }
     let mut disks = s.pieces.iter().filter_map(|p| match *p {
         Piece::Aux { disk } => Some(disk),
-        Piece::Chain { .. } | Piece::Tour { .. } => None,
+        Piece::Chain { .. } => None,
     });
     let (Some(disk), None) = (disks.next(), disks.next()) else { return None };
     let c = cuts[disk];
@@ -239,78 +263,6 @@ impl Subshape {
         })
     }
 
-    /// The chain piece holding `p` and where along it, if any.
-    fn locate(&self, shape: &Shape2d, p: BoundaryPos) -> Option<(usize, (usize, f64))> {
-        self.pieces.iter().enumerate().find_map(|(j, piece)| match *piece {
-            Piece::Chain { from, to } => chain_holds(shape, from, to, p).map(|k| (j, k)),
-            Piece::Aux { .. } | Piece::Tour { .. } => None,
-        })
-    }
-
-    /// The chain piece holding footpoint `p` of a disk centred at `center`
-    /// and where along it, with the position as that chain writes it.
-    ///
-    /// At a reflex vertex a chain may hold only part of the vertex's fan
-    /// of normals (which turns clockwise from the incoming element's normal
-    /// to the outgoing one's): a chain ending at the vertex with an
-    /// auxiliary arc after it holds the fan up to that arc's disk, one
-    /// starting there after an auxiliary arc holds it from that disk on. A
-    /// disk touching the vertex belongs where its own direction lies; both
-    /// ways of writing the vertex (end of one element, start of the next)
-    /// are tried. A vertex can end one chain and start another of the same
-    /// subshape when an augmenting disk of a hole touches there (thesis
-    /// 2.3.1). `None` when no chain holds the footpoint.
-    fn locate_foot(
-        &self,
-        shape: &Shape2d,
-        p: BoundaryPos,
-        center: Point,
-        cuts: &[Cut],
-    ) -> Option<(usize, (usize, f64), BoundaryPos)> {
-        let Some(w) = p.vertex(shape).filter(|&w| shape.joint(p.loop_index, w) == JointKind::Reflex) else {
-            return self.locate(shape, p).map(|(j, k)| (j, k, p));
-        };
-        let q = shape.loops()[p.loop_index].vertices()[w].p;
-        let m = (center - q).unit();
-        let m_len = self.pieces.len();
-        let dir = |j: usize| match self.pieces[j % m_len] {
-            Piece::Aux { disk } => Some((cuts[disk].center - q).unit()),
-            Piece::Chain { .. } | Piece::Tour { .. } => None,
-        };
-        // Directions within this much (radians) of a fan part's end are
-        // that end: disks found by sliding meet a vertex to about 1e-8.
-        const FAN_SLACK: f64 = 1e-7;
-        let holds = |j: usize, at: BoundaryPos| {
-            let Piece::Chain { from, to } = self.pieces[j] else { return false };
-            let after_ok = to != at || dir(j + 1).is_none_or(|d| d.cross(m) >= -FAN_SLACK);
-            let before_ok = from != at || dir(j + m_len - 1).is_none_or(|d| d.cross(m) <= FAN_SLACK);
-            after_ok && before_ok
-        };
-        let reps = [Some(p), p.other_way(shape)];
-        // Every chain holding either way of writing the vertex (one that
-        // starts there first: chains meeting at the vertex both hold it),
-        // the first whose part of the fan holds the disk. A single point
-        // between two augmenting disks at one vertex shares its position
-        // with the chain beyond them, so the first candidate is not enough.
-        reps.into_iter()
-            .flatten()
-            .find_map(|r| self.every_location(shape, r).into_iter().find(|&(j, _)| holds(j, r)).map(|(j, k)| (j, k, r)))
-    }
-
-    /// Every chain piece holding `p` and where along it: those that start
-    /// exactly at `p` first, then the rest in piece order.
-    fn every_location(&self, shape: &Shape2d, p: BoundaryPos) -> Vec<(usize, (usize, f64))> {
-        let starts = self.pieces.iter().enumerate().filter_map(|(j, piece)| match *piece {
-            Piece::Chain { from, .. } if from == p => Some((j, (0, p.t))),
-            _ => None,
-        });
-        let holding = self.pieces.iter().enumerate().filter_map(|(j, piece)| match *piece {
-            Piece::Chain { from, to } if from != p => chain_holds(shape, from, to, p).map(|k| (j, k)),
-            _ => None,
-        });
-        starts.chain(holding).collect()
-    }
-
     /// Cuts this subshape by disk `disk` (centred at `center`) touching it
     /// at `feet` (positions on its chains, any order): one subshape per
     /// footpoint, each starting at a footpoint, in boundary order. `cuts`
@@ -324,37 +276,8 @@ impl Subshape {
         center: Point,
         cuts: &[Cut],
     ) -> Option<Vec<Subshape>> {
-        let mut at: Vec<(usize, (usize, f64), BoundaryPos)> =
-            feet.iter().map(|&f| self.locate_foot(shape, f, center, cuts)).collect::<Option<_>>()?;
-        at.sort_by(|a, b| (a.0, a.1 .0).cmp(&(b.0, b.1 .0)).then(a.1 .1.total_cmp(&b.1 .1)));
-        let m = self.pieces.len();
-        let chain = |j: usize| match self.pieces[j] {
-            Piece::Chain { from, to } => (from, to),
-            Piece::Aux { .. } | Piece::Tour { .. } => unreachable!("footpoints are located on chains"),
-        };
-        let k = at.len();
-        let mut out = Vec::with_capacity(k);
-        for i in 0..k {
-            let (j0, key0, f0) = at[i];
-            let (j1, key1, f1) = at[(i + 1) % k];
-            let mut pieces = Vec::new();
-            // Consecutive footpoints on one chain, in order: the subshape
-            // runs along that chain only (with one footpoint it goes round).
-            if j0 == j1 && key0 <= key1 && k > 1 {
-                pieces.push(Piece::Chain { from: f0, to: f1 });
-            } else {
-                pieces.push(Piece::Chain { from: f0, to: chain(j0).1 });
-                let mut j = (j0 + 1) % m;
-                while j != j1 {
-                    pieces.push(self.pieces[j]);
-                    j = (j + 1) % m;
-                }
-                pieces.push(Piece::Chain { from: chain(j1).0, to: f1 });
-            }
-            pieces.push(Piece::Aux { disk });
-            out.push(Subshape { pieces });
-        }
-        Some(out)
+        let out = split_slots(&self.pieces, shape, disk, feet, center, cuts)?;
+        Some(out.into_iter().map(|pieces| Subshape { pieces }).collect())
     }
 
     /// The boundary as a closed bulge loop (vertices in travel order), for
@@ -364,11 +287,11 @@ impl Subshape {
         let m = self.pieces.len();
         let start = |j: usize| match self.pieces[j % m] {
             Piece::Chain { from, .. } => Some(from.point(shape)),
-            Piece::Aux { .. } | Piece::Tour { .. } => None,
+            Piece::Aux { .. } => None,
         };
         let end = |j: usize| match self.pieces[j % m] {
             Piece::Chain { to, .. } => Some(to.point(shape)),
-            Piece::Aux { .. } | Piece::Tour { .. } => None,
+            Piece::Aux { .. } => None,
         };
         let mut out = Vec::new();
         for (j, piece) in self.pieces.iter().enumerate() {
@@ -393,12 +316,119 @@ impl Subshape {
                     }
                     out.push(Vertex { p: a, bulge: (sweep / 4.0).tan() });
                 }
-                // Ranges of an augmented cycle are expanded before drawing.
-                Piece::Tour { .. } => {}
             }
         }
         out
     }
+}
+
+/// The chain of `pieces` holding `p` and where along it, if any.
+fn locate<P: Slot>(pieces: &[P], shape: &Shape2d, p: BoundaryPos) -> Option<(usize, (usize, f64))> {
+    pieces.iter().enumerate().find_map(|(j, piece)| {
+        let (from, to) = piece.chain()?;
+        chain_holds(shape, from, to, p).map(|k| (j, k))
+    })
+}
+
+/// The chain of `pieces` holding footpoint `p` of a disk centred at
+/// `center` and where along it, with the position as that chain writes it.
+///
+/// At a reflex vertex a chain may hold only part of the vertex's fan
+/// of normals (which turns clockwise from the incoming element's normal
+/// to the outgoing one's): a chain ending at the vertex with an
+/// auxiliary arc after it holds the fan up to that arc's disk, one
+/// starting there after an auxiliary arc holds it from that disk on. A
+/// disk touching the vertex belongs where its own direction lies; both
+/// ways of writing the vertex (end of one element, start of the next)
+/// are tried. A vertex can end one chain and start another of the same
+/// subshape when an augmenting disk of a hole touches there (thesis
+/// 2.3.1). `None` when no chain holds the footpoint.
+fn locate_foot<P: Slot>(
+    pieces: &[P],
+    shape: &Shape2d,
+    p: BoundaryPos,
+    center: Point,
+    cuts: &[Cut],
+) -> Option<(usize, (usize, f64), BoundaryPos)> {
+    let Some(w) = p.vertex(shape).filter(|&w| shape.joint(p.loop_index, w) == JointKind::Reflex) else {
+        return locate(pieces, shape, p).map(|(j, k)| (j, k, p));
+    };
+    let q = shape.loops()[p.loop_index].vertices()[w].p;
+    let m = (center - q).unit();
+    let m_len = pieces.len();
+    let dir = |j: usize| match pieces[j % m_len].piece()? {
+        Piece::Aux { disk } => Some((cuts[disk].center - q).unit()),
+        Piece::Chain { .. } => None,
+    };
+    // Directions within this much (radians) of a fan part's end are
+    // that end: disks found by sliding meet a vertex to about 1e-8.
+    const FAN_SLACK: f64 = 1e-7;
+    let holds = |j: usize, at: BoundaryPos| {
+        let Some((from, to)) = pieces[j].chain() else { return false };
+        let after_ok = to != at || dir(j + 1).is_none_or(|d| d.cross(m) >= -FAN_SLACK);
+        let before_ok = from != at || dir(j + m_len - 1).is_none_or(|d| d.cross(m) <= FAN_SLACK);
+        after_ok && before_ok
+    };
+    let reps = [Some(p), p.other_way(shape)];
+    // Every chain holding either way of writing the vertex (one that
+    // starts there first: chains meeting at the vertex both hold it),
+    // the first whose part of the fan holds the disk. A single point
+    // between two augmenting disks at one vertex shares its position
+    // with the chain beyond them, so the first candidate is not enough.
+    reps.into_iter()
+        .flatten()
+        .find_map(|r| every_location(pieces, shape, r).into_iter().find(|&(j, _)| holds(j, r)).map(|(j, k)| (j, k, r)))
+}
+
+/// Every chain of `pieces` holding `p` and where along it: those that
+/// start exactly at `p` first, then the rest in piece order.
+fn every_location<P: Slot>(pieces: &[P], shape: &Shape2d, p: BoundaryPos) -> Vec<(usize, (usize, f64))> {
+    let chains = || pieces.iter().enumerate().filter_map(|(j, piece)| piece.chain().map(|c| (j, c)));
+    let starts = chains().filter(|&(_, (from, _))| from == p).map(|(j, _)| (j, (0, p.t)));
+    let holding = chains()
+        .filter(|&(_, (from, _))| from != p)
+        .filter_map(|(j, (from, to))| chain_holds(shape, from, to, p).map(|k| (j, k)));
+    starts.chain(holding).collect()
+}
+
+/// [`Subshape::split`] on any piece list: stand-ins between footpoints are
+/// copied like pieces.
+pub(crate) fn split_slots<P: Slot>(
+    pieces: &[P],
+    shape: &Shape2d,
+    disk: usize,
+    feet: &[BoundaryPos],
+    center: Point,
+    cuts: &[Cut],
+) -> Option<Vec<Vec<P>>> {
+    let mut at: Vec<(usize, (usize, f64), BoundaryPos)> =
+        feet.iter().map(|&f| locate_foot(pieces, shape, f, center, cuts)).collect::<Option<_>>()?;
+    at.sort_by(|a, b| (a.0, a.1 .0).cmp(&(b.0, b.1 .0)).then(a.1 .1.total_cmp(&b.1 .1)));
+    let m = pieces.len();
+    let chain = |j: usize| pieces[j].chain().expect("footpoints are located on chains");
+    let k = at.len();
+    let mut out = Vec::with_capacity(k);
+    for i in 0..k {
+        let (j0, key0, f0) = at[i];
+        let (j1, key1, f1) = at[(i + 1) % k];
+        let mut part: Vec<P> = Vec::new();
+        // Consecutive footpoints on one chain, in order: the subshape
+        // runs along that chain only (with one footpoint it goes round).
+        if j0 == j1 && key0 <= key1 && k > 1 {
+            part.push(Piece::Chain { from: f0, to: f1 }.into());
+        } else {
+            part.push(Piece::Chain { from: f0, to: chain(j0).1 }.into());
+            let mut j = (j0 + 1) % m;
+            while j != j1 {
+                part.push(pieces[j]);
+                j = (j + 1) % m;
+            }
+            part.push(Piece::Chain { from: chain(j1).0, to: f1 }.into());
+        }
+        part.push(Piece::Aux { disk }.into());
+        out.push(part);
+    }
+    Some(out)
 }
 
 #[cfg(test)]

@@ -3,20 +3,80 @@
 //!
 //! With h holes the cycle has about 4h pieces, and each cut copies the
 //! pieces of the subshape it cuts: a plate of holes, whose tree of loops
-//! is a comb of columns, would cost O(h^1.5) or worse. Subshapes hold
-//! [`Piece::Tour`] ranges of the cycle instead, opened into real pieces
-//! only where a cut's footpoints land (and wholly once a subshape is small),
-//! so a subshape stays a handful of pieces, as on a shape without holes.
-//! Counts over ranges (original parts, reflex points, chains) come from
-//! prefix sums.
+//! is a comb of columns, would cost O(h^1.5) or worse. Subshapes of the
+//! divide step ([`Ranged`]) hold [`Span::Range`]s of the cycle instead,
+//! opened into real pieces only where a cut's footpoints land (and wholly
+//! once a subshape is small), so a subshape stays a handful of pieces, as
+//! on a shape without holes. Counts over ranges (original parts, reflex
+//! points, chains) come from prefix sums.
+//!
+//! A range means nothing without its cycle, so none of this is public:
+//! leaves and stuck subshapes leave the divide step as plain
+//! [`Subshape`]s.
 
-use super::subshape::{along, chain_holds, BoundaryPos, ChainParts, Piece, Subshape};
+use super::subshape::{along, chain_holds, split_slots, BoundaryPos, ChainParts, Cut, Piece, Slot, Subshape};
+use crate::kernel::Point;
 use crate::shape::{JointKind, Shape2d};
 use std::borrow::Cow;
 
-/// The boundary cycle with prefix counts and, per loop, its chains.
+/// A piece of a subshape in the divide step: a piece, or pieces
+/// `from..=to` of the augmented cycle that no cut has touched yet.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Span {
+    /// A chain or an auxiliary arc.
+    Piece(Piece),
+    /// Pieces `from..=to` of the cycle.
+    Range { from: usize, to: usize },
+}
+
+impl From<Piece> for Span {
+    fn from(p: Piece) -> Span {
+        Span::Piece(p)
+    }
+}
+
+impl Slot for Span {
+    fn piece(self) -> Option<Piece> {
+        match self {
+            Span::Piece(p) => Some(p),
+            Span::Range { .. } => None,
+        }
+    }
+}
+
+/// A subshape in the divide step: a closed cyclic list of spans.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Ranged {
+    pub(crate) spans: Vec<Span>,
+}
+
+impl From<Subshape> for Ranged {
+    fn from(s: Subshape) -> Ranged {
+        Ranged { spans: s.pieces.into_iter().map(Span::Piece).collect() }
+    }
+}
+
+impl Ranged {
+    /// True when some span is a range of the cycle.
+    pub(crate) fn has_ranges(&self) -> bool {
+        self.spans.iter().any(|p| matches!(p, Span::Range { .. }))
+    }
+
+    /// The pieces that are not in ranges.
+    pub(crate) fn pieces(&self) -> impl Iterator<Item = Piece> + '_ {
+        self.spans.iter().filter_map(|p| p.piece())
+    }
+
+    /// The subshape itself when it holds no range.
+    pub(crate) fn plain(&self) -> Option<Subshape> {
+        self.spans.iter().map(|p| p.piece()).collect::<Option<Vec<Piece>>>().map(|pieces| Subshape { pieces })
+    }
+}
+
+/// The boundary cycle with prefix counts and, per loop, its chains. The
+/// default has no pieces: for subshapes that hold no range.
 #[derive(Debug, Clone, Default)]
-pub struct Tour {
+pub(crate) struct Tour {
     pieces: Vec<Piece>,
     /// Prefix sums over pieces: original parts, reflex single points,
     /// chains that are more than a point.
@@ -36,7 +96,7 @@ const MARGIN: usize = 1;
 
 impl Tour {
     /// The cycle `boundary` (pieces chains and auxiliary arcs only) of `shape`.
-    pub fn new(shape: &Shape2d, boundary: &Subshape) -> Tour {
+    pub(crate) fn new(shape: &Shape2d, boundary: &Subshape) -> Tour {
         let n = boundary.pieces.len();
         let mut t = Tour {
             pieces: boundary.pieces.clone(),
@@ -61,8 +121,7 @@ impl Tour {
                     points += usize::from(k == 0 && reflex);
                     t.on_loop[from.loop_index].push(i);
                 }
-                // A cycle's arcs and (never present) ranges count nothing.
-                Piece::Aux { .. } | Piece::Tour { .. } => {}
+                Piece::Aux { .. } => {}
             }
         }
         t.parts.push(parts);
@@ -92,28 +151,28 @@ impl Tour {
     }
 
     /// The whole cycle as one range.
-    pub fn root(&self) -> Subshape {
-        Subshape { pieces: vec![Piece::Tour { from: 0, to: self.pieces.len() - 1 }] }
+    pub(crate) fn root(&self) -> Ranged {
+        Ranged { spans: vec![Span::Range { from: 0, to: self.pieces.len() - 1 }] }
     }
 
     /// Original parts in range `from..=to`.
-    pub fn parts(&self, from: usize, to: usize) -> usize {
+    pub(crate) fn parts(&self, from: usize, to: usize) -> usize {
         self.parts[to + 1] - self.parts[from]
     }
 
     /// Reflex single points in range `from..=to`.
-    pub fn points(&self, from: usize, to: usize) -> usize {
+    pub(crate) fn points(&self, from: usize, to: usize) -> usize {
         self.points[to + 1] - self.points[from]
     }
 
     /// Chains that are more than a point in range `from..=to`.
-    pub fn chains(&self, from: usize, to: usize) -> usize {
+    pub(crate) fn chains(&self, from: usize, to: usize) -> usize {
         self.chains[to + 1] - self.chains[from]
     }
 
     /// The `k`-th chain (more than a point) of the range starting at
     /// `from`; `None` past the cycle's end.
-    pub fn chain(&self, from: usize, k: usize) -> Option<(BoundaryPos, BoundaryPos)> {
+    pub(crate) fn chain(&self, from: usize, k: usize) -> Option<(BoundaryPos, BoundaryPos)> {
         let want = self.chains.get(from)? + k;
         // The piece after which the prefix passes `want` is the chain.
         let i = self.chains.partition_point(|&c| c <= want).checked_sub(1)?;
@@ -124,20 +183,20 @@ impl Tour {
     }
 
     /// `s` with every range replaced by its pieces.
-    pub fn expand(&self, s: &Subshape) -> Subshape {
-        let mut pieces = Vec::with_capacity(s.pieces.len());
-        for p in &s.pieces {
+    pub(crate) fn expand(&self, s: &Ranged) -> Subshape {
+        let mut pieces = Vec::with_capacity(s.spans.len());
+        for p in &s.spans {
             match *p {
-                Piece::Tour { from, to } => pieces.extend_from_slice(&self.pieces[from..=to]),
-                other => pieces.push(other),
+                Span::Range { from, to } => pieces.extend_from_slice(&self.pieces[from..=to]),
+                Span::Piece(p) => pieces.push(p),
             }
         }
         Subshape { pieces }
     }
 
     /// Number of pieces `s` has once expanded.
-    pub fn expanded_len(&self, s: &Subshape) -> usize {
-        s.pieces.iter().map(|p| if let Piece::Tour { from, to } = *p { to + 1 - from } else { 1 }).sum()
+    pub(crate) fn expanded_len(&self, s: &Ranged) -> usize {
+        s.spans.iter().map(|p| if let Span::Range { from, to } = *p { to + 1 - from } else { 1 }).sum()
     }
 
     /// Pushes the cycle's chains on `q`'s loop that hold `q`. A loop's
@@ -190,8 +249,8 @@ impl Tour {
     /// `s` with the cycle's chains that hold any of `feet` (either way of
     /// writing a vertex), and [`MARGIN`] pieces on either side, taken out
     /// of their ranges as real pieces.
-    pub fn open_at<'a>(&self, shape: &Shape2d, s: &'a Subshape, feet: &[BoundaryPos]) -> Cow<'a, Subshape> {
-        if !s.pieces.iter().any(|p| matches!(p, Piece::Tour { .. })) {
+    fn open_at<'a>(&self, shape: &Shape2d, s: &'a Ranged, feet: &[BoundaryPos]) -> Cow<'a, Ranged> {
+        if !s.has_ranges() {
             return Cow::Borrowed(s);
         }
         let mut hit: Vec<usize> = Vec::new();
@@ -208,26 +267,43 @@ impl Tour {
             hit.iter().flat_map(|&h| (0..=2 * MARGIN).map(move |d| (h + n + d - MARGIN) % n)).collect();
         open.sort_unstable();
         open.dedup();
-        let mut pieces = Vec::with_capacity(s.pieces.len() + 4 * hit.len());
-        for p in &s.pieces {
-            let Piece::Tour { from, to } = *p else {
-                pieces.push(*p);
+        let mut spans = Vec::with_capacity(s.spans.len() + 4 * hit.len());
+        for p in &s.spans {
+            let Span::Range { from, to } = *p else {
+                spans.push(*p);
                 continue;
             };
             let mut next = from;
             let first = open.partition_point(|&h| h < from);
             for &h in open[first..].iter().take_while(|&&h| h <= to) {
                 if h > next {
-                    pieces.push(Piece::Tour { from: next, to: h - 1 });
+                    spans.push(Span::Range { from: next, to: h - 1 });
                 }
-                pieces.push(self.pieces[h]);
+                spans.push(Span::Piece(self.pieces[h]));
                 next = h + 1;
             }
             if next <= to {
-                pieces.push(Piece::Tour { from: next, to });
+                spans.push(Span::Range { from: next, to });
             }
         }
-        Cow::Owned(Subshape { pieces })
+        Cow::Owned(Ranged { spans })
+    }
+
+    /// [`Subshape::split`] for a subshape of the divide step: the ranges
+    /// where `feet` land are opened first, those between them go to the
+    /// subshapes whole.
+    pub(crate) fn cut(
+        &self,
+        shape: &Shape2d,
+        s: &Ranged,
+        disk: usize,
+        feet: &[BoundaryPos],
+        center: Point,
+        cuts: &[Cut],
+    ) -> Option<Vec<Ranged>> {
+        let opened = self.open_at(shape, s, feet);
+        let out = split_slots(&opened.spans, shape, disk, feet, center, cuts)?;
+        Some(out.into_iter().map(|spans| Ranged { spans }).collect())
     }
 }
 
@@ -256,7 +332,7 @@ mod tests {
             let (a, b) = (rng.below(n), rng.below(n));
             let (from, to) = (a.min(b), a.max(b));
             let whole = Subshape { pieces: aug.boundary.pieces[from..=to].to_vec() };
-            let ranged = Subshape { pieces: vec![Piece::Tour { from, to }] };
+            let ranged = Ranged { spans: vec![Span::Range { from, to }] };
             assert_eq!(tour.expand(&ranged), whole);
             let parts: usize = whole.chains().map(|(f, t)| ChainParts::new(&shape, f, t).len()).sum();
             assert_eq!(tour.parts(from, to), parts);
@@ -269,7 +345,7 @@ mod tests {
             if let Some((f, t)) = first {
                 let opened = tour.open_at(&shape, &ranged, &[f, t]);
                 assert_eq!(tour.expand(&opened), whole);
-                assert!(opened.pieces.iter().any(|p| matches!(p, Piece::Chain { .. })));
+                assert!(opened.pieces().any(|p| matches!(p, Piece::Chain { .. })));
             }
         }
     }
@@ -296,7 +372,6 @@ mod tests {
             let shape = shape_of(k, seed);
             let d = decompose_with(&shape, 7, 32).unwrap();
             let leaves: Vec<&Subshape> = d.leaves.iter().chain(d.stuck.iter()).collect();
-            assert!(leaves.iter().all(|s| !s.pieces.iter().any(|p| matches!(p, Piece::Tour { .. }))));
             let covered: f64 = leaves.iter().map(|s| chain_length(&shape, s)).sum();
             let perimeter: f64 = shape.loops().iter().map(Loop::perimeter).sum();
             assert!((covered - perimeter).abs() <= 1e-9 * perimeter, "{k}: {covered} vs {perimeter}");
@@ -322,7 +397,7 @@ mod apex_tests {
     fn split_sizes(
         s: &Shape2d,
         tour: &Tour,
-        root: &Subshape,
+        root: &Ranged,
         cuts: &[Cut],
         element: usize,
         t: f64,
@@ -338,7 +413,7 @@ mod apex_tests {
             .collect();
         let mut cuts = cuts.to_vec();
         cuts.push(Cut { center: d.center, radius: d.radius });
-        let children = tour.open_at(s, root, &feet).split(s, cuts.len() - 1, &feet, d.center, &cuts)?;
+        let children = tour.cut(s, root, cuts.len() - 1, &feet, d.center, &cuts)?;
         let mut sizes: Vec<usize> = children.iter().map(|c| tour.expanded_len(c)).collect();
         sizes.sort_unstable();
         Some(sizes)
@@ -354,7 +429,7 @@ mod apex_tests {
             let n = s.loops()[0].len();
             let start = BoundaryPos { loop_index: 0, element: 0, t: 0.0 };
             let end = BoundaryPos { loop_index: 0, element: n - 1, t: 1.0 };
-            for root in [aug.boundary.clone(), tour.root()] {
+            for root in [Ranged::from(aug.boundary.clone()), tour.root()] {
                 for (element, t) in [(0, 0.0), (n - 1, 1.0)] {
                     let a = split_sizes(&s, &tour, &root, &aug.cuts, element, t, start);
                     let b = split_sizes(&s, &tour, &root, &aug.cuts, element, t, end);

@@ -4,6 +4,7 @@
 pub mod oracle;
 
 use medax::kernel::Point;
+use medax::plane::{AxisNode, MedialAxis2d};
 use medax::shape::Vertex;
 use rand::{Rng, SeedableRng};
 use std::f64::consts::TAU;
@@ -112,4 +113,49 @@ pub fn bisect_radius(distance: impl Fn(Point) -> f64, p: Point, n: Point, reach:
         }
     }
     lo
+}
+
+/// Asserts that `got` is the axis `want` of a moved copy of its shape,
+/// `back` taking each node of `got` (centre, radius) back to where `want`
+/// has it: as many nodes and edges, each node within `tol` (in position and
+/// radius) of its own node of the same kind in `want` (so the radii are
+/// alike as multisets too), and the edges joining the nodes their ends are
+/// taken to.
+pub fn same_axis_moved(
+    want: &MedialAxis2d,
+    got: &MedialAxis2d,
+    back: impl Fn(Point, f64) -> (Point, f64),
+    tol: f64,
+    what: &str,
+) {
+    let counts = |a: &MedialAxis2d| (a.nodes.len(), a.edges.len());
+    assert_eq!(counts(got), counts(want), "{what}: (nodes, edges)");
+    let taken: Vec<usize> = got
+        .nodes
+        .iter()
+        .map(|n| {
+            let (p, r) = back(n.point, n.radius);
+            let gap = |m: &AxisNode| (m.point.x - p.x).abs().max((m.point.y - p.y).abs()).max((m.radius - r).abs());
+            let same_kind = want.nodes.iter().enumerate().filter(|(_, m)| m.kind == n.kind);
+            let (i, g) =
+                same_kind.map(|(i, m)| (i, gap(m))).min_by(|x, y| x.1.total_cmp(&y.1)).unwrap_or((0, f64::INFINITY));
+            assert!(
+                g <= tol,
+                "{what}: {:?} node at {p:?} radius {r} has no counterpart (nearest off by {g:e})",
+                n.kind
+            );
+            i
+        })
+        .collect();
+    let mut once = taken.clone();
+    once.sort_unstable();
+    once.dedup();
+    assert_eq!(once.len(), taken.len(), "{what}: two nodes taken to one");
+    let pairs = |ends: Vec<(usize, usize)>| {
+        let mut e: Vec<(usize, usize)> = ends.into_iter().map(|(a, b)| (a.min(b), a.max(b))).collect();
+        e.sort_unstable();
+        e
+    };
+    let moved = pairs(got.edges.iter().map(|e| (taken[e.from], taken[e.to])).collect());
+    assert_eq!(moved, pairs(want.edges.iter().map(|e| (e.from, e.to)).collect()), "{what}: edges");
 }
