@@ -17,7 +17,9 @@
 //   no table: both, default sizes.
 // A tool is skipped at a size when its previous time, scaled linearly to
 // the new element count, passes BENCH_SITES_BUDGET seconds (default 20);
-// a cell stops repeating once its runs took 10 s. BENCH_SITES_JSON=DIR
+// a cell stops repeating once its runs took half that. Wall-clock and
+// process CPU times are both printed: the machine may be shared, and a
+// single-threaded run's CPU time is close to what it takes alone. BENCH_SITES_JSON=DIR
 // writes every scene as shape JSON into DIR (for `medax axis`); a scene
 // on which medax fails is written to the working directory either way.
 //
@@ -30,7 +32,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <functional>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -39,28 +43,39 @@ namespace {
 using mt::cell;
 using mt::ratio;
 
+// One tool's cells: the last size it ran at (for the budget) and every
+// successful timing (for the slopes).
 struct Column {
-    double last_secs = 0;
     size_t last_elements = 0;
-    std::map<size_t, double> seen;  // elements -> seconds, where it ran and succeeded
+    double last_wall = 0;
+    std::map<size_t, mt::Times> seen;
+    bool ran = false;
+    mt::Times now;
+    mx_status status = MX_OK;
 
-    bool within(size_t elements, double budget) const {
-        return last_elements == 0 ||
-               last_secs * static_cast<double>(elements) / static_cast<double>(last_elements) <= budget;
+    void measure(size_t n, size_t runs, double budget, const std::function<mx_status()>& f) {
+        ran = last_elements == 0 || last_wall * static_cast<double>(n) / static_cast<double>(last_elements) <= budget;
+        now = {NAN, NAN}, status = MX_OK;
+        if (!ran) return;
+        now = mt::median_times(runs, [&] { status = f(); }, budget / 2);
+        if (status != MX_OK) return;
+        last_elements = n, last_wall = now.wall;
+        seen[n] = now;
     }
-    void record(size_t elements, double secs) {
-        last_secs = secs, last_elements = elements;
-        seen[elements] = secs;
+    std::string wall() const { return ran ? cell(now.wall, status) : "not run"; }
+    std::string cpu() const { return ran ? cell(now.cpu, status) : "not run"; }
+    std::string slope(size_t n0, size_t n1, double mt::Times::*which) const {
+        if (!seen.count(n0) || !seen.count(n1)) return "-";
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.2f",
+                      std::log(seen.at(n1).*which / seen.at(n0).*which) /
+                          std::log(static_cast<double>(n1) / static_cast<double>(n0)));
+        return buf;
     }
 };
 
-std::string slope(const Column& c, size_t n0, size_t n1) {
-    if (!c.seen.count(n0) || !c.seen.count(n1)) return "-";
-    const double t0 = c.seen.at(n0), t1 = c.seen.at(n1);
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.2f",
-                  std::log(t1 / t0) / std::log(static_cast<double>(n1) / static_cast<double>(n0)));
-    return buf;
+std::string ratio_of(double a, double b) {
+    return std::isnan(a) || std::isnan(b) ? std::string("-") : ratio(a, b);
 }
 
 size_t run_cgal(const std::vector<mt::Polygon>& loops) {
@@ -71,12 +86,15 @@ size_t run_cgal(const std::vector<mt::Polygon>& loops) {
 
 void bench(const std::string& table, size_t runs, const std::vector<size_t>& sizes) {
     const double budget = std::getenv("BENCH_SITES_BUDGET") ? std::atof(std::getenv("BENCH_SITES_BUDGET")) : 20.0;
-    const double cap = 10.0;
     const char* json_dir = std::getenv("BENCH_SITES_JSON");
-    std::cout << "\n### " << table << " (median of up to " << runs << " runs, seconds)\n\n"
+    std::cout << "\n### " << table << ": wall-clock seconds, median of up to " << runs << " runs\n\n"
               << "| size | sites | elements | medax 1 thread | medax 2 threads | CGAL SDG | Boost voronoi | "
                  "medax 1 / 2 threads | CGAL / medax 1 thread | Boost / medax 1 thread |\n"
               << "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    std::ostringstream cpu;
+    cpu << "\nCPU seconds of the same runs (process CPU time; medax 2 threads: both threads together):\n\n"
+        << "| size | medax 1 thread | medax 2 threads | CGAL SDG | Boost voronoi | CGAL / medax 1 thread | "
+           "Boost / medax 1 thread |\n|---:|---:|---:|---:|---:|---:|---:|\n";
     Column m1, m2, cg, bo;
     std::vector<size_t> elements;
     for (size_t size : sizes) {
@@ -88,45 +106,40 @@ void bench(const std::string& table, size_t runs, const std::vector<size_t>& siz
         const std::vector<double> xyb = s.xyb();
         const std::vector<size_t> lens = s.loop_lengths();
         const std::vector<mt::Polygon> chords = s.chords();
-        std::string c1 = "not run", c2 = "not run", cc = "not run", cb = "not run";
-        double t1 = NAN, t2 = NAN, tc = NAN, tb = NAN;
-        mx_status s1 = MX_OK, s2 = MX_OK;
-        if (m1.within(n, budget)) {
-            t1 = mt::median_seconds(runs, [&] { s1 = mt::run_medax(xyb, lens, 1); }, cap);
-            c1 = cell(t1, s1);
-            if (s1 == MX_OK) m1.record(n, t1);
-        }
-        if (m2.within(n, budget)) {
-            t2 = mt::median_seconds(runs, [&] { s2 = mt::run_medax(xyb, lens, 2); }, cap);
-            c2 = cell(t2, s2);
-            if (s2 == MX_OK) m2.record(n, t2);
-        }
-        if (s1 != MX_OK || s2 != MX_OK) {
+        const std::vector<mt::BoostSegment> segments =
+            mt::boost_segments(chords, std::ldexp(1.0, 30) / std::max(s.width, s.height));
+        m1.measure(n, runs, budget, [&] { return mt::run_medax(xyb, lens, 1); });
+        m2.measure(n, runs, budget, [&] { return mt::run_medax(xyb, lens, 2); });
+        if (m1.status != MX_OK || m2.status != MX_OK) {
             const bool saved = s.write_json(name);
             std::cerr << "medax failed on " << table << " " << size << ": " << mt::last_message()
                       << (saved ? "; scene written to " + name : "; could not write " + name) << "\n";
         }
-        if (cg.within(n, budget)) {
-            tc = mt::median_seconds(runs, [&] { run_cgal(chords); }, cap);
-            cc = cell(tc), cg.record(n, tc);
-        }
-        if (bo.within(n, budget)) {
-            const std::vector<mt::BoostSegment> segments =
-                mt::boost_segments(chords, std::ldexp(1.0, 30) / std::max(s.width, s.height));
-            tb = mt::median_seconds(runs, [&] { mt::run_boost(segments); }, cap);
-            cb = cell(tb), bo.record(n, tb);
-        }
-        auto r = [](double a, double b) { return std::isnan(a) || std::isnan(b) ? std::string("-") : ratio(a, b); };
-        std::cout << "| " << size << " | " << s.loops.size() - 1 << " | " << n << " | " << c1 << " | " << c2 << " | "
-                  << cc << " | " << cb << " | " << r(t1, t2) << " | " << r(tc, t1) << " | " << r(tb, t1) << " |"
-                  << std::endl;
+        cg.measure(n, runs, budget, [&] {
+            run_cgal(chords);
+            return MX_OK;
+        });
+        bo.measure(n, runs, budget, [&] {
+            mt::run_boost(segments);
+            return MX_OK;
+        });
+        std::cout << "| " << size << " | " << s.loops.size() - 1 << " | " << n << " | " << m1.wall() << " | "
+                  << m2.wall() << " | " << cg.wall() << " | " << bo.wall() << " | "
+                  << ratio_of(m1.now.wall, m2.now.wall) << " | " << ratio_of(cg.now.wall, m1.now.wall) << " | "
+                  << ratio_of(bo.now.wall, m1.now.wall) << " |" << std::endl;
+        cpu << "| " << size << " | " << m1.cpu() << " | " << m2.cpu() << " | " << cg.cpu() << " | " << bo.cpu()
+            << " | " << ratio_of(cg.now.cpu, m1.now.cpu) << " | " << ratio_of(bo.now.cpu, m1.now.cpu) << " |\n";
     }
-    std::cout << "\nLog-log slopes (time growth exponent in the element count) between consecutive sizes:\n\n"
-              << "| step | medax 1 thread | medax 2 threads | CGAL SDG | Boost voronoi |\n|---|---:|---:|---:|---:|\n";
+    std::cout << cpu.str()
+              << "\nLog-log slopes (growth exponent of the time in the element count) between consecutive sizes:\n\n"
+              << "| step | medax 1 thread | medax 2 threads | CGAL SDG | Boost voronoi | medax 1 thread CPU | "
+                 "CGAL CPU | Boost CPU |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
     for (size_t i = 0; i + 1 < elements.size(); ++i) {
         const size_t a = elements[i], b = elements[i + 1];
-        std::cout << "| " << a << " → " << b << " | " << slope(m1, a, b) << " | " << slope(m2, a, b) << " | "
-                  << slope(cg, a, b) << " | " << slope(bo, a, b) << " |\n";
+        const auto w = &mt::Times::wall, c = &mt::Times::cpu;
+        std::cout << "| " << a << " → " << b << " | " << m1.slope(a, b, w) << " | " << m2.slope(a, b, w) << " | "
+                  << cg.slope(a, b, w) << " | " << bo.slope(a, b, w) << " | " << m1.slope(a, b, c) << " | "
+                  << cg.slope(a, b, c) << " | " << bo.slope(a, b, c) << " |\n";
     }
 }
 

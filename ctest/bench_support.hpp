@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <functional>
 #include <string>
 #include <vector>
@@ -22,20 +23,39 @@ namespace mt {
 
 using BoostSegment = boost::polygon::segment_data<int>;
 
-// The median of up to `runs` timings (seconds); stops early once the runs
-// together took `cap` seconds, so that one slow cell cannot eat the budget
-// of the whole table (a single run is then its own median).
-inline double median_seconds(size_t runs, const std::function<void()>& f, double cap = 1e300) {
-    std::vector<double> t;
+struct Times {
+    double wall = 0, cpu = 0;  // seconds; cpu: of the whole process, all threads
+};
+
+inline double process_cpu_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// The medians of up to `runs` timings, wall-clock and CPU (on a shared
+// machine a single-threaded run's CPU time is what it would take alone);
+// stops early once the runs together took `cap` seconds, so that one slow
+// cell cannot eat the budget of the whole table (a single run is then its
+// own median).
+inline Times median_times(size_t runs, const std::function<void()>& f, double cap = 1e300) {
+    std::vector<double> wall, cpu;
     double total = 0.0;
     for (size_t i = 0; i < runs && total < cap; ++i) {
         const auto start = std::chrono::steady_clock::now();
+        const double cpu0 = process_cpu_seconds();
         f();
-        t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-        total += t.back();
+        cpu.push_back(process_cpu_seconds() - cpu0);
+        wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        total += wall.back();
     }
-    std::sort(t.begin(), t.end());
-    return t[t.size() / 2];
+    std::sort(wall.begin(), wall.end());
+    std::sort(cpu.begin(), cpu.end());
+    return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
+}
+
+inline double median_seconds(size_t runs, const std::function<void()>& f) {
+    return median_times(runs, f).wall;
 }
 
 // medax from flat `x, y, bulge` triples, loop 0 outer, as a C caller would
