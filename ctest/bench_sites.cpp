@@ -20,8 +20,10 @@
 // a cell stops repeating once its runs took half that. Wall-clock and
 // process CPU times are both printed: the machine may be shared, and a
 // single-threaded run's CPU time is close to what it takes alone. BENCH_SITES_JSON=DIR
-// writes every scene as shape JSON into DIR (for `medax axis`); a scene
-// on which medax fails is written to the working directory either way.
+// writes every scene as shape JSON into DIR (for `medax axis`; 0 runs:
+// only that, no timing); a scene on which medax fails is written to the
+// working directory either way. BENCH_SITES_SEED=K (default 0) adds K to
+// the generators' seeds, for robustness sweeps.
 //
 // Run with scripts/bench-sites (installs the prefix, builds in Release).
 
@@ -87,6 +89,20 @@ size_t run_cgal(const std::vector<mt::Polygon>& loops) {
 void bench(const std::string& table, size_t runs, const std::vector<size_t>& sizes) {
     const double budget = std::getenv("BENCH_SITES_BUDGET") ? std::atof(std::getenv("BENCH_SITES_BUDGET")) : 20.0;
     const char* json_dir = std::getenv("BENCH_SITES_JSON");
+    const char* seed_env = std::getenv("BENCH_SITES_SEED");
+    const uint64_t seed = seed_env ? std::strtoull(seed_env, nullptr, 10) : 0;
+    auto scene = [&](size_t size) {
+        return table == "table21" ? mt::table21(size, 21 + seed) : mt::table22(size, 22 + seed);
+    };
+    auto name = [&](size_t size) {
+        return "bench_sites_" + table + "_" + std::to_string(size) +
+               (seed ? "_seed" + std::to_string(seed) : std::string()) + ".json";
+    };
+    if (runs == 0) {
+        for (size_t size : sizes)
+            if (json_dir) scene(size).write_json(std::string(json_dir) + "/" + name(size));
+        return;
+    }
     std::cout << "\n### " << table << ": wall-clock seconds, median of up to " << runs << " runs\n\n"
               << "| size | sites | elements | medax 1 thread | medax 2 threads | CGAL SDG | Boost voronoi | "
                  "medax 1 / 2 threads | CGAL / medax 1 thread | Boost / medax 1 thread |\n"
@@ -98,11 +114,10 @@ void bench(const std::string& table, size_t runs, const std::vector<size_t>& siz
     Column m1, m2, cg, bo;
     std::vector<size_t> elements;
     for (size_t size : sizes) {
-        const mt::Scene s = table == "table21" ? mt::table21(size, 21) : mt::table22(size, 22);
+        const mt::Scene s = scene(size);
         const size_t n = s.elements();
         elements.push_back(n);
-        const std::string name = "bench_sites_" + table + "_" + std::to_string(size) + ".json";
-        if (json_dir) s.write_json(std::string(json_dir) + "/" + name);
+        if (json_dir) s.write_json(std::string(json_dir) + "/" + name(size));
         const std::vector<double> xyb = s.xyb();
         const std::vector<size_t> lens = s.loop_lengths();
         const std::vector<mt::Polygon> chords = s.chords();
@@ -111,9 +126,9 @@ void bench(const std::string& table, size_t runs, const std::vector<size_t>& siz
         m1.measure(n, runs, budget, [&] { return mt::run_medax(xyb, lens, 1); });
         m2.measure(n, runs, budget, [&] { return mt::run_medax(xyb, lens, 2); });
         if (m1.status != MX_OK || m2.status != MX_OK) {
-            const bool saved = s.write_json(name);
+            const bool saved = s.write_json(name(size));
             std::cerr << "medax failed on " << table << " " << size << ": " << mt::last_message()
-                      << (saved ? "; scene written to " + name : "; could not write " + name) << "\n";
+                      << (saved ? "; scene written to " : "; could not write ") << name(size) << "\n";
         }
         cg.measure(n, runs, budget, [&] {
             run_cgal(chords);
@@ -146,7 +161,7 @@ void bench(const std::string& table, size_t runs, const std::vector<size_t>& siz
 }  // namespace
 
 int main(int argc, char** argv) {
-    const size_t runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
+    const size_t runs = argc > 1 ? static_cast<size_t>(std::max(0, std::atoi(argv[1]))) : 3;
     const std::string which = argc > 2 ? argv[2] : "";
     std::vector<size_t> sizes;
     for (int i = 3; i < argc; ++i) sizes.push_back(static_cast<size_t>(std::atof(argv[i])));

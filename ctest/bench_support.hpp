@@ -75,18 +75,16 @@ inline mx_status run_medax(const std::vector<double>& xyb, const std::vector<siz
     return st;
 }
 
-// Every edge of every loop as an integer segment, coordinates
-// (v - origin) x scale rounded: Boost.Polygon's voronoi takes integers only.
-inline std::vector<BoostSegment> boost_segments(const std::vector<Polygon>& loops, double scale, Pt origin = {0, 0}) {
-    auto q = [&](double v, double o) { return static_cast<int>(std::lround((v - o) * scale)); };
+// Every edge of every loop as an integer segment, coordinates x scale
+// rounded: Boost.Polygon's voronoi takes integers only.
+inline std::vector<BoostSegment> boost_segments(const std::vector<Polygon>& loops, double scale) {
+    auto q = [&](Pt v) {
+        return boost::polygon::point_data<int>(static_cast<int>(std::lround(v.first * scale)),
+                                               static_cast<int>(std::lround(v.second * scale)));
+    };
     std::vector<BoostSegment> segments;
-    for (const Polygon& p : loops) {
-        for (size_t k = 0; k < p.size(); ++k) {
-            const Pt a = p[k], b = p[(k + 1) % p.size()];
-            segments.emplace_back(boost::polygon::point_data<int>(q(a.first, origin.first), q(a.second, origin.second)),
-                                  boost::polygon::point_data<int>(q(b.first, origin.first), q(b.second, origin.second)));
-        }
-    }
+    for (const Polygon& p : loops)
+        for (size_t k = 0; k < p.size(); ++k) segments.emplace_back(q(p[k]), q(p[(k + 1) % p.size()]));
     return segments;
 }
 
