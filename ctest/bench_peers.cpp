@@ -14,17 +14,11 @@
 //
 // Run with scripts/bench-peers (installs the prefix, builds in Release).
 
+#include "bench_support.hpp"
 #include "sdg_support.hpp"
 
-#include <boost/polygon/polygon.hpp>
-#include <boost/polygon/voronoi.hpp>
-
 #include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <cstdio>
 #include <cstdlib>
-#include <functional>
 #include <iostream>
 #include <random>
 #include <string>
@@ -32,60 +26,15 @@
 
 namespace {
 
+using mt::cell;
+using mt::median_seconds;
 using mt::Polygon;
-
-double median_seconds(size_t runs, const std::function<void()>& f) {
-    std::vector<double> t;
-    for (size_t i = 0; i < runs; ++i) {
-        const auto start = std::chrono::steady_clock::now();
-        f();
-        t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    }
-    std::sort(t.begin(), t.end());
-    return t[t.size() / 2];
-}
-
-// medax from the bulge array, as a caller would; the status of the last run.
-mx_status run_medax(const Polygon& p, size_t threads) {
-    const std::vector<double> xyb = mt::bulges(p);
-    const size_t len = p.size();
-    mx_shape2d* shape = nullptr;
-    mx_status st = mx_shape2d_from_bulges(xyb.data(), xyb.size(), &len, 1, nullptr, &shape);
-    if (st != MX_OK) return st;
-    mx_axis_options o;
-    mx_axis_options_default(&o);
-    o.threads = threads;
-    mx_axis* axis = nullptr;
-    st = mx_axis_compute(shape, &o, &axis);
-    mx_axis_free(axis);
-    mx_shape2d_free(shape);
-    return st;
-}
+using mt::ratio;
 
 size_t run_cgal(const Polygon& p) {
     mt::Sdg sdg;
     mt::insert_polygon(sdg, p);
     return sdg.number_of_faces();
-}
-
-size_t run_boost(const std::vector<boost::polygon::segment_data<int>>& segments) {
-    boost::polygon::voronoi_diagram<double> vd;
-    boost::polygon::construct_voronoi(segments.begin(), segments.end(), &vd);
-    return vd.num_vertices();
-}
-
-std::string cell(double secs, mx_status st) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.4g", secs);
-    std::string s = buf;
-    if (st != MX_OK) s += " (" + std::string(mx_status_str(static_cast<int32_t>(st))) + ")";
-    return s;
-}
-
-std::string ratio(double a, double b) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", a / b);
-    return buf;
 }
 
 }  // namespace
@@ -106,26 +55,22 @@ int main(int argc, char** argv) {
     double last_medax = 0.0;
     for (size_t n : sizes) {
         const Polygon p = mt::star(rng, n, 1.0, false);
-        std::vector<boost::polygon::segment_data<int>> segments;
-        for (size_t k = 0; k < n; ++k) {
-            const mt::Pt a = p[k], b = p[(k + 1) % n];
-            auto q = [](double v) { return static_cast<int>(std::lround(v * 1e7)); };
-            segments.emplace_back(boost::polygon::point_data<int>(q(a.first), q(a.second)),
-                                  boost::polygon::point_data<int>(q(b.first), q(b.second)));
-        }
+        const std::vector<mt::BoostSegment> segments = mt::boost_segments({p}, 1e7);
+        const std::vector<double> xyb = mt::bulges(p);
+        const std::vector<size_t> lens{n};
         const double cgal = median_seconds(runs, [&] { run_cgal(p); });
-        const double boost = median_seconds(runs, [&] { run_boost(segments); });
+        const double boost = median_seconds(runs, [&] { mt::run_boost(segments); });
         std::string m1 = "not run", m2 = "not run", r12 = "-", rc = "-", rb = "-";
         if (last_medax <= 6.0) {
             mx_status s1 = MX_OK, s2 = MX_OK;
-            const double t1 = median_seconds(runs, [&] { s1 = run_medax(p, 1); });
-            const double t2 = median_seconds(runs, [&] { s2 = run_medax(p, 2); });
+            const double t1 = median_seconds(runs, [&] { s1 = mt::run_medax(xyb, lens, 1); });
+            const double t2 = median_seconds(runs, [&] { s2 = mt::run_medax(xyb, lens, 2); });
             m1 = cell(t1, s1), m2 = cell(t2, s2);
             r12 = ratio(t1, t2), rc = ratio(t1, cgal), rb = ratio(t1, boost);
             last_medax = t1;
         }
-        std::cout << "| " << n << " | " << m1 << " | " << m2 << " | " << cell(cgal, MX_OK) << " | "
-                  << cell(boost, MX_OK) << " | " << r12 << " | " << rc << " | " << rb << " | " << ratio(cgal, boost)
+        std::cout << "| " << n << " | " << m1 << " | " << m2 << " | " << cell(cgal) << " | "
+                  << cell(boost) << " | " << r12 << " | " << rc << " | " << rb << " | " << ratio(cgal, boost)
                   << " |" << std::endl;
     }
     return 0;
