@@ -1189,7 +1189,8 @@ enum mx_status mx_voronoi_get_region(const struct mx_voronoi *vd,
 
 /**
  * The boundary walk of the site's region (site as in
- * `mx_voronoi_get_region`), counter-clockwise round the site:
+ * `mx_voronoi_get_region`), counter-clockwise round the site, each
+ * self-edge of the site twice (once each way):
  * `edges[k]` an axis edge index, `forward[k]` 1 when walked from its
  * `from` node to its `to` node. `capacity` entries each (`forward` may be
  * NULL); `*count` receives the walk length. Size query: `capacity` 0

@@ -259,6 +259,25 @@ fn a_u_shaped_site_has_self_edges_that_the_switch_drops() {
 }
 
 #[test]
+fn a_site_in_the_mouth_of_a_u_joins_its_boundary_through_self_edges() {
+    // The disc's region is enclosed by the U's; the U's boundary has an
+    // outer and an inner part, joined only through the self-edge in the
+    // mouth above the disc (found by the fuzz target: two walks).
+    let u = poly(&[(0.0, 0.0), (3.0, 0.0), (3.0, 3.0), (2.0, 3.0), (2.0, 1.0), (1.0, 1.0), (1.0, 3.0), (0.0, 3.0)]);
+    let sites = regions(vec![u, circle(1.5, 1.6, 0.3)]);
+    let vd = vd_of(&sites);
+    check_diagram(&sites, &vd, 400, 14);
+    let disc = vd.region(SiteId::Region(1)).unwrap();
+    assert!(!disc.unbounded && disc.self_edges.is_empty());
+    let u_region = vd.region(SiteId::Region(0)).unwrap();
+    assert!(u_region.unbounded && !u_region.self_edges.is_empty());
+    for &i in &u_region.self_edges {
+        let twice = u_region.boundary.iter().filter(|&&(j, _)| j == i).count();
+        assert_eq!(twice, 2, "self-edge {i} walked once each way");
+    }
+}
+
+#[test]
 fn a_single_site_has_no_edges_to_others() {
     let sites = regions(vec![circle(2.0, 3.0, 1.0)]);
     let vd = vd_of(&sites);

@@ -1,7 +1,8 @@
 //! The region of each Voronoi site (thesis Corollary 2): bounded by the
-//! edges between the site and other sites, walked with the site on the
-//! left (counter-clockwise around it). Self-edges of the site reach into
-//! its region from that walk and are listed apart.
+//! edges between the site and other sites and by its self-edges, cracks
+//! in the region walked once each way; the walk keeps the site on its left
+//! (counter-clockwise round it). Regions are simply connected, so the walk
+//! is one closed walk.
 
 use super::axis::MedialAxis2d;
 use super::voronoi::{SiteId, VoronoiEdge};
@@ -12,13 +13,13 @@ pub struct SiteRegion {
     /// The site.
     pub site: SiteId,
     /// The boundary walk: axis edge indices, each with `true` when walked
-    /// from its `from` node to its `to` node (the site on the walk's left).
-    /// Consecutive entries share a node, and the last leads back to the
-    /// first.
+    /// from its `from` node to its `to` node (the site on the walk's left);
+    /// a self-edge of the site appears twice, once each way. Consecutive
+    /// entries share a node, and the last leads back to the first.
     pub boundary: Vec<(usize, bool)>,
     /// How many closed walks the boundary edges form: 1 for every region
     /// of a valid diagram (regions are simply connected), 0 for a site
-    /// without edges to other sites.
+    /// without edges.
     pub walks: usize,
     /// The site's self-edges (axis edge indices).
     pub self_edges: Vec<usize>,
@@ -40,8 +41,11 @@ pub(crate) fn site_regions(
     for (i, v) in edges.iter().enumerate() {
         if v.self_edge {
             selfs.entry(v.sides[0]).or_default().push(i);
-            continue;
         }
+        // A self-edge is a crack in its site's region, walked both ways: it
+        // may be all that joins two parts of the boundary (a C-shaped site
+        // round another site has an outer and an inner part, joined
+        // through the self-edges in its mouth).
         by_site.entry(v.sides[0]).or_default().push((i, true));
         by_site.entry(v.sides[1]).or_default().push((i, false));
     }
