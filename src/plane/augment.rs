@@ -189,15 +189,28 @@ fn lowest_point(shape: &Shape2d, hole: usize, down: Point) -> (BoundaryPos, Poin
             best = Some((h, inner, pos));
         }
     };
+    // On a curve site every point is there twice, once per side: only the
+    // side facing down (a reflex or smooth vertex, an element whose normal
+    // points down) grows its disk downwards. A region hole's lowest point
+    // always faces down.
+    let curve = lp.kind() == crate::shape::LoopKind::Curve;
+    let faces_down = |e: &Element| !curve || e.left_normal_at(e.point_at(0.5)).dot(down) > 0.0;
     for (k, e) in lp.elements().enumerate() {
         let pos = |t: f64| BoundaryPos { loop_index: hole, element: k, t };
-        offer(depth(e.start()), false, pos(0.0));
+        let joint = shape.joint(hole, k);
+        let vertex_faces_down = joint == crate::shape::JointKind::Reflex
+            || (joint == crate::shape::JointKind::Smooth && e.left_normal_at(e.start()).dot(down) > 0.0);
+        if !curve || vertex_faces_down {
+            offer(depth(e.start()), false, pos(0.0));
+        }
         match e {
-            Element::Segment(s) if (s.b - s.a).dot(down) == 0.0 => offer(depth((s.a + s.b) * 0.5), true, pos(0.5)),
+            Element::Segment(s) if (s.b - s.a).dot(down) == 0.0 && faces_down(&e) => {
+                offer(depth((s.a + s.b) * 0.5), true, pos(0.5))
+            }
             Element::Segment(_) => {}
             Element::Arc(a) => {
                 let q = a.center + down * a.radius;
-                if a.spans_direction(q) {
+                if a.spans_direction(q) && (!curve || !a.is_ccw()) {
                     let t = e.param_of(q);
                     if t > 0.0 && t < 1.0 {
                         offer(depth(e.point_at(t)), true, pos(t));

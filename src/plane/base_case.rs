@@ -673,7 +673,7 @@ impl<K: AxisKernel> Builder<'_, K> {
         let mut feet = Vec::new();
         let mut whole = Vec::new();
         for i in 0..self.n() {
-            if let Site::Circle { o, r: rc, .. } = self.sites[i].site {
+            if let Site::Circle { o, r: rc, outside: false } = self.sites[i].site {
                 if c.dist(o) <= self.tol && (rc - r).abs() <= self.tol {
                     feet.push((i, self.key(i, self.sites[i].u0, r)));
                     feet.push((i, self.key(i, self.sites[i].u1, r)));
@@ -682,7 +682,7 @@ impl<K: AxisKernel> Builder<'_, K> {
                 }
             }
             let (d, u) = self.distance(i, c);
-            if self.k().contact(d, r, self.touch) == Contact::Touching {
+            if self.k().contact(d, r, self.touch) == Contact::Touching && self.from_inside(i, c, u) {
                 if let Site::Point(q) = self.sites[i].site {
                     // A disk through a reflex vertex from outside its fan
                     // (in this subshape) touches the element beside it.
@@ -721,6 +721,25 @@ impl<K: AxisKernel> Builder<'_, K> {
             .collect();
         let feet = feet.into_iter().zip(keep).filter(|(_, k)| *k).map(|((_, k), _)| k).collect();
         (feet, whole)
+    }
+
+    /// False when a disk centred `c` touches site `i` at parameter `u`
+    /// strictly inside the site's piece from the site's outer side: the
+    /// two sides of a curve site lie on each other, and a disk touching
+    /// one touches the other there from behind.
+    fn from_inside(&self, i: usize, c: Point, u: f64) -> bool {
+        let s = &self.sites[i];
+        let w = self.fraction(i, u);
+        if !(w > 0.0 && w < 1.0) {
+            return true;
+        }
+        let signed = match s.site {
+            Site::Point(_) => return true,
+            Site::Line { a, n } => (c - a).dot(n),
+            Site::Circle { o, r, outside: true } => c.dist(o) - r,
+            Site::Circle { o, r, outside: false } => r - c.dist(o),
+        };
+        signed >= 0.0
     }
 
     /// Contacts of a constructed disk count as footpoints within this

@@ -13,7 +13,7 @@
 
 use crate::kernel::growing_disk::GrowingDisk;
 use crate::kernel::{AxisKernel, Contact, FilteredKernel, Point};
-use crate::shape::{ChainTree, Element, ElementIndex, ElementRef, JointKind, Shape2d};
+use crate::shape::{ChainTree, Element, ElementIndex, ElementRef, JointKind, LoopKind, Shape2d};
 
 /// Where a maximal disk touches the boundary.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -117,9 +117,9 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
         let reach = Point::new(r + tol, r + tol);
         self.index.tree.visit_overlapping::<()>(&crate::kernel::BBox { min: c - reach, max: c + reach }, |gid| {
             if self.index.tree.item_box(gid).distance_to(c) <= r + tol {
-                let e = self.element(gid).1;
+                let (er, e) = self.element(gid);
                 let (d, q) = e.closest_point(c);
-                if self.kernel.contact(d, r, tol) != Contact::Apart && seen_from_inside(&e, q, c, r, tol) {
+                if self.kernel.contact(d, r, tol) != Contact::Apart && self.faces(er, &e, q, c, r, tol) {
                     near.push((gid, q));
                 }
             }
@@ -180,6 +180,38 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
             })
             .collect();
         feet.into_iter().zip(keep).filter(|(_, k)| *k).map(|(f, _)| f).collect()
+    }
+
+    /// [`seen_from_inside`], and on a curve site (whose two sides share
+    /// their vertices) a touch at an element's end only where that end's
+    /// vertex, on this side of the curve, faces the centre `c`: inside a
+    /// reflex vertex's fan (within `tol`), on the inner side of a smooth
+    /// one, never at a convex one (a disk larger than `tol` touches the
+    /// elements there, not the corner). The other side's occurrence of the
+    /// vertex is the footpoint.
+    fn faces(&self, er: ElementRef, e: &Element, q: Point, c: Point, r: f64, tol: f64) -> bool {
+        let lp = &self.shape.loops()[er.loop_index];
+        if lp.kind() != LoopKind::Curve || r <= tol {
+            return seen_from_inside(e, q, c, r, tol);
+        }
+        let n = lp.len();
+        let v = if q.dist(e.start()) <= tol {
+            er.element
+        } else if q.dist(e.end()) <= tol {
+            (er.element + 1) % n
+        } else {
+            return (c - q).dot(e.left_normal_at(q)) > 0.0;
+        };
+        let m = c - lp.vertices()[v].p;
+        match self.shape.joint(er.loop_index, v) {
+            JointKind::Reflex => {
+                let t_in = lp.element((v + n - 1) % n).end_tangent();
+                let t_out = lp.element(v).start_tangent();
+                m.dot(t_in) >= -tol && m.dot(t_out) <= tol
+            }
+            JointKind::Smooth => m.dot(e.left_normal_at(q)) > 0.0,
+            JointKind::Convex => false,
+        }
     }
 
     fn element(&self, gid: usize) -> (ElementRef, Element) {
@@ -278,7 +310,7 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
             }
             let (er, e) = self.element(gid);
             let q = e.closest_point(center).1;
-            if !seen_from_inside(&e, q, center, radius, tol) {
+            if !self.faces(er, &e, q, center, radius, tol) {
                 continue;
             }
             if found.iter().all(|(_, f)| f.point.dist(q) > tol) {
