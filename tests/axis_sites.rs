@@ -93,8 +93,17 @@ fn a_segment_site_in_a_circle() {
 /// by a grid of cells), every leaf size and a few seeds, under the oracle.
 #[test]
 fn random_segment_sites_under_the_oracle() {
+    random_sites(11, 0.0);
+}
+
+#[test]
+fn random_curve_sites_with_arcs_under_the_oracle() {
+    random_sites(12, 0.5);
+}
+
+fn random_sites(seed: u64, arcs: f64) {
     use rand::{Rng, SeedableRng};
-    let mut rng = rand::rngs::SmallRng::seed_from_u64(11);
+    let mut rng = rand::rngs::SmallRng::seed_from_u64(seed);
     let mut shapes = 0;
     for round in 0..60 {
         let cells = 2 + round % 4;
@@ -110,23 +119,37 @@ fn random_segment_sites_under_the_oracle() {
                 let pts: Vec<(f64, f64)> = (0..=k)
                     .map(|_| (x0 + side * rng.gen_range(0.1..0.9), y0 + side * rng.gen_range(0.1..0.9)))
                     .collect();
-                curves.push(poly(&pts));
+                let mut c = poly(&pts);
+                for x in c.iter_mut() {
+                    if rng.gen_bool(arcs) {
+                        x.bulge = rng.gen_range(-0.8..0.8);
+                    }
+                }
+                curves.push(c);
             }
         }
         let s = match sites(vec![rect(0.0, 0.0, 10.0, 10.0)], curves) {
             Ok(s) => s,
-            // A random polyline may cross itself.
-            Err(ShapeError::Intersection { first, second, .. }) if first.loop_index == second.loop_index => continue,
+            // A random polyline may cross itself, an arc bulge out of its cell.
+            Err(ShapeError::Intersection { first, second, .. })
+                if first.loop_index == second.loop_index || arcs > 0.0 =>
+            {
+                continue
+            }
             Err(e) => panic!("round {round}: {e}"),
         };
         for (seed, leaf_parts) in [(1u64, 3usize), (2, 8), (3, 32)] {
-            let axis = medial_axis(&s, &AxisOptions { seed, leaf_parts })
-                .unwrap_or_else(|e| panic!("round {round} seed {seed} leaf {leaf_parts}: {e}\n{}", s.to_json()));
+            let axis = medial_axis(&s, &AxisOptions { seed, leaf_parts }).unwrap_or_else(|e| {
+                panic!(
+                    "round {round} seed {seed} leaf {leaf_parts}: {e}\n{:?}",
+                    s.loops().iter().skip(1).map(|l| l.vertices().to_vec()).collect::<Vec<_>>()
+                )
+            });
             oracle::check(&s, &axis, 200, seed);
         }
         shapes += 1;
     }
-    assert!(shapes >= 25, "{shapes}");
+    assert!(shapes >= 15, "{shapes}");
 }
 
 #[test]
@@ -147,4 +170,20 @@ fn the_axis_of_a_horizontal_segment_site_by_hand() {
     // No axis on the segment itself.
     assert!(oracle::axis_distance(&lines, Point::new(5.0, 5.0)) > 1.0);
     assert_eq!(axis.edges.len(), axis.nodes.len(), "one cycle");
+}
+
+/// Stage 3 probe: curve sites with arcs (a C, an S, a polyline with an arc).
+#[test]
+fn curve_sites_with_arcs() {
+    let sq = || vec![rect(0.0, 0.0, 10.0, 10.0)];
+    // A C: three quarters of the circle of radius 2 round (5, 5).
+    let c = vec![v(7.0, 5.0, (3.0 * std::f64::consts::PI / 8.0).tan()), v(5.0, 3.0, 0.0)];
+    check(sq(), vec![c]);
+    // The same C the other way round.
+    let c = vec![v(5.0, 3.0, -(3.0 * std::f64::consts::PI / 8.0).tan()), v(7.0, 5.0, 0.0)];
+    check(sq(), vec![c]);
+    // An S of two half circles.
+    check(sq(), vec![vec![v(2.0, 5.0, 1.0), v(5.0, 5.0, -1.0), v(8.0, 5.0, 0.0)]]);
+    // Segment, arc, segment.
+    check(sq(), vec![vec![v(2.0, 2.0, 0.0), v(4.0, 6.0, 0.4), v(7.0, 6.5, 0.0), v(8.0, 2.0, 0.0)]]);
 }

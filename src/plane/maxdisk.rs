@@ -272,12 +272,22 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
         // half the distance to another element, which validation keeps
         // above the tolerance.
         let t_min = 0.25 * tol;
+        // Grown along the element's own normal, the disk meets its own arc
+        // again only as the arc's circle; grown along another direction of a
+        // reflex vertex's fan (an augmenting disk at a curve site's end, where
+        // the fan is half a turn), the arc is any other element.
+        let own_element = lp.element(at.element);
+        let along_normal = own_element.left_normal_at(p).dot(n) > 1.0 - 1e-12;
         // The first contact of each element, as a key for the tree search.
         let contact = |gid: usize| {
             let (_, e) = self.element(gid);
             let k = &self.kernel;
             if gid == own {
-                own_contact(&g, &e)
+                if along_normal {
+                    own_contact(&g, &e)
+                } else {
+                    neighbour_touch(k, &g, &e, t_min, tol, false)
+                }
             } else {
                 match shares_p {
                     Some((other, smooth)) if other == gid => neighbour_touch(k, &g, &e, t_min, tol, smooth),
@@ -302,10 +312,10 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
         };
         let center = g.center(radius);
         // The arc grown from is among the first contacts: the disk is its circle.
-        let leaf_arc = near.iter().any(|&(gid, _)| gid == own);
+        let leaf_arc = along_normal && near.iter().any(|&(gid, _)| gid == own);
         let mut found = vec![(own, Footpoint { element: at, point: p })];
         for &(gid, _) in &near {
-            if gid == own {
+            if gid == own && along_normal {
                 continue;
             }
             let (er, e) = self.element(gid);
