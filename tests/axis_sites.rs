@@ -187,3 +187,29 @@ fn curve_sites_with_arcs() {
     // Segment, arc, segment.
     check(sq(), vec![vec![v(2.0, 2.0, 0.0), v(4.0, 6.0, 0.4), v(7.0, 6.5, 0.0), v(8.0, 2.0, 0.0)]]);
 }
+
+/// Many short segment sites (one per cell of a grid), several seeds.
+#[test]
+fn a_hundred_segment_sites() {
+    use rand::{Rng, SeedableRng};
+    for seed in 0..6u64 {
+        let mut rng = rand::rngs::SmallRng::seed_from_u64(100 + seed);
+        let cells = 10;
+        let side = 10.0 / cells as f64;
+        let mut curves = Vec::new();
+        for cx in 0..cells {
+            for cy in 0..cells {
+                let (x0, y0) = (cx as f64 * side, cy as f64 * side);
+                let p = |rng: &mut rand::rngs::SmallRng| {
+                    (x0 + side * rng.gen_range(0.1..0.9), y0 + side * rng.gen_range(0.1..0.9))
+                };
+                let (a, b) = (p(&mut rng), p(&mut rng));
+                curves.push(poly(&[a, b]));
+            }
+        }
+        let s = sites(vec![rect(0.0, 0.0, 10.0, 10.0)], curves).unwrap();
+        let axis = medial_axis(&s, &AxisOptions { seed, ..AxisOptions::default() })
+            .unwrap_or_else(|e| panic!("seed {seed}: {e}"));
+        oracle::check(&s, &axis, 500, seed);
+    }
+}
