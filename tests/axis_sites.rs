@@ -9,7 +9,7 @@ use medax::plane::{medial_axis, AxisOptions, NodeKind};
 use medax::shape::{JointKind, LoopKind, Shape2d, ShapeError, ShapeOptions, Vertex};
 
 fn sites(loops: Vec<Vec<Vertex>>, curves: Vec<Vec<Vertex>>) -> Result<Shape2d, ShapeError> {
-    Shape2d::from_sites(loops, curves, &ShapeOptions::default())
+    Shape2d::from_sites(loops, curves, Vec::new(), &ShapeOptions::default())
 }
 
 #[test]
@@ -211,5 +211,70 @@ fn a_hundred_segment_sites() {
         let axis = medial_axis(&s, &AxisOptions { seed, ..AxisOptions::default() })
             .unwrap_or_else(|e| panic!("seed {seed}: {e}"));
         oracle::check(&s, &axis, 500, seed);
+    }
+}
+
+fn with_points(loops: Vec<Vec<Vertex>>, curves: Vec<Vec<Vertex>>, points: &[(f64, f64)]) -> medax::plane::MedialAxis2d {
+    let pts = points.iter().map(|&(x, y)| Point::new(x, y)).collect();
+    let s = Shape2d::from_sites(loops, curves, pts, &ShapeOptions::default()).unwrap();
+    let axis = medial_axis(&s, &AxisOptions::default()).unwrap_or_else(|e| panic!("{e}"));
+    oracle::check(&s, &axis, 400, 7);
+    axis
+}
+
+#[test]
+fn a_point_site_in_a_square() {
+    let s = Shape2d::from_sites(vec![rect(0.0, 0.0, 10.0, 10.0)], vec![], vec![Point::new(4.0, 5.5)], &ShapeOptions::default())
+        .unwrap();
+    assert_eq!(s.kind(1), LoopKind::Point);
+    assert_eq!(s.joint(1, 0), JointKind::Reflex);
+    let axis = with_points(vec![rect(0.0, 0.0, 10.0, 10.0)], vec![], &[(4.0, 5.5)]);
+    assert_eq!(axis.edges.len(), axis.nodes.len(), "one cycle");
+    // The centre (the square's own branch point) is no longer on the axis:
+    // the point is nearer; the axis passes between them.
+    let lines = axis.sampled(&Shape2d::from_sites(vec![rect(0.0, 0.0, 10.0, 10.0)], vec![], vec![Point::new(4.0, 5.5)], &ShapeOptions::default()).unwrap(), 1e-6);
+    assert!(oracle::axis_distance(&lines, Point::new(4.0, 5.5)) > 1.0);
+}
+
+#[test]
+fn a_few_point_sites() {
+    let sq = || vec![rect(0.0, 0.0, 10.0, 10.0)];
+    with_points(sq(), vec![], &[(3.0, 4.0), (7.0, 6.5)]);
+    with_points(sq(), vec![], &[(0.5, 0.5), (9.3, 9.1), (5.0, 5.0)]);
+    // Symmetric: two points on a horizontal line (their augmenting disks
+    // see each other's point straight below? no: side by side).
+    with_points(sq(), vec![], &[(3.0, 5.0), (7.0, 5.0)]);
+    // Stacked: one point straight above another.
+    with_points(sq(), vec![], &[(5.0, 3.0), (5.0, 7.0)]);
+    // With a segment site and a hole.
+    with_points(vec![rect(0.0, 0.0, 10.0, 10.0), rect(6.0, 6.0, 8.0, 8.0)], vec![poly(&[(1.0, 2.0), (4.0, 3.0)])], &[(2.0, 7.0), (8.0, 2.0)]);
+}
+
+/// Random point clouds (jittered grids: reflex clusters for the divide
+/// step), with and without segment sites, every leaf size.
+#[test]
+fn random_point_sites_under_the_oracle() {
+    use rand::{Rng, SeedableRng};
+    let mut rng = rand::rngs::SmallRng::seed_from_u64(21);
+    for round in 0..24 {
+        let cells = 2 + round % 7;
+        let side = 10.0 / cells as f64;
+        let (mut curves, mut points) = (Vec::new(), Vec::new());
+        for cx in 0..cells {
+            for cy in 0..cells {
+                let (x0, y0) = (cx as f64 * side, cy as f64 * side);
+                let mut p = || (x0 + side * rng.gen_range(0.1..0.9), y0 + side * rng.gen_range(0.1..0.9));
+                match (round % 3, (cx + cy) % 2) {
+                    (1, 0) => curves.push(poly(&[p(), p()])),
+                    _ => points.push(Point::new(p().0, p().1)),
+                }
+            }
+        }
+        let s = Shape2d::from_sites(vec![rect(0.0, 0.0, 10.0, 10.0)], curves, points, &ShapeOptions::default()).unwrap();
+        for (seed, leaf_parts) in [(1u64, 3usize), (2, 8), (3, 32)] {
+            let axis = medial_axis(&s, &AxisOptions { seed, leaf_parts })
+                .unwrap_or_else(|e| panic!("round {round} seed {seed} leaf {leaf_parts}: {e}"));
+            oracle::check(&s, &axis, 200, seed);
+        }
     }
 }

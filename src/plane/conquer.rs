@@ -447,11 +447,24 @@ fn merge_pass_through(axis: &mut MedialAxis2d, is_port: &[bool]) {
             // valid axis); leave the node in place.
             continue;
         }
+        // Angles (a vertex's or an arc's parameter) go on from e1 to e2
+        // without a jump of a whole turn: a point site's own augmenting
+        // disk sits where its fan's angles wrap round.
+        let on = |k: usize| {
+            let (end, start, stop) = (e1.params[k].1, e2.params[k].0, e2.params[k].1);
+            match e1.sites[k] {
+                Primitive::Vertex { .. } => {
+                    let turns = ((end - start) / std::f64::consts::TAU).round() * std::f64::consts::TAU;
+                    stop + turns
+                }
+                Primitive::Element(_) => stop,
+            }
+        };
         let merged = AxisEdge {
             from: e1.from,
             to: e2.to,
             sites: e1.sites,
-            params: [(e1.params[0].0, e2.params[0].1), (e1.params[1].0, e2.params[1].1)],
+            params: [(e1.params[0].0, on(0)), (e1.params[1].0, on(1))],
             kind: e1.kind,
         };
         alive[live[1]] = false;

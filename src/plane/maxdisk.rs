@@ -152,6 +152,10 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
             .iter()
             .map(|f| {
                 let lp = &self.shape.loops()[f.element.loop_index];
+                if lp.kind() == LoopKind::Point {
+                    // No neighbour to hand the contact to.
+                    return true;
+                }
                 let n = lp.len();
                 let e = lp.element(f.element.element);
                 let (vertex, other) = if f.point.dist(e.end()) <= tol {
@@ -191,6 +195,10 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
     /// vertex is the footpoint.
     fn faces(&self, er: ElementRef, e: &Element, q: Point, c: Point, r: f64, tol: f64) -> bool {
         let lp = &self.shape.loops()[er.loop_index];
+        if lp.kind() == LoopKind::Point {
+            // Every direction is in a point's fan.
+            return true;
+        }
         if lp.kind() != LoopKind::Curve || r <= tol {
             return seen_from_inside(e, q, c, r, tol);
         }

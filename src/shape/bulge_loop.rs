@@ -24,6 +24,10 @@ pub enum LoopKind {
     /// `2k − 1 − i` are the same curve travelled both ways ([`Loop::twin`]),
     /// vertices 0 and k are its ends (cusps, reflex with a fan of π).
     Curve,
+    /// A point site: one vertex, whose one element is the zero-length
+    /// segment from the point to itself (so that every element index holds
+    /// the point); reflex with a fan of normals of a whole turn.
+    Point,
 }
 
 /// A closed chain of segments and arcs. Element `i` runs from vertex `i` to
@@ -56,6 +60,11 @@ impl Loop {
             vertices.push(Vertex { p: open[k - j].p, bulge: -open[k - j - 1].bulge });
         }
         Loop { vertices, kind: LoopKind::Curve }
+    }
+
+    /// The loop of a point site at `p`.
+    pub fn point(p: Point) -> Loop {
+        Loop { vertices: vec![Vertex { p, bulge: 0.0 }], kind: LoopKind::Point }
     }
 
     /// What the loop bounds.

@@ -124,12 +124,14 @@ impl Shape2d {
     /// `loops` as in [`from_bulge_loops`](Self::from_bulge_loops) (the outer
     /// boundary, then holes), and `curves`, open chains of k + 1 vertices
     /// each (the bulge of vertex i is that of element i, the last one's is
-    /// ignored), which become loops `loops.len()..` of kind
+    /// ignored), which become the next loops, of kind
     /// [`LoopKind::Curve`](super::LoopKind::Curve): 2k elements, the curve
-    /// and its way back.
+    /// and its way back; then `points`, loops of kind
+    /// [`LoopKind::Point`](super::LoopKind::Point), one vertex each.
     pub fn from_sites(
         loops: Vec<Vec<Vertex>>,
         curves: Vec<Vec<Vertex>>,
+        points: Vec<Point>,
         opts: &ShapeOptions,
     ) -> Result<Shape2d, ShapeError> {
         let mut all: Vec<Loop> = loops
@@ -142,6 +144,7 @@ impl Shape2d {
             })
             .collect();
         all.extend(curves.iter().map(|c| Loop::curve(c)));
+        all.extend(points.into_iter().map(Loop::point));
         Self::from_loops(all, opts)
     }
 

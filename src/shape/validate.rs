@@ -78,7 +78,9 @@ pub(crate) fn validate(mut loops: Vec<Loop>, opts: &ShapeOptions) -> Result<Vali
     // right round them (turning angle −π, a reflex fan of π), whatever
     // the rounded tangents say.
     let mut turns = per_element::map_elements(&loops, &offsets, |l, i| {
-        if loops[l].is_curve_end(i) {
+        if loops[l].kind() == LoopKind::Point {
+            -std::f64::consts::TAU
+        } else if loops[l].is_curve_end(i) {
             -std::f64::consts::PI
         } else {
             turning_angle(&loops[l], i)
@@ -86,7 +88,9 @@ pub(crate) fn validate(mut loops: Vec<Loop>, opts: &ShapeOptions) -> Result<Vali
     });
     if let Some(gid) = turns.iter().enumerate().position(|(g, t)| {
         let (l, i) = locate(&offsets, g);
-        !loops[l].is_curve_end(i) && t.abs() > std::f64::consts::PI - opts.angle_tolerance
+        loops[l].kind() != LoopKind::Point
+            && !loops[l].is_curve_end(i)
+            && t.abs() > std::f64::consts::PI - opts.angle_tolerance
     }) {
         let (l, i) = locate(&offsets, gid);
         return Err(ShapeError::Degenerate { at: at(l, i), kind: Degeneracy::Cusp, position: loops[l].vertices[i].p });
@@ -141,7 +145,12 @@ fn locate(offsets: &[usize], gid: usize) -> (usize, usize) {
 fn check_numbers(loops: &[Loop]) -> Result<(), ShapeError> {
     for (li, l) in loops.iter().enumerate() {
         let n = l.len();
-        if n < 2 || (n == 2 && l.kind() == LoopKind::Region && l.vertices.iter().all(|v| v.bulge == 0.0)) {
+        let few = match l.kind() {
+            LoopKind::Point => n != 1,
+            LoopKind::Curve => n < 2,
+            LoopKind::Region => n < 2 || (n == 2 && l.vertices.iter().all(|v| v.bulge == 0.0)),
+        };
+        if few {
             return Err(ShapeError::TooFewElements { loop_index: li, count: n });
         }
         for (i, v) in l.vertices.iter().enumerate() {
@@ -183,6 +192,10 @@ enum ElementCheck {
 fn check_elements(loops: &mut [Loop], offsets: &[usize], tol: f64, flatten: &Flatten) -> Result<usize, ShapeError> {
     let checks = per_element::map_elements(loops, offsets, |l, i| {
         let lp = &loops[l];
+        // A point site's element is the point itself.
+        if lp.kind() == LoopKind::Point {
+            return ElementCheck::Keep;
+        }
         let (a, b) = (lp.vertices[i].p, lp.vertices[(i + 1) % lp.len()].p);
         if a.dist(b) <= tol {
             return ElementCheck::ZeroLength;
