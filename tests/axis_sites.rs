@@ -224,15 +224,29 @@ fn with_points(loops: Vec<Vec<Vertex>>, curves: Vec<Vec<Vertex>>, points: &[(f64
 
 #[test]
 fn a_point_site_in_a_square() {
-    let s = Shape2d::from_sites(vec![rect(0.0, 0.0, 10.0, 10.0)], vec![], vec![Point::new(4.0, 5.5)], &ShapeOptions::default())
-        .unwrap();
+    let s = Shape2d::from_sites(
+        vec![rect(0.0, 0.0, 10.0, 10.0)],
+        vec![],
+        vec![Point::new(4.0, 5.5)],
+        &ShapeOptions::default(),
+    )
+    .unwrap();
     assert_eq!(s.kind(1), LoopKind::Point);
     assert_eq!(s.joint(1, 0), JointKind::Reflex);
     let axis = with_points(vec![rect(0.0, 0.0, 10.0, 10.0)], vec![], &[(4.0, 5.5)]);
     assert_eq!(axis.edges.len(), axis.nodes.len(), "one cycle");
     // The centre (the square's own branch point) is no longer on the axis:
     // the point is nearer; the axis passes between them.
-    let lines = axis.sampled(&Shape2d::from_sites(vec![rect(0.0, 0.0, 10.0, 10.0)], vec![], vec![Point::new(4.0, 5.5)], &ShapeOptions::default()).unwrap(), 1e-6);
+    let lines = axis.sampled(
+        &Shape2d::from_sites(
+            vec![rect(0.0, 0.0, 10.0, 10.0)],
+            vec![],
+            vec![Point::new(4.0, 5.5)],
+            &ShapeOptions::default(),
+        )
+        .unwrap(),
+        1e-6,
+    );
     assert!(oracle::axis_distance(&lines, Point::new(4.0, 5.5)) > 1.0);
 }
 
@@ -247,7 +261,11 @@ fn a_few_point_sites() {
     // Stacked: one point straight above another.
     with_points(sq(), vec![], &[(5.0, 3.0), (5.0, 7.0)]);
     // With a segment site and a hole.
-    with_points(vec![rect(0.0, 0.0, 10.0, 10.0), rect(6.0, 6.0, 8.0, 8.0)], vec![poly(&[(1.0, 2.0), (4.0, 3.0)])], &[(2.0, 7.0), (8.0, 2.0)]);
+    with_points(
+        vec![rect(0.0, 0.0, 10.0, 10.0), rect(6.0, 6.0, 8.0, 8.0)],
+        vec![poly(&[(1.0, 2.0), (4.0, 3.0)])],
+        &[(2.0, 7.0), (8.0, 2.0)],
+    );
 }
 
 /// Random point clouds (jittered grids: reflex clusters for the divide
@@ -270,7 +288,8 @@ fn random_point_sites_under_the_oracle() {
                 }
             }
         }
-        let s = Shape2d::from_sites(vec![rect(0.0, 0.0, 10.0, 10.0)], curves, points, &ShapeOptions::default()).unwrap();
+        let s =
+            Shape2d::from_sites(vec![rect(0.0, 0.0, 10.0, 10.0)], curves, points, &ShapeOptions::default()).unwrap();
         for (seed, leaf_parts) in [(1u64, 3usize), (2, 8), (3, 32)] {
             let axis = medial_axis(&s, &AxisOptions { seed, leaf_parts })
                 .unwrap_or_else(|e| panic!("round {round} seed {seed} leaf {leaf_parts}: {e}"));

@@ -258,7 +258,9 @@ fn build(shape: &Shape2d, found: Vec<(Contact, Contact, Cut)>) -> Augmentation {
     for (l, list) in on.iter_mut().enumerate() {
         if shape.kind(l) == crate::shape::LoopKind::Point {
             let own = list.iter().find(|c| c.child.is_none()).map(|c| c.dir).expect("every point has its own contact");
-            list.sort_by(|a, b| cw_offset(own, a.dir).total_cmp(&cw_offset(own, b.dir)).then(a.child.is_some().cmp(&b.child.is_some())));
+            list.sort_by(|a, b| {
+                cw_offset(own, a.dir).total_cmp(&cw_offset(own, b.dir)).then(a.child.is_some().cmp(&b.child.is_some()))
+            });
             continue;
         }
         list.sort_by(|a, b| {

@@ -68,8 +68,7 @@ const FAN_MIN: f64 = 1e-7;
 /// The directions (angles) where a point site's fan is cut into sites of
 /// at most a quarter turn: fixed, so that every subshape holding part of
 /// the fan cuts it at the same places.
-const POINT_SPLITS: [f64; 4] =
-    [-std::f64::consts::FRAC_PI_2, 0.0, std::f64::consts::FRAC_PI_2, std::f64::consts::PI];
+const POINT_SPLITS: [f64; 4] = [-std::f64::consts::FRAC_PI_2, 0.0, std::f64::consts::FRAC_PI_2, std::f64::consts::PI];
 
 /// A primitive as one subshape sees it: a range of footpoint parameters
 /// (see [`crate::kernel::bisector::footpoint`]) travelled from `u0` to `u1`.
