@@ -219,6 +219,19 @@ fn with_points(loops: Vec<Vec<Vertex>>, curves: Vec<Vec<Vertex>>, points: &[(f64
     let s = Shape2d::from_sites(loops, curves, pts, &ShapeOptions::default()).unwrap();
     let axis = medial_axis(&s, &AxisOptions::default()).unwrap_or_else(|e| panic!("{e}"));
     oracle::check(&s, &axis, 400, 7);
+    // The joints where a point's fan was cut in the base case are merged
+    // away: no node of two edges with the same pair of primitives.
+    let mut at: Vec<Vec<usize>> = vec![Vec::new(); axis.nodes.len()];
+    for (i, e) in axis.edges.iter().enumerate() {
+        at[e.from].push(i);
+        at[e.to].push(i);
+    }
+    for (v, es) in at.iter().enumerate() {
+        if let [a, b] = es[..] {
+            let (sa, sb) = (axis.edges[a].sites, axis.edges[b].sites);
+            assert!(sa != sb && sa != [sb[1], sb[0]], "pass-through node {:?}", axis.nodes[v]);
+        }
+    }
     axis
 }
 
