@@ -24,7 +24,13 @@ fn main() {
     let (mut pts, mut curves) = (Vec::new(), Vec::new());
     for i in 0..cells {
         for j in 0..cells {
-            let mut p = || Point::new((i as f64 + 0.1 + 0.8 * rnd()) * side, (j as f64 + 0.1 + 0.8 * rnd()) * side);
+            let jitter = std::env::var("JITTER").ok().and_then(|j| j.parse::<f64>().ok()).unwrap_or(0.8);
+            let mut p = || {
+                Point::new(
+                    (i as f64 + 0.5 + jitter * (rnd() - 0.5)) * side,
+                    (j as f64 + 0.5 + jitter * (rnd() - 0.5)) * side,
+                )
+            };
             if segs {
                 let (a, b) = (p(), p());
                 curves.push(vec![Vertex { p: a, bulge: 0.0 }, Vertex { p: b, bulge: 0.0 }]);

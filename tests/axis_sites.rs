@@ -310,3 +310,19 @@ fn random_point_sites_under_the_oracle() {
         }
     }
 }
+
+/// A regular grid of points: every Voronoi vertex is a disk through four
+/// cocircular points (multi-branching), and every augmenting disk lands on
+/// the point straight below.
+#[test]
+fn a_regular_grid_of_points() {
+    for n in [2usize, 3, 6] {
+        let pts: Vec<(f64, f64)> = (0..n * n)
+            .map(|k| {
+                ((k % n) as f64 * 10.0 / n as f64 + 5.0 / n as f64, (k / n) as f64 * 10.0 / n as f64 + 5.0 / n as f64)
+            })
+            .collect();
+        let axis = with_points(vec![rect(0.0, 0.0, 10.0, 10.0)], vec![], &pts);
+        assert_eq!(axis.edges.len() + 1, axis.nodes.len() + n * n);
+    }
+}

@@ -724,7 +724,7 @@ impl<K: AxisKernel> Builder<'_, K> {
                 }
             }
             let (d, u) = self.distance(i, c);
-            if self.k().contact(d, r, self.touch) == Contact::Touching && self.from_inside(i, c, u) {
+            if self.k().contact(d, r, self.touch) == Contact::Touching && self.faces_inside(i, c, u) {
                 if let Site::Point(q) = self.sites[i].site {
                     // A disk through a reflex vertex from outside its fan
                     // (in this subshape) touches the element beside it.
@@ -769,7 +769,7 @@ impl<K: AxisKernel> Builder<'_, K> {
     /// strictly inside the site's piece from the site's outer side: the
     /// two sides of a curve site lie on each other, and a disk touching
     /// one touches the other there from behind.
-    fn from_inside(&self, i: usize, c: Point, u: f64) -> bool {
+    fn faces_inside(&self, i: usize, c: Point, u: f64) -> bool {
         let s = &self.sites[i];
         let w = self.fraction(i, u);
         if !(w > 0.0 && w < 1.0) {
