@@ -182,6 +182,10 @@ fn normalised(shape: &Shape2d, p: BoundaryPos) -> BoundaryPos {
 /// disk's centre then lies inside an axis edge.
 fn lowest_point(shape: &Shape2d, hole: usize, down: Point) -> (BoundaryPos, Point) {
     let lp = &shape.loops()[hole];
+    if lp.kind() == crate::shape::LoopKind::Point {
+        // The disk's north pole is the point itself.
+        return (BoundaryPos { loop_index: hole, element: 0, t: 0.0 }, down);
+    }
     let depth = |p: Point| p.dot(down);
     let mut best: Option<(f64, bool, BoundaryPos)> = None;
     let mut offer = |h: f64, inner: bool, pos: BoundaryPos| {
@@ -189,15 +193,28 @@ fn lowest_point(shape: &Shape2d, hole: usize, down: Point) -> (BoundaryPos, Poin
             best = Some((h, inner, pos));
         }
     };
+    // On a curve site every point is there twice, once per side: only the
+    // side facing down (a reflex or smooth vertex, an element whose normal
+    // points down) grows its disk downwards. A region hole's lowest point
+    // always faces down.
+    let curve = lp.kind() == crate::shape::LoopKind::Curve;
+    let faces_down = |e: &Element| !curve || e.left_normal_at(e.point_at(0.5)).dot(down) > 0.0;
     for (k, e) in lp.elements().enumerate() {
         let pos = |t: f64| BoundaryPos { loop_index: hole, element: k, t };
-        offer(depth(e.start()), false, pos(0.0));
+        let joint = shape.joint(hole, k);
+        let vertex_faces_down = joint == crate::shape::JointKind::Reflex
+            || (joint == crate::shape::JointKind::Smooth && e.left_normal_at(e.start()).dot(down) > 0.0);
+        if !curve || vertex_faces_down {
+            offer(depth(e.start()), false, pos(0.0));
+        }
         match e {
-            Element::Segment(s) if (s.b - s.a).dot(down) == 0.0 => offer(depth((s.a + s.b) * 0.5), true, pos(0.5)),
+            Element::Segment(s) if (s.b - s.a).dot(down) == 0.0 && faces_down(&e) => {
+                offer(depth((s.a + s.b) * 0.5), true, pos(0.5))
+            }
             Element::Segment(_) => {}
             Element::Arc(a) => {
                 let q = a.center + down * a.radius;
-                if a.spans_direction(q) {
+                if a.spans_direction(q) && (!curve || !a.is_ccw()) {
                     let t = e.param_of(q);
                     if t > 0.0 && t < 1.0 {
                         offer(depth(e.point_at(t)), true, pos(t));
@@ -219,6 +236,12 @@ fn fan_before(a: Point, b: Point) -> bool {
     a.cross(b) < 0.0
 }
 
+/// The clockwise angle from direction `a` to direction `b`, in [0, 2π): the
+/// order of directions round a fan of normals, whatever its width.
+pub(crate) fn cw_offset(a: Point, b: Point) -> f64 {
+    (a.y.atan2(a.x) - b.y.atan2(b.x)).rem_euclid(std::f64::consts::TAU)
+}
+
 /// Builds the one boundary cycle from the disks (Figure 2.17).
 fn build(shape: &Shape2d, found: Vec<(Contact, Contact, Cut)>) -> Augmentation {
     let loops = shape.loops().len();
@@ -230,7 +253,16 @@ fn build(shape: &Shape2d, found: Vec<(Contact, Contact, Cut)>) -> Augmentation {
         cuts.push(cut);
     }
     // Each loop's contacts in travel order, a hole's starting at its own.
+    // Round a point (a fan of a whole turn) the order is clockwise from the
+    // point's own contact; a cross product orders only within half a turn.
     for (l, list) in on.iter_mut().enumerate() {
+        if shape.kind(l) == crate::shape::LoopKind::Point {
+            let own = list.iter().find(|c| c.child.is_none()).map(|c| c.dir).expect("every point has its own contact");
+            list.sort_by(|a, b| {
+                cw_offset(own, a.dir).total_cmp(&cw_offset(own, b.dir)).then(a.child.is_some().cmp(&b.child.is_some()))
+            });
+            continue;
+        }
         list.sort_by(|a, b| {
             (a.pos.element, a.pos.t).partial_cmp(&(b.pos.element, b.pos.t)).unwrap_or(std::cmp::Ordering::Equal).then(
                 if fan_before(a.dir, b.dir) {
@@ -289,6 +321,11 @@ fn build(shape: &Shape2d, found: Vec<(Contact, Contact, Cut)>) -> Augmentation {
 /// other chain is that single point.
 fn push_chain(shape: &Shape2d, pieces: &mut Vec<Piece>, list: &[Contact], k: usize) {
     let first = list[0].pos;
+    if shape.kind(first.loop_index) == crate::shape::LoopKind::Point {
+        // Every chain of a point is the point.
+        pieces.push(Piece::Chain { from: first, to: first });
+        return;
+    }
     // Leading: at the first position and not wrapped round (those sort
     // after the first contact in its vertex's fan); trailing: wrapped and
     // at the first position (before it in the fan).

@@ -65,6 +65,11 @@ const SAME_EVENT: f64 = 4.0;
 /// Fans of normals narrower than this (radians) are rounding, not fans.
 const FAN_MIN: f64 = 1e-7;
 
+/// The directions (angles) where a point site's fan is cut into sites of
+/// at most a quarter turn: fixed, so that every subshape holding part of
+/// the fan cuts it at the same places.
+const POINT_SPLITS: [f64; 4] = [-std::f64::consts::FRAC_PI_2, 0.0, std::f64::consts::FRAC_PI_2, std::f64::consts::PI];
+
 /// A primitive as one subshape sees it: a range of footpoint parameters
 /// (see [`crate::kernel::bisector::footpoint`]) travelled from `u0` to `u1`.
 #[derive(Debug, Clone, Copy)]
@@ -427,6 +432,10 @@ impl<K: AxisKernel> Builder<'_, K> {
     /// no wider than the tolerance.
     fn push_fan(&mut self, l: usize, v: usize, from: Point, to: Point, r: f64) {
         let lp = &self.shape.loops()[l];
+        if lp.kind() == crate::shape::LoopKind::Point {
+            self.push_point_fan(l, from, to, r);
+            return;
+        }
         let n = lp.len();
         let n_prev = lp.element((v + n - 1) % n).end_tangent().perp();
         let n_next = lp.element(v).start_tangent().perp();
@@ -455,6 +464,39 @@ impl<K: AxisKernel> Builder<'_, K> {
         }
         let q = lp.vertices()[v].p;
         self.push_site(Primitive::Vertex { loop_index: l, vertex: v }, Site::Point(q), base - d0, base - d1);
+    }
+
+    /// A point site's fan from direction `from` clockwise to `to` (a whole
+    /// turn when they are one direction: the point between the two arcs of
+    /// one disk), cut at the fixed directions of [`POINT_SPLITS`] into
+    /// pieces narrower than a quarter turn, each a site of its own joined to
+    /// the next: the joint between two pieces is an event (the maximal disk
+    /// through the point in that direction), so that no site's range comes
+    /// near a whole turn, where angles are ambiguous.
+    fn push_point_fan(&mut self, l: usize, from: Point, to: Point, r: f64) {
+        use super::augment::cw_offset;
+        let q = self.shape.loops()[l].vertices()[0].p;
+        let mut width = cw_offset(from, to);
+        if width <= FAN_MIN {
+            width = TAU;
+        }
+        if width * r <= 4.0 * self.tol {
+            return;
+        }
+        let mut cuts: Vec<f64> = POINT_SPLITS
+            .iter()
+            .map(|&a| cw_offset(from, Point::new(a.cos(), a.sin())))
+            .filter(|&o| o > FAN_MIN && o < width - FAN_MIN)
+            .collect();
+        cuts.sort_by(f64::total_cmp);
+        cuts.push(width);
+        let base = angle(from);
+        let prim = Primitive::Vertex { loop_index: l, vertex: 0 };
+        let mut d0 = 0.0;
+        for d1 in cuts {
+            self.push_site(prim, Site::Point(q), base - d0, base - d1);
+            d0 = d1;
+        }
     }
 
     fn element_site(&mut self, l: usize, k: usize, lo: f64, hi: f64) {
@@ -668,7 +710,7 @@ impl<K: AxisKernel> Builder<'_, K> {
         let mut feet = Vec::new();
         let mut whole = Vec::new();
         for i in 0..self.n() {
-            if let Site::Circle { o, r: rc, .. } = self.sites[i].site {
+            if let Site::Circle { o, r: rc, outside: false } = self.sites[i].site {
                 if c.dist(o) <= self.tol && (rc - r).abs() <= self.tol {
                     feet.push((i, self.key(i, self.sites[i].u0, r)));
                     feet.push((i, self.key(i, self.sites[i].u1, r)));
@@ -677,7 +719,7 @@ impl<K: AxisKernel> Builder<'_, K> {
                 }
             }
             let (d, u) = self.distance(i, c);
-            if self.k().contact(d, r, self.touch) == Contact::Touching {
+            if self.k().contact(d, r, self.touch) == Contact::Touching && self.faces_inside(i, c, u) {
                 if let Site::Point(q) = self.sites[i].site {
                     // A disk through a reflex vertex from outside its fan
                     // (in this subshape) touches the element beside it.
@@ -716,6 +758,25 @@ impl<K: AxisKernel> Builder<'_, K> {
             .collect();
         let feet = feet.into_iter().zip(keep).filter(|(_, k)| *k).map(|((_, k), _)| k).collect();
         (feet, whole)
+    }
+
+    /// False when a disk centred `c` touches site `i` at parameter `u`
+    /// strictly inside the site's piece from the site's outer side: the
+    /// two sides of a curve site lie on each other, and a disk touching
+    /// one touches the other there from behind.
+    fn faces_inside(&self, i: usize, c: Point, u: f64) -> bool {
+        let s = &self.sites[i];
+        let w = self.fraction(i, u);
+        if !(w > 0.0 && w < 1.0) {
+            return true;
+        }
+        let signed = match s.site {
+            Site::Point(_) => return true,
+            Site::Line { a, n } => (c - a).dot(n),
+            Site::Circle { o, r, outside: true } => c.dist(o) - r,
+            Site::Circle { o, r, outside: false } => r - c.dist(o),
+        };
+        signed >= 0.0
     }
 
     /// Contacts of a constructed disk count as footpoints within this
@@ -872,7 +933,20 @@ impl<K: AxisKernel> Builder<'_, K> {
                 }
                 (Primitive::Element(ea), Primitive::Vertex { .. }) => (ea, true),
                 (Primitive::Vertex { .. }, Primitive::Element(eb)) => (eb, false),
-                (Primitive::Vertex { .. }, Primitive::Vertex { .. }) => continue,
+                (Primitive::Vertex { .. }, Primitive::Vertex { .. }) => {
+                    // Two pieces of one point site's fan: the maximal disk
+                    // through the point in the direction where they meet.
+                    if a.prim != b.prim {
+                        continue;
+                    }
+                    let Site::Point(q) = b.site else { continue };
+                    let nrm = Point::new(b.u0.cos(), b.u0.sin());
+                    let (c, r) = self.grow(q, nrm, &[i, j]).ok_or(BaseCaseError::NoDisk(q))?;
+                    let (mut feet, whole) = self.touching(c, r);
+                    feet.push(key);
+                    self.add_event(c, r, EventKind::Joint, feet, whole);
+                    continue;
+                }
             };
             let (er, at_end) = grow_from;
             let elements = &self.shape.loops()[er.loop_index];

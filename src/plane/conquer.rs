@@ -275,6 +275,7 @@ pub fn glue<K: AxisKernel>(
     let same_as = coinciding_cuts(cuts, SAME_DISK * tol);
     let mut edges: Vec<AxisEdge> = Vec::new();
     let mut is_port: Vec<bool> = Vec::new();
+    let mut is_joint: Vec<bool> = Vec::new();
     for local in locals {
         let ids: Vec<usize> = local
             .nodes
@@ -290,7 +291,12 @@ pub fn glue<K: AxisKernel>(
                     EventKind::Port(c) => {
                         *port_node[same_as[c]].get_or_insert_with(|| make(&mut nodes, &mut is_port, true))
                     }
-                    _ => make(&mut nodes, &mut is_port, false),
+                    _ => {
+                        let id = make(&mut nodes, &mut is_port, false);
+                        is_joint.resize(id + 1, false);
+                        is_joint[id] = n.kind == EventKind::Joint;
+                        id
+                    }
                 }
             })
             .collect();
@@ -312,7 +318,8 @@ pub fn glue<K: AxisKernel>(
         e.from != e.to && seen.insert((a, b, s))
     });
     let mut axis = MedialAxis2d { nodes, edges };
-    merge_pass_through(&mut axis, &is_port);
+    is_joint.resize(axis.nodes.len(), false);
+    merge_pass_through(shape, &mut axis, &is_port, &is_joint);
     classify(&mut axis, tol);
     merge_coinciding_branches(shape, &mut axis, SAME_DISK * tol);
     classify(&mut axis, tol);
@@ -414,7 +421,7 @@ fn same_pair(a: [Primitive; 2], b: [Primitive; 2]) -> bool {
 
 /// Removes dividing-disk nodes that only pass an edge through, merging the
 /// two edges, and compacts the node list.
-fn merge_pass_through(axis: &mut MedialAxis2d, is_port: &[bool]) {
+fn merge_pass_through(shape: &Shape2d, axis: &mut MedialAxis2d, is_port: &[bool], is_joint: &[bool]) {
     let n = axis.nodes.len();
     let mut at: Vec<Vec<usize>> = vec![Vec::new(); n];
     for (i, e) in axis.edges.iter().enumerate() {
@@ -424,7 +431,7 @@ fn merge_pass_through(axis: &mut MedialAxis2d, is_port: &[bool]) {
     let mut alive = vec![true; axis.edges.len()];
     let mut keep = vec![true; n];
     for v in 0..n {
-        if !is_port[v] {
+        if !is_port[v] && !is_joint[v] {
             continue;
         }
         let live: Vec<usize> = at[v].iter().copied().filter(|&i| alive[i]).collect();
@@ -433,6 +440,12 @@ fn merge_pass_through(axis: &mut MedialAxis2d, is_port: &[bool]) {
         }
         let (mut e1, mut e2) = (axis.edges[live[0]], axis.edges[live[1]]);
         if !same_pair(e1.sites, e2.sites) {
+            continue;
+        }
+        // A joint with the same pair on both sides: only where a point
+        // site's fan was cut (base_case::POINT_SPLITS); other joints stay.
+        let point_site = |p: &Primitive| matches!(*p, Primitive::Vertex { loop_index, .. } if shape.kind(loop_index) == crate::shape::LoopKind::Point);
+        if !is_port[v] && !e1.sites.iter().any(point_site) {
             continue;
         }
         // Orient e1 into v and e2 out of v, with e2's sites in e1's order.
@@ -447,11 +460,24 @@ fn merge_pass_through(axis: &mut MedialAxis2d, is_port: &[bool]) {
             // valid axis); leave the node in place.
             continue;
         }
+        // Angles (a vertex's or an arc's parameter) go on from e1 to e2
+        // without a jump of a whole turn: a point site's own augmenting
+        // disk sits where its fan's angles wrap round.
+        let on = |k: usize| {
+            let (end, start, stop) = (e1.params[k].1, e2.params[k].0, e2.params[k].1);
+            match e1.sites[k] {
+                Primitive::Vertex { .. } => {
+                    let turns = ((end - start) / std::f64::consts::TAU).round() * std::f64::consts::TAU;
+                    stop + turns
+                }
+                Primitive::Element(_) => stop,
+            }
+        };
         let merged = AxisEdge {
             from: e1.from,
             to: e2.to,
             sites: e1.sites,
-            params: [(e1.params[0].0, e2.params[0].1), (e1.params[1].0, e2.params[1].1)],
+            params: [(e1.params[0].0, on(0)), (e1.params[1].0, on(1))],
             kind: e1.kind,
         };
         alive[live[1]] = false;

@@ -13,7 +13,7 @@
 
 use crate::kernel::growing_disk::GrowingDisk;
 use crate::kernel::{AxisKernel, Contact, FilteredKernel, Point};
-use crate::shape::{ChainTree, Element, ElementIndex, ElementRef, JointKind, Shape2d};
+use crate::shape::{ChainTree, Element, ElementIndex, ElementRef, JointKind, LoopKind, Shape2d};
 
 /// Where a maximal disk touches the boundary.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -117,9 +117,9 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
         let reach = Point::new(r + tol, r + tol);
         self.index.tree.visit_overlapping::<()>(&crate::kernel::BBox { min: c - reach, max: c + reach }, |gid| {
             if self.index.tree.item_box(gid).distance_to(c) <= r + tol {
-                let e = self.element(gid).1;
+                let (er, e) = self.element(gid);
                 let (d, q) = e.closest_point(c);
-                if self.kernel.contact(d, r, tol) != Contact::Apart && seen_from_inside(&e, q, c, r, tol) {
+                if self.kernel.contact(d, r, tol) != Contact::Apart && self.faces(er, &e, q, c, r, tol) {
                     near.push((gid, q));
                 }
             }
@@ -152,6 +152,10 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
             .iter()
             .map(|f| {
                 let lp = &self.shape.loops()[f.element.loop_index];
+                if lp.kind() == LoopKind::Point {
+                    // No neighbour to hand the contact to.
+                    return true;
+                }
                 let n = lp.len();
                 let e = lp.element(f.element.element);
                 let (vertex, other) = if f.point.dist(e.end()) <= tol {
@@ -180,6 +184,42 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
             })
             .collect();
         feet.into_iter().zip(keep).filter(|(_, k)| *k).map(|(f, _)| f).collect()
+    }
+
+    /// [`seen_from_inside`], and on a curve site (whose two sides share
+    /// their vertices) a touch at an element's end only where that end's
+    /// vertex, on this side of the curve, faces the centre `c`: inside a
+    /// reflex vertex's fan (within `tol`), on the inner side of a smooth
+    /// one, never at a convex one (a disk larger than `tol` touches the
+    /// elements there, not the corner). The other side's occurrence of the
+    /// vertex is the footpoint.
+    fn faces(&self, er: ElementRef, e: &Element, q: Point, c: Point, r: f64, tol: f64) -> bool {
+        let lp = &self.shape.loops()[er.loop_index];
+        if lp.kind() == LoopKind::Point {
+            // Every direction is in a point's fan.
+            return true;
+        }
+        if lp.kind() != LoopKind::Curve || r <= tol {
+            return seen_from_inside(e, q, c, r, tol);
+        }
+        let n = lp.len();
+        let v = if q.dist(e.start()) <= tol {
+            er.element
+        } else if q.dist(e.end()) <= tol {
+            (er.element + 1) % n
+        } else {
+            return (c - q).dot(e.left_normal_at(q)) > 0.0;
+        };
+        let m = c - lp.vertices()[v].p;
+        match self.shape.joint(er.loop_index, v) {
+            JointKind::Reflex => {
+                let t_in = lp.element((v + n - 1) % n).end_tangent();
+                let t_out = lp.element(v).start_tangent();
+                m.dot(t_in) >= -tol && m.dot(t_out) <= tol
+            }
+            JointKind::Smooth => m.dot(e.left_normal_at(q)) > 0.0,
+            JointKind::Convex => false,
+        }
     }
 
     fn element(&self, gid: usize) -> (ElementRef, Element) {
@@ -240,12 +280,22 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
         // half the distance to another element, which validation keeps
         // above the tolerance.
         let t_min = 0.25 * tol;
+        // Grown along the element's own normal, the disk meets its own arc
+        // again only as the arc's circle; grown along another direction of a
+        // reflex vertex's fan (an augmenting disk at a curve site's end, where
+        // the fan is half a turn), the arc is any other element.
+        let own_element = lp.element(at.element);
+        let along_normal = own_element.left_normal_at(p).dot(n) > 1.0 - 1e-12;
         // The first contact of each element, as a key for the tree search.
         let contact = |gid: usize| {
             let (_, e) = self.element(gid);
             let k = &self.kernel;
             if gid == own {
-                own_contact(&g, &e)
+                if along_normal {
+                    own_contact(&g, &e)
+                } else {
+                    neighbour_touch(k, &g, &e, t_min, tol, false)
+                }
             } else {
                 match shares_p {
                     Some((other, smooth)) if other == gid => neighbour_touch(k, &g, &e, t_min, tol, smooth),
@@ -270,15 +320,15 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
         };
         let center = g.center(radius);
         // The arc grown from is among the first contacts: the disk is its circle.
-        let leaf_arc = near.iter().any(|&(gid, _)| gid == own);
+        let leaf_arc = along_normal && near.iter().any(|&(gid, _)| gid == own);
         let mut found = vec![(own, Footpoint { element: at, point: p })];
         for &(gid, _) in &near {
-            if gid == own {
+            if gid == own && along_normal {
                 continue;
             }
             let (er, e) = self.element(gid);
             let q = e.closest_point(center).1;
-            if !seen_from_inside(&e, q, center, radius, tol) {
+            if !self.faces(er, &e, q, center, radius, tol) {
                 continue;
             }
             if found.iter().all(|(_, f)| f.point.dist(q) > tol) {

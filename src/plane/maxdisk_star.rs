@@ -221,6 +221,10 @@ fn jump_to_third<K: AxisKernel>(
         let turns = !matches!(s, Site::Line { .. });
         let here = param_on(s, c0, s.contact(c0, r0));
         let forward = wrap(turns, param_on(s, c1, s.contact(c1, r1)) - here).signum();
+        // A point site's fan is a whole turn: a contact there never leaves it.
+        if shape.kind(f.element.loop_index) == crate::shape::LoopKind::Point {
+            continue;
+        }
         let mut open = false;
         for &u in contact_range(finder, f, s).iter() {
             if wrap(turns, u - here) * forward <= if turns { 1e-12 } else { tol } {

@@ -363,8 +363,24 @@ fn locate_foot<P: Slot>(
     // Directions within this much (radians) of a fan part's end are
     // that end: disks found by sliding meet a vertex to about 1e-8.
     const FAN_SLACK: f64 = 1e-7;
+    let aux = |j: usize| match pieces[j % m_len].piece()? {
+        Piece::Aux { disk } => Some(disk),
+        Piece::Chain { .. } => None,
+    };
+    let point = shape.kind(p.loop_index) == crate::shape::LoopKind::Point;
     let holds = |j: usize, at: BoundaryPos| {
         let Some((from, to)) = pieces[j].chain() else { return false };
+        if point {
+            // A point's fan is a whole turn: its part between the arcs
+            // before and after, clockwise, measured by angle (a whole
+            // turn between the two arcs of one disk).
+            let (Some(a), Some(b)) = (dir(j + m_len - 1), dir(j + 1)) else { return true };
+            if aux(j + m_len - 1) == aux(j + 1) {
+                return true;
+            }
+            let (x, w) = (super::augment::cw_offset(a, m), super::augment::cw_offset(a, b));
+            return x <= w + FAN_SLACK || x >= std::f64::consts::TAU - FAN_SLACK;
+        }
         let after_ok = to != at || dir(j + 1).is_none_or(|d| d.cross(m) >= -FAN_SLACK);
         let before_ok = from != at || dir(j + m_len - 1).is_none_or(|d| d.cross(m) <= FAN_SLACK);
         after_ok && before_ok

@@ -12,18 +12,75 @@ pub struct Vertex {
     pub bulge: f64,
 }
 
+/// What a loop bounds (thesis 2.3, Observation 6: sites of dimension 2, 1
+/// and 0).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum LoopKind {
+    /// A region: the outer boundary or a hole with an area.
+    #[default]
+    Region,
+    /// An open curve site of k elements, stored as the closed loop that runs
+    /// along it and back (2k elements, zero width): element `i` and element
+    /// `2k − 1 − i` are the same curve travelled both ways ([`Loop::twin`]),
+    /// vertices 0 and k are its ends (cusps, reflex with a fan of π).
+    Curve,
+    /// A point site: one vertex, whose one element is the zero-length
+    /// segment from the point to itself (so that every element index holds
+    /// the point); reflex with a fan of normals of a whole turn.
+    Point,
+}
+
 /// A closed chain of segments and arcs. Element `i` runs from vertex `i` to
 /// vertex `(i + 1) % len`. Invariants once inside a validated shape: at
-/// least 2 elements, no zero-length element, no self-intersection.
+/// least 2 elements, no zero-length element, no self-intersection (a curve
+/// loop's two sides excepted, see [`LoopKind::Curve`]).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Loop {
     pub(crate) vertices: Vec<Vertex>,
+    pub(crate) kind: LoopKind,
 }
 
 impl Loop {
     /// A loop over the given vertices (not validated).
     pub fn new(vertices: Vec<Vertex>) -> Loop {
-        Loop { vertices }
+        Loop { vertices, kind: LoopKind::Region }
+    }
+
+    /// The two-sided loop of an open curve through `open` (k + 1 vertices,
+    /// the bulge of vertex i is that of element i; the last bulge is
+    /// ignored): along the curve, then back with negated bulges.
+    pub fn curve(open: &[Vertex]) -> Loop {
+        let k = open.len().saturating_sub(1);
+        let mut vertices: Vec<Vertex> = open.to_vec();
+        if let Some(last) = vertices.last_mut() {
+            last.bulge = if k > 0 { -open[k - 1].bulge } else { 0.0 };
+        }
+        // Back: element k + j runs from vertex k − j to k − j − 1.
+        for j in 1..k {
+            vertices.push(Vertex { p: open[k - j].p, bulge: -open[k - j - 1].bulge });
+        }
+        Loop { vertices, kind: LoopKind::Curve }
+    }
+
+    /// The loop of a point site at `p`.
+    pub fn point(p: Point) -> Loop {
+        Loop { vertices: vec![Vertex { p, bulge: 0.0 }], kind: LoopKind::Point }
+    }
+
+    /// What the loop bounds.
+    pub fn kind(&self) -> LoopKind {
+        self.kind
+    }
+
+    /// For a curve loop, the element travelling the same piece of curve the
+    /// other way; `None` for a region.
+    pub fn twin(&self, i: usize) -> Option<usize> {
+        (self.kind == LoopKind::Curve).then(|| self.vertices.len() - 1 - i)
+    }
+
+    /// For a curve loop, whether vertex `v` is one of the curve's two ends.
+    pub fn is_curve_end(&self, v: usize) -> bool {
+        self.kind == LoopKind::Curve && (v == 0 || 2 * v == self.vertices.len())
     }
 
     /// Number of elements (= number of vertices).
@@ -89,7 +146,7 @@ impl Loop {
         let vertices = (0..n)
             .map(|k| Vertex { p: self.vertices[n - 1 - k].p, bulge: -self.vertices[(2 * n - 2 - k) % n].bulge })
             .collect();
-        Loop { vertices }
+        Loop { vertices, kind: self.kind }
     }
 
     /// Winding number of the loop around `p` (+1 inside a counter-clockwise

@@ -217,7 +217,11 @@ pub(crate) fn check_holes(loops: &[Loop], index: &ElementIndex, areas: &[f64]) -
         .into_par_iter()
         .map(|h| {
             let hit = if h == 0 { None } else { short[h].or_else(|| full_ray(loops, index, h, probes[h])) };
-            (probes[h], hit.map(|hit| (hit.loop_index, hit.up == ccw[hit.loop_index])))
+            // Nothing lies inside a curve site: its ray always enters it.
+            let leaves = |hit: &Hit| {
+                loops[hit.loop_index].kind() == super::bulge_loop::LoopKind::Region && hit.up == ccw[hit.loop_index]
+            };
+            (probes[h], hit.map(|hit| (hit.loop_index, leaves(&hit))))
         })
         .collect();
     let mut order: Vec<usize> = (1..loops.len()).collect();

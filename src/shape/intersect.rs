@@ -19,6 +19,21 @@ use crate::kernel::{construct, Point};
 /// ignoring the surroundings (64 × `tol`) of the vertices they share as
 /// consecutive elements of one loop; `None` when they keep apart.
 pub(crate) fn element_pair_approach(loops: &[Loop], ra: ElementRef, rb: ElementRef, tol: f64) -> Option<Point> {
+    // A curve loop's way back lies on its way out: only the way out is
+    // checked, as an open chain (its first and last elements do not meet).
+    let back = |r: ElementRef| loops[r.loop_index].twin(r.element).is_some_and(|t| t < r.element);
+    if back(ra) || back(rb) {
+        return None;
+    }
+    if ra.loop_index == rb.loop_index && loops[ra.loop_index].kind() == super::bulge_loop::LoopKind::Curve {
+        let (i, j) = (ra.element.min(rb.element), ra.element.max(rb.element));
+        let (ea, eb) = (loops[ra.loop_index].element(i), loops[ra.loop_index].element(j));
+        let shared: &[Point] = if j == i + 1 { &[ea.end()] } else { &[] };
+        if j == i + 1 && joint_cones_apart(&ea, &eb) {
+            return None;
+        }
+        return approach_point(&ea, &eb, tol, shared, 64.0 * tol);
+    }
     let ea = loops[ra.loop_index].element(ra.element);
     let eb = loops[rb.loop_index].element(rb.element);
     let mut shared = [Point::default(); 2];

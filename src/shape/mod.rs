@@ -25,7 +25,7 @@ mod sweep_status;
 mod validate;
 
 pub use box_tree::BoxTree;
-pub use bulge_loop::{winding_contribution, Loop, Vertex};
+pub use bulge_loop::{winding_contribution, Loop, LoopKind, Vertex};
 pub use chain::{chain_loops, LooseElement};
 pub use chain_tree::ChainTree;
 pub use draw::{draw_shape, shape_path};

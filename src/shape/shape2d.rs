@@ -120,6 +120,34 @@ impl Shape2d {
         Self::from_loops(loops, opts)
     }
 
+    /// Builds a shape with Voronoi sites (thesis 2.3, Observation 6):
+    /// `loops` as in [`from_bulge_loops`](Self::from_bulge_loops) (the outer
+    /// boundary, then holes), and `curves`, open chains of k + 1 vertices
+    /// each (the bulge of vertex i is that of element i, the last one's is
+    /// ignored), which become the next loops, of kind
+    /// [`LoopKind::Curve`](super::LoopKind::Curve): 2k elements, the curve
+    /// and its way back; then `points`, loops of kind
+    /// [`LoopKind::Point`](super::LoopKind::Point), one vertex each.
+    pub fn from_sites(
+        loops: Vec<Vec<Vertex>>,
+        curves: Vec<Vec<Vertex>>,
+        points: Vec<Point>,
+        opts: &ShapeOptions,
+    ) -> Result<Shape2d, ShapeError> {
+        let mut all: Vec<Loop> = loops
+            .into_iter()
+            .map(|mut vs| {
+                if vs.len() > 2 && vs.first().map(|v| v.p) == vs.last().map(|v| v.p) {
+                    vs.pop();
+                }
+                Loop::new(vs)
+            })
+            .collect();
+        all.extend(curves.iter().map(|c| Loop::curve(c)));
+        all.extend(points.into_iter().map(Loop::point));
+        Self::from_loops(all, opts)
+    }
+
     /// Builds a shape from explicit elements: `loops[0]` is the outer
     /// boundary. Consecutive elements (and the last and first) must meet
     /// within the chaining tolerance; the loop's vertices are the elements'
@@ -252,6 +280,11 @@ impl Shape2d {
         } else {
             v
         }
+    }
+
+    /// What loop `l` bounds: a region or a curve site.
+    pub fn kind(&self, l: usize) -> super::LoopKind {
+        self.loops[l].kind()
     }
 
     /// Joint kind at vertex `i` of loop `l` (between elements `i − 1` and `i`

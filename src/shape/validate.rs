@@ -6,7 +6,7 @@
 //! All positions and indices in errors refer to the loops as given.
 
 use super::box_tree::BoxTree;
-use super::bulge_loop::Loop;
+use super::bulge_loop::{Loop, LoopKind};
 use super::containment::check_holes;
 use super::element::Element;
 use super::error::{Degeneracy, ElementRef, ShapeError};
@@ -74,8 +74,24 @@ pub(crate) fn validate(mut loops: Vec<Loop>, opts: &ShapeOptions) -> Result<Vali
         return Err(ShapeError::OutOfRange { at: at(l, i), value });
     }
     // Turning angles once: the cusp check needs them now, the joint classes later.
-    let mut turns = per_element::map_elements(&loops, &offsets, |l, i| turning_angle(&loops[l], i));
-    if let Some(gid) = turns.iter().position(|t| t.abs() > std::f64::consts::PI - opts.angle_tolerance) {
+    // A curve site's two ends are cusps by construction: the walk turns
+    // right round them (turning angle −π, a reflex fan of π), whatever
+    // the rounded tangents say.
+    let mut turns = per_element::map_elements(&loops, &offsets, |l, i| {
+        if loops[l].kind() == LoopKind::Point {
+            -std::f64::consts::TAU
+        } else if loops[l].is_curve_end(i) {
+            -std::f64::consts::PI
+        } else {
+            turning_angle(&loops[l], i)
+        }
+    });
+    if let Some(gid) = turns.iter().enumerate().position(|(g, t)| {
+        let (l, i) = locate(&offsets, g);
+        loops[l].kind() != LoopKind::Point
+            && !loops[l].is_curve_end(i)
+            && t.abs() > std::f64::consts::PI - opts.angle_tolerance
+    }) {
         let (l, i) = locate(&offsets, gid);
         return Err(ShapeError::Degenerate { at: at(l, i), kind: Degeneracy::Cusp, position: loops[l].vertices[i].p });
     }
@@ -85,7 +101,7 @@ pub(crate) fn validate(mut loops: Vec<Loop>, opts: &ShapeOptions) -> Result<Vali
     // as the crossing it is rather than as "no area".
     let areas: Vec<f64> = loops.iter().map(Loop::signed_area).collect();
     for (li, l) in loops.iter().enumerate() {
-        if areas[li].abs() <= tol * l.perimeter() {
+        if l.kind() == LoopKind::Region && areas[li].abs() <= tol * l.perimeter() {
             return Err(ShapeError::Degenerate {
                 at: at(li, 0),
                 kind: Degeneracy::ZeroArea,
@@ -98,7 +114,8 @@ pub(crate) fn validate(mut loops: Vec<Loop>, opts: &ShapeOptions) -> Result<Vali
     let mut reversed = Vec::with_capacity(loops.len());
     for (li, l) in loops.iter_mut().enumerate() {
         let want_ccw = li == 0;
-        let flip = (areas[li] > 0.0) != want_ccw;
+        // A curve loop has its interior on both sides: never turned round.
+        let flip = l.kind() == LoopKind::Region && (areas[li] > 0.0) != want_ccw;
         if flip {
             *l = l.reversed();
             // Vertex k of the reversed loop is vertex n − 1 − k, where the
@@ -128,7 +145,12 @@ fn locate(offsets: &[usize], gid: usize) -> (usize, usize) {
 fn check_numbers(loops: &[Loop]) -> Result<(), ShapeError> {
     for (li, l) in loops.iter().enumerate() {
         let n = l.len();
-        if n < 2 || (n == 2 && l.vertices.iter().all(|v| v.bulge == 0.0)) {
+        let few = match l.kind() {
+            LoopKind::Point => n != 1,
+            LoopKind::Curve => n < 2,
+            LoopKind::Region => n < 2 || (n == 2 && l.vertices.iter().all(|v| v.bulge == 0.0)),
+        };
+        if few {
             return Err(ShapeError::TooFewElements { loop_index: li, count: n });
         }
         for (i, v) in l.vertices.iter().enumerate() {
@@ -170,6 +192,10 @@ enum ElementCheck {
 fn check_elements(loops: &mut [Loop], offsets: &[usize], tol: f64, flatten: &Flatten) -> Result<usize, ShapeError> {
     let checks = per_element::map_elements(loops, offsets, |l, i| {
         let lp = &loops[l];
+        // A point site's element is the point itself.
+        if lp.kind() == LoopKind::Point {
+            return ElementCheck::Keep;
+        }
         let (a, b) = (lp.vertices[i].p, lp.vertices[(i + 1) % lp.len()].p);
         if a.dist(b) <= tol {
             return ElementCheck::ZeroLength;

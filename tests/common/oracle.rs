@@ -221,6 +221,11 @@ pub fn check(s: &Shape2d, axis: &MedialAxis2d, probes: usize, seed: u64) -> Repo
         let t = rng.gen_range(0.05..0.95);
         let p = e.point_at(t);
         let n = match e {
+            // A point site: any direction.
+            Element::Segment(g) if g.a == g.b => {
+                let a: f64 = rng.gen_range(0.0..std::f64::consts::TAU);
+                Point::new(a.cos(), a.sin())
+            }
             Element::Segment(g) => (g.b - g.a).unit().perp(),
             Element::Arc(a) if a.is_ccw() => (a.center - p).unit(),
             Element::Arc(a) => (p - a.center).unit(),
