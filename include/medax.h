@@ -93,6 +93,12 @@
 #define MEDAX_VERSION_PATCH 0
 
 /**
+ * The finest sampling tolerance [`AxisEdge::sample`] accepts, relative to
+ * the shape's bounding-box diagonal.
+ */
+#define MIN_RELATIVE_SAMPLE_TOLERANCE 1e-12
+
+/**
  * Largest absolute coordinate medax accepts, in model units (vertices and
  * arc extents). Within it, products of coordinates stay far from `f64`
  * overflow and a relative tolerance of 1e-9 still resolves 1e-6 units at
@@ -1116,7 +1122,6 @@ enum mx_status mx_voronoi_options_default(struct mx_voronoi_options *out);
  * Computes the Voronoi diagram of `sites` (thesis 2.3: the medial axis of
  * the frame with the sites as holes) and writes a new handle to `*out`.
  * `options` may be NULL. Fails with `MX_ERR_EMPTY` without sites,
- * `MX_ERR_UNSUPPORTED` for point and curve sites (not yet supported),
  * a validation status (e.g. `MX_ERR_INTERSECTION`) naming the site for
  * overlapping or invalid sites, `MX_ERR_NUMERICAL` or `MX_ERR_CANCELLED`
  * as `mx_axis_compute`; `*out` is then untouched.
@@ -1139,8 +1144,10 @@ void mx_voronoi_free(struct mx_voronoi *vd);
 
 /**
  * The diagram's medial axis: nodes, edges and their samples through the
- * `mx_axis_*` functions (loop 0 of its sites is the frame, loop 1 + i is
- * region i). Borrowed: valid until `mx_voronoi_free`; do not free it.
+ * `mx_axis_*` functions (loop 0 of its sites is the frame, then one loop
+ * per region, curve and point in that order; a curve's loop runs along
+ * it and back, its way-back elements naming the curve element they run
+ * over). Borrowed: valid until `mx_voronoi_free`; do not free it.
  *
  * # Safety
  * `vd` NULL or a live handle; `out` NULL or writable.

@@ -179,9 +179,12 @@ fn bad_sites_leave_the_out_param_alone() {
         unsafe { mx_voronoi_compute(&sites_of(&wrong_len), null(), &mut vd) },
         mx_status::MX_ERR_INVALID_ARGUMENT
     );
-    let pts = [0.0, 0.0];
-    let point_sites = mx_sites { points_xy: pts.as_ptr(), point_count: 1, ..sites_of(&empty) };
-    assert_eq!(unsafe { mx_voronoi_compute(&point_sites, null(), &mut vd) }, mx_status::MX_ERR_UNSUPPORTED);
+    // A point inside a region site: the point is named.
+    let pts = [0.5, 0.5];
+    let inside = squares(&[(0.0, 0.0)]);
+    let point_in = mx_sites { points_xy: pts.as_ptr(), point_count: 1, ..sites_of(&inside) };
+    assert_eq!(unsafe { mx_voronoi_compute(&point_in, null(), &mut vd) }, mx_status::MX_ERR_HOLE_INSIDE_HOLE);
+    assert!(last_message().contains("point site 0"), "{}", last_message());
     assert_eq!(unsafe { mx_voronoi_compute(null(), null(), &mut vd) }, mx_status::MX_ERR_NULL_ARGUMENT);
     assert_eq!(vd, SENTINEL);
     let ok = squares(&[(0.0, 0.0), (2.0, 0.0)]);
@@ -222,5 +225,53 @@ fn options_boundary_and_cancellation() {
         mx_status::MX_OK
     );
     assert_eq!((r.walks, r.unbounded), (1, 0));
+    unsafe { mx_voronoi_free(vd) };
+}
+
+#[test]
+fn points_and_a_curve_through_the_c_abi() {
+    // Three points and an L-shaped polyline: labels name the kinds, the
+    // nearest site of a point near the L is the curve, and every site has
+    // one closed walk.
+    let pts = [0.0, 0.0, 4.0, 0.0, 2.0, 3.0];
+    let curve = [5.0, 2.0, 0.0, 6.0, 2.0, 0.0, 6.0, 3.0, 0.0];
+    let lens = [3usize];
+    let sites = mx_sites {
+        points_xy: pts.as_ptr(),
+        point_count: 3,
+        curves_xyb: curve.as_ptr(),
+        curves_xyb_len: curve.len(),
+        curve_lengths: lens.as_ptr(),
+        curve_count: 1,
+        regions_xyb: null(),
+        regions_xyb_len: 0,
+        region_lengths: null(),
+        region_count: 0,
+        boundary_xyb: null(),
+        boundary_length: 0,
+    };
+    let mut vd = null_mut();
+    assert_eq!(unsafe { mx_voronoi_compute(&sites, null(), &mut vd) }, mx_status::MX_OK, "{}", last_message());
+    let mut near = mx_nearest_site {
+        site: mx_site { kind: mx_site_kind::MX_SITE_POINT, index: 9 },
+        distance: 0.0,
+        foot_x: 0.0,
+        foot_y: 0.0,
+    };
+    assert_eq!(unsafe { mx_voronoi_nearest_site(vd, 6.5, 2.5, &mut near) }, mx_status::MX_OK);
+    assert_eq!((near.site.kind, near.site.index), (mx_site_kind::MX_SITE_CURVE, 0));
+    assert!((near.distance - 0.5).abs() < 1e-12);
+    assert_eq!(unsafe { mx_voronoi_nearest_site(vd, 2.0, 2.6, &mut near) }, mx_status::MX_OK);
+    assert_eq!((near.site.kind, near.site.index), (mx_site_kind::MX_SITE_POINT, 2));
+    for (kind, index) in
+        [(mx_site_kind::MX_SITE_POINT, 0), (mx_site_kind::MX_SITE_POINT, 2), (mx_site_kind::MX_SITE_CURVE, 0)]
+    {
+        let mut r = mx_voronoi_region { walk_length: 0, walks: 0, self_edge_count: 0, unbounded: 0 };
+        assert_eq!(unsafe { mx_voronoi_get_region(vd, kind as u32, index, &mut r) }, mx_status::MX_OK);
+        assert_eq!(r.walks, 1);
+    }
+    let mut r = mx_voronoi_region { walk_length: 0, walks: 0, self_edge_count: 0, unbounded: 0 };
+    assert_eq!(unsafe { mx_voronoi_get_region(vd, mx_site_kind::MX_SITE_CURVE as u32, 0, &mut r) }, mx_status::MX_OK);
+    assert!(r.self_edge_count >= 1, "the L's convex side has a self-edge");
     unsafe { mx_voronoi_free(vd) };
 }

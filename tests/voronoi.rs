@@ -21,14 +21,16 @@ fn vd_of(sites: &Sites) -> VoronoiDiagram {
     voronoi(sites, &VoronoiOptions::default()).expect("voronoi")
 }
 
-/// Every site's elements, by site.
+/// Every site's elements, by site (a point as a zero-length segment).
 fn site_elements(sites: &Sites) -> Vec<(SiteId, Vec<Element>)> {
-    sites
-        .regions
-        .iter()
-        .enumerate()
-        .map(|(i, r)| (SiteId::Region(i), Loop::new(r.clone()).elements().collect()))
-        .collect()
+    let regions =
+        sites.regions.iter().enumerate().map(|(i, r)| (SiteId::Region(i), Loop::new(r.clone()).elements().collect()));
+    let curves = sites.curves.iter().enumerate().map(|(i, c)| {
+        (SiteId::Curve(i), c.windows(2).map(|w| Element::from_bulge(w[0].p, w[1].p, w[0].bulge)).collect())
+    });
+    let points =
+        sites.points.iter().enumerate().map(|(i, &p)| (SiteId::Point(i), vec![Element::from_bulge(p, p, 0.0)]));
+    regions.chain(curves).chain(points).collect()
 }
 
 /// Distance from `p` to each site, by scanning.
@@ -80,8 +82,8 @@ fn check_diagram(sites: &Sites, vd: &VoronoiDiagram, probes: usize, seed: u64) {
     check(vd.shape(), &vd.axis, 100, seed);
     let els = site_elements(sites);
     let site_box = vd.shape().loops()[1..].iter().fold(medax::kernel::BBox::EMPTY, |b, l| b.union(&l.bbox()));
-    let diag = site_box.diagonal();
-    let tol = 1e-8 * diag.max(1e-300);
+    let diag = site_box.diagonal().max(1.0);
+    let tol = 1e-8 * diag;
     for i in vd.diagram_edges(true) {
         let e = &vd.axis.edges[i];
         let v = vd.edges[i];
@@ -451,11 +453,187 @@ fn bad_sites_get_typed_errors_naming_the_site() {
     let outside = VoronoiOptions { boundary: Some(rect(0.0, 0.0, 1.0, 1.0)), ..VoronoiOptions::default() };
     let e = voronoi(&regions(vec![circle(5.0, 5.0, 1.0)]), &outside).unwrap_err();
     assert!(matches!(e, VoronoiError::Invalid { site: Some(SiteId::Region(0)), .. }), "{e}");
-    let pts = Sites { points: vec![Point::new(0.0, 0.0)], ..Sites::default() };
-    assert_eq!(
-        voronoi(&pts, &VoronoiOptions::default()).unwrap_err(),
-        VoronoiError::Unsupported { site: SiteId::Point(0) }
-    );
+    let on_region =
+        Sites { points: vec![Point::new(0.5, 0.5)], regions: vec![rect(0.0, 0.0, 1.0, 1.0)], ..Sites::default() };
+    let e = voronoi(&on_region, &VoronoiOptions::default()).unwrap_err();
+    assert!(matches!(e, VoronoiError::Invalid { site: Some(SiteId::Point(0)), .. }), "{e}");
+    let crossing =
+        Sites { curves: vec![poly(&[(0.0, 0.0), (2.0, 2.0)]), poly(&[(0.0, 2.0), (2.0, 0.0)])], ..Sites::default() };
+    let e = voronoi(&crossing, &VoronoiOptions::default()).unwrap_err();
+    assert!(matches!(e, VoronoiError::Invalid { site: Some(SiteId::Curve(_)), .. }), "{e}");
+    let same = Sites { points: vec![Point::new(1.0, 1.0), Point::new(1.0, 1.0)], ..Sites::default() };
+    assert!(voronoi(&same, &VoronoiOptions::default()).is_err(), "two points at one place");
+    let folded = Sites { curves: vec![poly(&[(0.0, 0.0), (2.0, 0.0), (1.0, 0.0)])], ..Sites::default() };
+    assert!(voronoi(&folded, &VoronoiOptions::default()).is_err(), "a curve folding back on itself");
     let nan = regions(vec![poly(&[(0.0, 0.0), (f64::NAN, 0.0), (1.0, 1.0)])]);
     assert!(voronoi(&nan, &VoronoiOptions::default()).is_err());
+}
+
+fn points(pts: &[(f64, f64)]) -> Sites {
+    Sites { points: pts.iter().map(|&(x, y)| Point::new(x, y)).collect(), ..Sites::default() }
+}
+
+/// The branch nodes no frame edge reaches: the Voronoi vertices of the
+/// sites, as (x, y, r) sorted.
+fn site_vertices(vd: &VoronoiDiagram) -> Vec<(f64, f64, f64)> {
+    let mut touches_frame = vec![false; vd.axis.nodes.len()];
+    let mut deg = vec![0; vd.axis.nodes.len()];
+    for (e, v) in vd.axis.edges.iter().zip(&vd.edges) {
+        for n in [e.from, e.to] {
+            deg[n] += 1;
+            touches_frame[n] |= v.sides.contains(&SiteId::Frame);
+        }
+    }
+    let mut pts: Vec<(f64, f64, f64)> = (0..vd.axis.nodes.len())
+        .filter(|&n| deg[n] >= 3 && !touches_frame[n])
+        .map(|n| (vd.axis.nodes[n].point.x, vd.axis.nodes[n].point.y, vd.axis.nodes[n].radius))
+        .collect();
+    pts.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    pts
+}
+
+#[test]
+fn point_sites_single_pair_and_collinear() {
+    let one = points(&[(2.0, 3.0)]);
+    let vd = vd_of(&one);
+    check_diagram(&one, &vd, 100, 30);
+    assert!(vd.complete && vd.diagram_edges(true).is_empty());
+    // Two points: their bisector, a line crossing the whole frame.
+    let two = points(&[(0.0, 0.0), (2.0, 0.0)]);
+    let vd = vd_of(&two);
+    check_diagram(&two, &vd, 200, 31);
+    assert!(vd.complete && site_vertices(&vd).is_empty());
+    assert_eq!(vd.frontier.iter().filter(|&&f| f).count(), 2);
+    for i in vd.diagram_edges(true) {
+        for (c, _) in vd.axis.edges[i].sample(vd.shape(), &vd.axis.nodes, 1e-6) {
+            assert!((c.x - 1.0).abs() < 1e-9, "{c:?}");
+        }
+    }
+    // Collinear points: parallel bisectors, no vertex, four frontier nodes.
+    let line = points(&[(0.0, 0.0), (1.0, 0.0), (3.0, 0.0)]);
+    let vd = vd_of(&line);
+    check_diagram(&line, &vd, 200, 32);
+    assert!(vd.complete && site_vertices(&vd).is_empty());
+    assert_eq!(vd.frontier.iter().filter(|&&f| f).count(), 4);
+}
+
+#[test]
+fn cocircular_and_grid_points() {
+    // Five points on a circle around a sixth: the circle's centre is no
+    // vertex (the sixth point is nearer), the five inner vertices are.
+    let mut pts: Vec<(f64, f64)> =
+        (0..5).map(|k| (2.0 * (k as f64 * 1.2566).cos(), 2.0 * (k as f64 * 1.2566).sin())).collect();
+    pts.push((0.0, 0.0));
+    let ring = points(&pts);
+    let vd = vd_of(&ring);
+    check_diagram(&ring, &vd, 300, 33);
+    assert_eq!(site_vertices(&vd).len(), 5);
+    assert!(!vd.region(SiteId::Point(5)).unwrap().unbounded);
+    // A regular 5 x 5 grid: every inner vertex has four points on its
+    // circle (one node of degree four, or two within the merge tolerance).
+    let grid: Vec<(f64, f64)> = (0..25).map(|k| ((k % 5) as f64, (k / 5) as f64)).collect();
+    let g = points(&grid);
+    let vd = vd_of(&g);
+    assert!(vd.complete);
+    check_diagram(&g, &vd, 300, 34);
+    let mut centres: Vec<(f64, f64)> =
+        site_vertices(&vd).iter().map(|v| ((v.0 * 2.0).round(), (v.1 * 2.0).round())).collect();
+    centres.dedup();
+    assert_eq!(centres.len(), 16, "the 16 cell centres");
+    for v in site_vertices(&vd) {
+        assert!((v.2 - 0.5f64.sqrt()).abs() < 1e-9 && (v.0.fract() - 0.5).abs() < 1e-9, "{v:?}");
+    }
+    let inner = vd.regions.iter().filter(|r| !r.unbounded).count();
+    assert_eq!(inner, 9);
+}
+
+#[test]
+fn random_points_under_the_oracle_and_against_a_larger_frame() {
+    for (n, seed) in [(30, 40), (200, 41)] {
+        let mut rng = rand::rngs::SmallRng::seed_from_u64(seed);
+        let pts: Vec<(f64, f64)> = (0..n).map(|_| (rng.gen_range(0.0..10.0), rng.gen_range(0.0..10.0))).collect();
+        let sites = points(&pts);
+        let vd = vd_of(&sites);
+        assert!(vd.complete);
+        check_diagram(&sites, &vd, 300, seed);
+        // Voronoi vertices of points: every one is the centre of an empty
+        // circle through three points, checked by scanning.
+        for (x, y, r) in site_vertices(&vd) {
+            let d: Vec<f64> = pts.iter().map(|p| (p.0 - x).hypot(p.1 - y)).collect();
+            assert!(d.iter().all(|&di| di >= r - 1e-9));
+            assert!(d.iter().filter(|&&di| (di - r).abs() < 1e-9).count() >= 3);
+        }
+        if n == 30 {
+            let big = VoronoiOptions { boundary: Some(circle(5.0, 5.0, 1e5)), ..VoronoiOptions::default() };
+            let given = voronoi(&sites, &big).unwrap();
+            let (a, b) = (site_vertices(&vd), site_vertices(&given));
+            let inside: Vec<_> = a.iter().filter(|v| (v.0 - 5.0).hypot(v.1 - 5.0) + v.2 < 1e5).collect();
+            assert_eq!(inside.len(), b.len());
+            for (p, q) in inside.iter().zip(&b) {
+                assert!(
+                    (p.0 - q.0).abs() < 1e-6 && (p.1 - q.1).abs() < 1e-6 && (p.2 - q.2).abs() < 1e-6,
+                    "{p:?} {q:?}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn segment_and_arc_curves_with_self_edges() {
+    // Collinear segment sites, a bent polyline (a self-edge bisects its
+    // convex side) and a C-shaped arc.
+    let sites = Sites {
+        curves: vec![
+            poly(&[(0.0, 0.0), (1.0, 0.0)]),
+            poly(&[(2.0, 0.0), (3.0, 0.0)]),
+            poly(&[(4.0, 0.0), (5.0, 0.0)]),
+            poly(&[(0.0, 3.0), (1.5, 4.0), (3.0, 3.0)]),
+            vec![Vertex { p: Point::new(4.0, 2.0), bulge: 1.5 }, Vertex { p: Point::new(4.0, 4.0), bulge: 0.0 }],
+        ],
+        ..Sites::default()
+    };
+    let vd = vd_of(&sites);
+    assert!(vd.complete);
+    check_diagram(&sites, &vd, 400, 50);
+    let bent = vd.region(SiteId::Curve(3)).unwrap();
+    assert!(!bent.self_edges.is_empty(), "the bisector below the bend");
+    // Between two collinear segments: the line x = 1.5 near them.
+    let between = vd.diagram_edges(false).into_iter().any(|i| {
+        let v = vd.edges[i];
+        v.sides.contains(&SiteId::Curve(0)) && v.sides.contains(&SiteId::Curve(1)) && {
+            let s = vd.axis.edges[i].sample(vd.shape(), &vd.axis.nodes, 1e-6);
+            let (lo, hi) = s.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), (c, _)| (a.min(c.y), b.max(c.y)));
+            s.iter().all(|(c, _)| (c.x - 1.5).abs() < 1e-9) && lo < 0.0 && hi > 0.0
+        }
+    });
+    assert!(between);
+}
+
+#[test]
+fn mixed_sites_points_curves_regions() {
+    for seed in 60..64 {
+        let mut rng = rand::rngs::SmallRng::seed_from_u64(seed);
+        let mut sites = Sites::default();
+        for i in 0..6 {
+            for j in 0..6 {
+                let (x, y) = (i as f64 * 2.0 + rng.gen_range(0.2..0.8), j as f64 * 2.0 + rng.gen_range(0.2..0.8));
+                match rng.gen_range(0..4) {
+                    0 => sites.points.push(Point::new(x, y)),
+                    1 => {
+                        sites.curves.push(poly(&[(x, y), (x + rng.gen_range(0.2..1.0), y + rng.gen_range(-0.5..0.5))]))
+                    }
+                    2 => sites.curves.push(vec![
+                        Vertex { p: Point::new(x, y), bulge: rng.gen_range(-0.8..0.8) },
+                        Vertex { p: Point::new(x + 0.6, y + 0.3), bulge: rng.gen_range(-0.8..0.8) },
+                        Vertex { p: Point::new(x + 0.9, y + 0.9), bulge: 0.0 },
+                    ]),
+                    _ => sites.regions.push(circle(x + 0.4, y + 0.4, rng.gen_range(0.1..0.4))),
+                }
+            }
+        }
+        let vd = vd_of(&sites);
+        assert!(vd.complete, "seed {seed}");
+        check_diagram(&sites, &vd, 300, seed);
+    }
 }

@@ -106,7 +106,7 @@ enum Command {
     },
     /// Compute the medial axis: nodes, conic edges with their boundary sites, samples.
     Axis(axis::AxisArgs),
-    /// Compute the Voronoi diagram of sites (regions today; points and curves to come).
+    /// Compute the Voronoi diagram of sites: points, open curves and closed regions.
     Voronoi(voronoi::VoronoiArgs),
     /// Run the demo: validate and draw the embedded demo shape (the default).
     Demo {

@@ -229,7 +229,6 @@ fn voronoi_error(e: VoronoiError) -> FfiError {
     let message = e.to_string();
     match e {
         VoronoiError::NoSites => FfiError::new(mx_status::MX_ERR_EMPTY, message),
-        VoronoiError::Unsupported { .. } => FfiError::new(mx_status::MX_ERR_UNSUPPORTED, message),
         VoronoiError::Invalid { error, .. } => {
             let mut f = FfiError::from(error);
             f.message = message;
@@ -282,7 +281,6 @@ unsafe fn read_sites(s: &mx_sites) -> Result<(Sites, Option<Vec<crate::shape::Ve
 /// Computes the Voronoi diagram of `sites` (thesis 2.3: the medial axis of
 /// the frame with the sites as holes) and writes a new handle to `*out`.
 /// `options` may be NULL. Fails with `MX_ERR_EMPTY` without sites,
-/// `MX_ERR_UNSUPPORTED` for point and curve sites (not yet supported),
 /// a validation status (e.g. `MX_ERR_INTERSECTION`) naming the site for
 /// overlapping or invalid sites, `MX_ERR_NUMERICAL` or `MX_ERR_CANCELLED`
 /// as `mx_axis_compute`; `*out` is then untouched.
@@ -358,8 +356,10 @@ unsafe fn query<T>(
 }
 
 /// The diagram's medial axis: nodes, edges and their samples through the
-/// `mx_axis_*` functions (loop 0 of its sites is the frame, loop 1 + i is
-/// region i). Borrowed: valid until `mx_voronoi_free`; do not free it.
+/// `mx_axis_*` functions (loop 0 of its sites is the frame, then one loop
+/// per region, curve and point in that order; a curve's loop runs along
+/// it and back, its way-back elements naming the curve element they run
+/// over). Borrowed: valid until `mx_voronoi_free`; do not free it.
 ///
 /// # Safety
 /// `vd` NULL or a live handle; `out` NULL or writable.

@@ -108,6 +108,10 @@ pub struct MedialAxis2d {
     pub edges: Vec<AxisEdge>,
 }
 
+/// The finest sampling tolerance [`AxisEdge::sample`] accepts, relative to
+/// the shape's bounding-box diagonal.
+pub const MIN_RELATIVE_SAMPLE_TOLERANCE: f64 = 1e-12;
+
 /// Below this many radians (or this fraction of a length) a footpoint
 /// parameter range is a single point for choosing a parametrisation.
 const TINY: f64 = 1e-12;
@@ -151,9 +155,12 @@ impl AxisEdge {
 
     /// Samples along the edge, from its `from` node to its `to` node, as
     /// (centre, radius): the polyline through the centres deviates from the
-    /// true conic by at most `tol` model units. The first and last samples
-    /// are the nodes themselves.
+    /// true conic by at most `tol` model units, raised to at least
+    /// [`MIN_RELATIVE_SAMPLE_TOLERANCE`] × the shape's diagonal (a finer
+    /// or zero tolerance would ask for billions of samples). The first and
+    /// last samples are the nodes themselves.
     pub fn sample(&self, shape: &Shape2d, nodes: &[AxisNode], tol: f64) -> Vec<(Point, f64)> {
+        let tol = tol.max(MIN_RELATIVE_SAMPLE_TOLERANCE * shape.bbox().diagonal());
         let (a, b) = (nodes[self.from], nodes[self.to]);
         let r_max = a.radius.max(b.radius);
         let k = self.driver(shape, r_max);

@@ -39,7 +39,12 @@ pub(crate) fn conic(k: ConicKind) -> &'static str {
 pub fn site_json(shape: &Shape2d, p: Primitive) -> Value {
     match p {
         Primitive::Element(r) => {
-            json!({"loop": r.loop_index, "element": shape.input_element_index(r.loop_index, r.element)})
+            let e = shape.input_element_index(r.loop_index, r.element);
+            if shape.on_way_back(r.loop_index, r.element) {
+                json!({"loop": r.loop_index, "element": e, "side": "back"})
+            } else {
+                json!({"loop": r.loop_index, "element": e})
+            }
         }
         Primitive::Vertex { loop_index, vertex } => {
             json!({"loop": loop_index, "vertex": shape.input_vertex_index(loop_index, vertex)})

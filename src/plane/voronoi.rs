@@ -13,17 +13,17 @@
 //! bounded by one closed walk of the edges between it and other sites
 //! ([`super::voronoi_regions`]).
 //!
-//! Sites today are closed regions bounded by segments and arcs. Point and
-//! open-curve sites (degenerate holes of zero area) are part of the input
-//! model and answered with [`VoronoiError::Unsupported`] until the shape
-//! model carries them.
+//! Sites are points, open curves and closed regions bounded by segments
+//! and arcs. Points and curves are holes of zero area
+//! ([`LoopKind`](crate::shape::LoopKind)): a curve is its way out and its
+//! way back, so both of its sides face the diagram.
 
 use super::axis::{MedialAxis2d, Primitive};
 use super::conquer::{medial_axis, AxisError, AxisOptions};
 use super::voronoi_frame::{frame_loop, FrameCheck};
 use super::voronoi_regions::{site_regions, SiteRegion};
 use crate::kernel::{BBox, Point};
-use crate::shape::{ChainTree, Loop, Shape2d, ShapeError, ShapeOptions, Vertex};
+use crate::shape::{ChainTree, Element, Loop, Shape2d, ShapeError, ShapeOptions, Vertex};
 
 /// A site of a Voronoi diagram, numbered as the caller gave it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -98,11 +98,6 @@ pub struct VoronoiOptions {
 pub enum VoronoiError {
     /// No site was given.
     NoSites,
-    /// A kind of site the library cannot handle yet.
-    Unsupported {
-        /// The first such site.
-        site: SiteId,
-    },
     /// The sites (or the outer boundary) are invalid: `error` numbers loops
     /// as the shape does (loop 0 the outer boundary, then the region sites);
     /// `site` names the site it is about.
@@ -120,11 +115,8 @@ impl std::fmt::Display for VoronoiError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             VoronoiError::NoSites => write!(f, "no sites"),
-            VoronoiError::Unsupported { site } => {
-                write!(f, "{site}: point and curve sites are not supported yet (regions are)")
-            }
             VoronoiError::Invalid { site: Some(s), error } => {
-                write!(f, "{s}: {error} (loop 0 is the outer boundary, loop 1 + i region site i)")
+                write!(f, "{s}: {error} (loops: the outer boundary, then regions, curves and points in order)")
             }
             VoronoiError::Invalid { site: None, error } => write!(f, "{error}"),
             VoronoiError::Axis(e) => write!(f, "{e}"),
@@ -214,23 +206,25 @@ pub fn voronoi(sites: &Sites, opts: &VoronoiOptions) -> Result<VoronoiDiagram, V
     if sites.is_empty() {
         return Err(VoronoiError::NoSites);
     }
-    if !sites.points.is_empty() {
-        return Err(VoronoiError::Unsupported { site: SiteId::Point(0) });
-    }
-    if !sites.curves.is_empty() {
-        return Err(VoronoiError::Unsupported { site: SiteId::Curve(0) });
-    }
     let bbox = sites_bbox(sites);
+    // The length every relative quantity is measured against: the sites'
+    // diagonal, or for sites at a single place a unit that keeps the
+    // coordinates' digits.
+    let scale = match bbox.diagonal() {
+        d if d > 0.0 => d,
+        _ => 1.0_f64.max(1e-6 * bbox.min.x.abs().max(bbox.min.y.abs())),
+    };
     let mut loop_sites = vec![SiteId::Frame];
     loop_sites.extend((0..sites.regions.len()).map(SiteId::Region));
-    let tolerance = opts.shape.tolerance_for(bbox.diagonal());
+    loop_sites.extend((0..sites.curves.len()).map(SiteId::Curve));
+    loop_sites.extend((0..sites.points.len()).map(SiteId::Point));
+    let tolerance = opts.shape.tolerance_for(scale);
     let shape_opts = ShapeOptions { tolerance: Some(tolerance), ..opts.shape };
     let build = |outer: Vec<Vertex>| {
         let mut loops = vec![outer];
         loops.extend(sites.regions.iter().cloned());
-        Shape2d::from_bulge_loops(loops, &shape_opts).map_err(|error| VoronoiError::Invalid {
-            site: error_loop(&error).and_then(|l| loop_sites.get(l).copied()),
-            error,
+        Shape2d::from_sites(loops, sites.curves.clone(), sites.points.clone(), &shape_opts).map_err(|error| {
+            VoronoiError::Invalid { site: error_loop(&error).and_then(|l| loop_sites.get(l).copied()), error }
         })
     };
     if let Some(outer) = &opts.boundary {
@@ -238,7 +232,7 @@ pub fn voronoi(sites: &Sites, opts: &VoronoiOptions) -> Result<VoronoiDiagram, V
         let axis = medial_axis(&shape, &opts.axis)?;
         return Ok(VoronoiDiagram::new(shape, loop_sites, axis, false, true));
     }
-    let mut check = FrameCheck::new(&sites.regions, bbox);
+    let mut check = FrameCheck::new(sites, bbox, scale);
     let mut last: Option<VoronoiDiagram> = None;
     loop {
         let framed = build(frame_loop(check.center(), check.radius()))
@@ -271,7 +265,10 @@ fn sites_bbox(sites: &Sites) -> BBox {
         b = b.union(&Loop::new(l.clone()).bbox());
     }
     for c in &sites.curves {
-        for v in c {
+        for w in c.windows(2) {
+            b = b.union(&Element::from_bulge(w[0].p, w[1].p, w[0].bulge).bbox());
+        }
+        if let [v] = c.as_slice() {
             b.add_point(v.p);
         }
     }
@@ -347,8 +344,9 @@ impl VoronoiDiagram {
     }
 
     /// Γ with the sites as holes, the shape whose axis this is (loop 0 is
-    /// Γ, loop `1 + i` is `regions[i]`): evaluate and sample the axis's
-    /// edges against it.
+    /// Γ, then one loop per region, per curve and per point, in that
+    /// order; [`loop_site`](Self::loop_site) names them): evaluate and
+    /// sample the axis's edges against it.
     pub fn shape(&self) -> &Shape2d {
         &self.shape
     }

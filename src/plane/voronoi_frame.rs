@@ -12,7 +12,7 @@
 //! starts large (the frame costs two arcs whatever its size) and rarely
 //! needs to grow.
 
-use super::voronoi::{SiteId, VoronoiDiagram};
+use super::voronoi::{SiteId, Sites, VoronoiDiagram};
 use crate::kernel::{BBox, FilteredKernel, Kernel, Orientation, Point};
 use crate::shape::{Element, Loop, Vertex, MAX_COORDINATE};
 
@@ -53,37 +53,41 @@ pub(crate) struct FrameCheck {
 }
 
 /// A hull sample: the point, its site, its index along the site's
-/// samples, and how many samples the site has.
+/// samples, how many samples the site has, and whether they close up (a
+/// region) or not (a curve, a point).
 #[derive(Debug, Clone, Copy)]
 struct Sample {
     p: Point,
     site: SiteId,
     index: usize,
     count: usize,
+    closed: bool,
 }
 
 impl FrameCheck {
-    /// The first frame for region sites `regions` within `bbox`: a circle
-    /// [`FIRST_RADIUS`] diagonals in radius around the box's centre, or as
-    /// large as the coordinate range allows.
-    pub(crate) fn new(regions: &[Vec<Vertex>], bbox: BBox) -> FrameCheck {
+    /// The first frame for `sites` within `bbox`: a circle
+    /// [`FIRST_RADIUS`] × `scale` (the sites' diagonal) in radius around
+    /// the box's centre, or as large as the coordinate range allows.
+    pub(crate) fn new(sites: &Sites, bbox: BBox, scale: f64) -> FrameCheck {
         let mut samples = Vec::new();
-        for (i, r) in regions.iter().enumerate() {
-            let pts = loop_samples(&Loop::new(r.clone()));
+        let mut add = |site: SiteId, pts: Vec<Point>, closed: bool| {
             let count = pts.len();
-            samples.extend(pts.into_iter().enumerate().map(|(index, p)| Sample {
-                p,
-                site: SiteId::Region(i),
-                index,
-                count,
-            }));
+            samples.extend(pts.into_iter().enumerate().map(|(index, p)| Sample { p, site, index, count, closed }));
+        };
+        for (i, r) in sites.regions.iter().enumerate() {
+            add(SiteId::Region(i), loop_samples(&Loop::new(r.clone())), true);
+        }
+        for (i, c) in sites.curves.iter().enumerate() {
+            add(SiteId::Curve(i), chain_samples(c), false);
+        }
+        for (i, &p) in sites.points.iter().enumerate() {
+            add(SiteId::Point(i), vec![p], false);
         }
         let mut bridges = hull_bridges(samples);
         bridges.sort();
         let center = bbox.min.mid(bbox.max);
-        let diag = bbox.diagonal().max(f64::MIN_POSITIVE);
         let room = MAX_COORDINATE - center.x.abs().max(center.y.abs());
-        FrameCheck { center, radius: (FIRST_RADIUS * diag).min(room).max(diag), room, growths: 0, bridges }
+        FrameCheck { center, radius: (FIRST_RADIUS * scale).min(room).max(scale), room, growths: 0, bridges }
     }
 
     /// Centre of the frame circle, model units.
@@ -133,12 +137,29 @@ fn loop_samples(l: &Loop) -> Vec<Point> {
     let mut out = Vec::with_capacity(l.len());
     for (v, e) in l.vertices().iter().zip(l.elements()) {
         out.push(v.p);
-        if let Element::Arc(a) = e {
-            let steps = ((a.sweep().abs() / ARC_STEP).ceil() as usize).max(2);
-            out.extend((1..steps).map(|k| e.point_at(k as f64 / steps as f64)));
-        }
+        arc_inside(&e, &mut out);
     }
     out
+}
+
+/// [`loop_samples`] of an open chain, its last vertex included.
+fn chain_samples(c: &[Vertex]) -> Vec<Point> {
+    let mut out = Vec::with_capacity(c.len());
+    for w in c.windows(2) {
+        out.push(w[0].p);
+        arc_inside(&Element::from_bulge(w[0].p, w[1].p, w[0].bulge), &mut out);
+    }
+    out.extend(c.last().map(|v| v.p));
+    out
+}
+
+/// Interior points of an arc at most [`ARC_STEP`] apart (none for a
+/// segment).
+fn arc_inside(e: &Element, out: &mut Vec<Point>) {
+    if let Element::Arc(a) = e {
+        let steps = ((a.sweep().abs() / ARC_STEP).ceil() as usize).max(2);
+        out.extend((1..steps).map(|k| e.point_at(k as f64 / steps as f64)));
+    }
 }
 
 /// The site pairs of the convex hull's bridges: consecutive hull points
@@ -168,10 +189,13 @@ fn hull_bridges(mut pts: Vec<Sample>) -> Vec<(SiteId, SiteId)> {
     chain(&mut pts.iter().rev(), &mut hull);
     let n = hull.len();
     let adjacent = |a: &Sample, b: &Sample| {
-        a.site == b.site && {
-            let d = (a.index + a.count - b.index) % a.count;
-            d == 1 || d == a.count - 1
-        }
+        a.site == b.site
+            && if a.closed {
+                let d = (a.index + a.count - b.index) % a.count;
+                d == 1 || d == a.count - 1
+            } else {
+                a.index.abs_diff(b.index) == 1
+            }
     };
     (0..n)
         .map(|i| (hull[i], hull[(i + 1) % n]))
@@ -185,7 +209,7 @@ mod tests {
     use super::*;
 
     fn sample(x: f64, y: f64, site: usize) -> Sample {
-        Sample { p: Point::new(x, y), site: SiteId::Region(site), index: 0, count: 1 }
+        Sample { p: Point::new(x, y), site: SiteId::Region(site), index: 0, count: 1, closed: true }
     }
 
     #[test]
@@ -211,7 +235,7 @@ mod tests {
         let pts = u
             .iter()
             .enumerate()
-            .map(|(index, &(x, y))| Sample { p: Point::new(x, y), site: SiteId::Region(0), index, count })
+            .map(|(index, &(x, y))| Sample { p: Point::new(x, y), site: SiteId::Region(0), index, count, closed: true })
             .collect();
         assert_eq!(hull_bridges(pts), vec![(SiteId::Region(0), SiteId::Region(0))]);
     }

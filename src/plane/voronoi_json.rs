@@ -21,7 +21,9 @@
 //! only edges that were kept (without `--no-self-edges`, all of them).
 //! `frontier` marks a node where an edge runs on to infinity beyond the
 //! library's frame. Edge `sites` number loops as the shape does: loop 0
-//! is the frame, loop 1 + i is region i.
+//! is the frame, then the regions, curves and points in order; an element
+//! on a curve's way back names the curve element it runs over and carries
+//! `"side": "back"`.
 
 use super::axis_json::{conic, node_kind, site_json};
 use super::voronoi::{SiteId, Sites, VoronoiDiagram};

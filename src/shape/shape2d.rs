@@ -261,9 +261,16 @@ impl Shape2d {
         self.reversed[l]
     }
 
-    /// The input element index of stored element `k` of loop `l`.
+    /// The input element index of stored element `k` of loop `l`. For a
+    /// curve site, elements on the way back give the index of the curve
+    /// element they run over (see [`on_way_back`](Self::on_way_back)).
     pub fn input_element_index(&self, l: usize, k: usize) -> usize {
         let n = self.loops[l].len();
+        if self.loops[l].kind() == super::LoopKind::Curve {
+            // The way back (stored elements n/2..n) runs over the curve's
+            // elements in reverse: element n − 1 − k of the curve.
+            return k.min(n - 1 - k);
+        }
         if self.reversed[l] {
             (2 * n - 2 - k) % n
         } else {
@@ -275,11 +282,23 @@ impl Shape2d {
     /// stored element `v`).
     pub fn input_vertex_index(&self, l: usize, v: usize) -> usize {
         let n = self.loops[l].len();
+        if self.loops[l].kind() == super::LoopKind::Curve {
+            // Vertex n/2 is the curve's far end; past it the way back.
+            return v.min(n - v);
+        }
         if self.reversed[l] {
             (2 * n - 1 - v) % n
         } else {
             v
         }
+    }
+
+    /// True when stored element `k` of curve loop `l` is on the curve's way
+    /// back (its right side, walking the curve as given); false for the
+    /// way out and for every other kind of loop.
+    pub fn on_way_back(&self, l: usize, k: usize) -> bool {
+        let lp = &self.loops[l];
+        lp.kind() == super::LoopKind::Curve && 2 * k >= lp.len()
     }
 
     /// What loop `l` bounds: a region or a curve site.
