@@ -21,6 +21,7 @@
 //! polygons).
 
 use super::augment::{augment, AugmentError, Augmentation};
+use super::fan_cut::fan_cut;
 use super::maxdisk::{DiskFinder, Footpoint, MaxDisk};
 use super::maxdisk_star::slide_to_third;
 use super::subshape::{hugged_disk, BoundaryPos, ChainParts, Cut, Piece, Subshape, HUGGED_TIP, SLIVER_END};
@@ -54,7 +55,7 @@ pub fn original_parts(shape: &Shape2d, s: &Subshape) -> usize {
 }
 
 /// [`original_parts`] of `s`, its ranges of the augmented cycle `tour` included.
-fn parts_in(shape: &Shape2d, s: &Ranged, tour: &Tour) -> usize {
+pub(super) fn parts_in(shape: &Shape2d, s: &Ranged, tour: &Tour) -> usize {
     s.spans
         .iter()
         .map(|p| match *p {
@@ -66,7 +67,7 @@ fn parts_in(shape: &Shape2d, s: &Ranged, tour: &Tour) -> usize {
 }
 
 /// Reflex single points of `s` (see [`leaf_size`]), ranges of `tour` included.
-fn points_in(shape: &Shape2d, s: &Ranged, tour: &Tour) -> usize {
+pub(super) fn points_in(shape: &Shape2d, s: &Ranged, tour: &Tour) -> usize {
     s.pieces().filter(|&p| reflex_point(shape, p).is_some()).count()
         + s.spans
             .iter()
@@ -147,7 +148,7 @@ fn pick_point(shape: &Shape2d, s: &Ranged, tour: &Tour, rng: &mut Mix) -> Option
 /// closest point maps back to a fraction a few ulps short of it). Such a
 /// touch is the vertex's, and only at the vertex itself can
 /// [`Subshape::split`] tell which side of an augmenting disk it is on.
-fn position(shape: &Shape2d, f: &Footpoint) -> BoundaryPos {
+pub(super) fn position(shape: &Shape2d, f: &Footpoint) -> BoundaryPos {
     let (l, k) = (f.element.loop_index, f.element.element);
     let lp = &shape.loops()[l];
     let e = lp.element(k);
@@ -183,7 +184,7 @@ fn dividing(
 /// cut there would leave the corner's branch of the axis in neither
 /// subshape, or a branch point and the cut's centre within rounding of
 /// each other.
-fn foot_at_convex_corner(shape: &Shape2d, feet: &[BoundaryPos], r: f64) -> bool {
+pub(super) fn foot_at_convex_corner(shape: &Shape2d, feet: &[BoundaryPos], r: f64) -> bool {
     let tol = shape.tolerance();
     let near = SLIVER_END * tol;
     r > tol
@@ -280,7 +281,7 @@ fn reflex_points(shape: &Shape2d, s: &Subshape) -> Vec<BoundaryPos> {
 }
 
 /// The position of `p` when it is a single-point chain at a reflex vertex.
-fn reflex_point(shape: &Shape2d, p: Piece) -> Option<BoundaryPos> {
+pub(super) fn reflex_point(shape: &Shape2d, p: Piece) -> Option<BoundaryPos> {
     let Piece::Chain { from, to } = p else { return None };
     let reflex = from.vertex(shape).is_some_and(|v| shape.joint(from.loop_index, v) == JointKind::Reflex);
     (reflex && ChainParts::new(shape, from, to).is_empty()).then_some(from)
@@ -403,8 +404,14 @@ fn divide_along<K: AxisKernel>(
             continue;
         }
         let mut rng = Mix(seed_of(seed, &s));
-        let found = (0..ATTEMPTS + (parts as u32) / 4)
+        let points = points_in(shape, &s, tour);
+        let found = (0..ATTEMPTS + ((parts + points) as u32) / 4)
             .find_map(|_| {
+                // Reflex single points are picked as often as parts: a
+                // cloud of point sites has almost nothing else.
+                if rng.below(parts + points) < points {
+                    return fan_cut(finder, &s, parts + points, (&out.cuts, tour), &mut rng);
+                }
                 let (pos, range) = pick_point(shape, &s, tour, &mut rng)?;
                 let at = ElementRef { loop_index: pos.loop_index, element: pos.element };
                 let d = finder.max_disk(at, pos.t);

@@ -14,6 +14,7 @@ pub mod base_case;
 pub mod conquer;
 pub mod divide;
 pub mod draw;
+mod fan_cut;
 pub mod leaf_text;
 pub mod maxdisk;
 pub mod maxdisk_star;

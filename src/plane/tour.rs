@@ -182,6 +182,18 @@ impl Tour {
         }
     }
 
+    /// The piece index of the `k`-th reflex single point of the range
+    /// starting at `from`; `None` past the cycle's end.
+    pub(crate) fn point(&self, from: usize, k: usize) -> Option<usize> {
+        let want = self.points.get(from)? + k;
+        self.points.partition_point(|&c| c <= want).checked_sub(1).filter(|&i| i < self.pieces.len())
+    }
+
+    /// Piece `i` of the cycle.
+    pub(crate) fn piece(&self, i: usize) -> Option<Piece> {
+        self.pieces.get(i).copied()
+    }
+
     /// `s` with every range replaced by its pieces.
     pub(crate) fn expand(&self, s: &Ranged) -> Subshape {
         let mut pieces = Vec::with_capacity(s.spans.len());

@@ -15,7 +15,7 @@
 //! (smaller dx/dy going up) first, which is the tie-break.
 
 use super::box_tree::BoxTree;
-use super::bulge_loop::Loop;
+use super::bulge_loop::{Loop, LoopKind};
 use super::element::Element;
 use super::error::ShapeError;
 use super::validate::ElementIndex;
@@ -190,6 +190,44 @@ fn short_rays(loops: &[Loop], index: &ElementIndex, probes: &[Point]) -> Vec<Opt
     hits
 }
 
+/// [`check_holes`] for shapes with point sites. A point is never hit by
+/// a ray (a zero-length element crosses nothing) and contains nothing, so
+/// the other loops are checked among themselves, and each point's ray is
+/// cast against them only: a cloud of points would otherwise send every
+/// ray through the boxes of all the others.
+fn check_with_points(loops: &[Loop], areas: &[f64]) -> Result<(), ShapeError> {
+    let keep: Vec<usize> = (0..loops.len()).filter(|&l| loops[l].kind() != LoopKind::Point).collect();
+    let sub: Vec<Loop> = keep.iter().map(|&l| loops[l].clone()).collect();
+    let sub_areas: Vec<f64> = keep.iter().map(|&l| areas[l]).collect();
+    let sub_index = ElementIndex::new(&sub);
+    check_holes(&sub, &sub_index, &sub_areas).map_err(|e| match e {
+        ShapeError::HoleOutside { hole, position } => ShapeError::HoleOutside { hole: keep[hole], position },
+        ShapeError::HoleInsideHole { hole, container, position } => {
+            ShapeError::HoleInsideHole { hole: keep[hole], container: keep[container], position }
+        }
+        other => other,
+    })?;
+    // Every other loop lies directly inside loop 0 now: a point's ray that
+    // first crosses loop 0 or a region leaving it is inside that loop, one
+    // that enters a region or meets a curve is beside it, in loop 0.
+    let bad = (0..loops.len()).into_par_iter().filter(|&h| loops[h].kind() == LoopKind::Point).find_map_first(|h| {
+        let p = loops[h].vertices()[0].p;
+        match full_ray(&sub, &sub_index, usize::MAX, p) {
+            None => Some(ShapeError::HoleOutside { hole: h, position: p }),
+            Some(hit) => {
+                let l = hit.loop_index;
+                let leaves = sub[l].kind() == LoopKind::Region && hit.up == (sub_areas[l] > 0.0);
+                match (l, leaves) {
+                    (0, false) => Some(ShapeError::HoleOutside { hole: h, position: p }),
+                    (0, true) | (_, false) => None,
+                    (c, true) => Some(ShapeError::HoleInsideHole { hole: h, container: keep[c], position: p }),
+                }
+            }
+        }
+    });
+    bad.map_or(Ok(()), Err)
+}
+
 #[derive(Clone, Copy, PartialEq)]
 enum Container {
     Outside,
@@ -202,6 +240,9 @@ enum Container {
 pub(crate) fn check_holes(loops: &[Loop], index: &ElementIndex, areas: &[f64]) -> Result<(), ShapeError> {
     if loops.len() < 2 {
         return Ok(());
+    }
+    if loops.iter().any(|l| l.kind() == LoopKind::Point) {
+        return check_with_points(loops, areas);
     }
     let ccw: Vec<bool> = areas.iter().map(|&a| a > 0.0).collect();
     let probes: Vec<Point> = (0..loops.len())
@@ -219,7 +260,7 @@ pub(crate) fn check_holes(loops: &[Loop], index: &ElementIndex, areas: &[f64]) -
             let hit = if h == 0 { None } else { short[h].or_else(|| full_ray(loops, index, h, probes[h])) };
             // Nothing lies inside a curve site: its ray always enters it.
             let leaves = |hit: &Hit| {
-                loops[hit.loop_index].kind() == super::bulge_loop::LoopKind::Region && hit.up == ccw[hit.loop_index]
+                loops[hit.loop_index].kind() == LoopKind::Region && hit.up == ccw[hit.loop_index]
             };
             (probes[h], hit.map(|hit| (hit.loop_index, leaves(&hit))))
         })
