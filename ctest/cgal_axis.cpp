@@ -155,8 +155,10 @@
 
 namespace {
 
+using mt::Failures;
 using mt::Polygon;
 using mt::Pt;
+using mt::seconds_since;
 
 constexpr size_t kNone = std::numeric_limits<size_t>::max();
 
@@ -262,10 +264,6 @@ std::string where(const Disk& d) {
     return std::string(kind_name(d.kind)) + " at (" + mt::show(d.x) + ", " + mt::show(d.y) + ") r " + mt::show(d.r);
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
 // The kept Voronoi vertices of the SDG of `shape`, classified (see the top).
 std::vector<Disk> sdg_vertices(const Loops& shape, double min_clearance, size_t& flat_vertices) {
     mt::Sdg sdg;
@@ -362,15 +360,6 @@ struct Tally {
     double medax_secs = 0.0, sdg_secs = 0.0;
     // The site and topology checks (d) - (f) (holes corpus).
     size_t holes = 0, vertices = 0, site_refs = 0, site_nodes = 0, fan_site_nodes = 0, cycles = 0;
-};
-
-// Prints the first few failures of one kind per polygon.
-struct Failures {
-    const char* what;
-    size_t count = 0;
-    void add(const std::string& detail) {
-        if (++count <= 5) std::cerr << "    " << what << ": " << detail << "\n";
-    }
 };
 
 // Builds the medax shape of `shape`'s loops (all bulges 0).

@@ -8,6 +8,7 @@
 #include <medax.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -105,6 +106,21 @@ inline uint64_t from_env_or_arg(int argc, char** argv, int index, const char* en
     if (const char* e = std::getenv(env)) return std::strtoull(e, nullptr, 0);
     return fallback;
 }
+
+// Seconds since `t` on the steady clock.
+inline double seconds_since(std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// Failures of one kind, counted; the first few printed with their details
+// (the check itself is recorded once, from the count).
+struct Failures {
+    const char* what;
+    size_t count = 0;
+    void add(const std::string& detail) {
+        if (++count <= 5) std::cerr << "    " << what << ": " << detail << "\n";
+    }
+};
 
 inline bool near_rel(double a, double b, double rel, double abs_floor = 0.0) {
     return std::fabs(a - b) <= std::max(rel * std::max(std::fabs(a), std::fabs(b)), abs_floor);
