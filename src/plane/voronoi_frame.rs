@@ -8,24 +8,25 @@
 //! the sites' convex hull (a hull edge that does not run along a site:
 //! between two sites, or across a concavity of one site, which gives an
 //! unbounded self-edge). A vertex beyond Γ shows as a pair of sites meeting
-//! Γ that no bridge joins, so Γ grows until the two multisets agree. It
-//! starts large (the frame costs two arcs whatever its size) and rarely
-//! needs to grow.
+//! Γ that no bridge joins, so Γ grows until the two multisets agree.
 
 use super::voronoi::{SiteId, Sites, VoronoiDiagram};
 use crate::kernel::{BBox, FilteredKernel, Kernel, Orientation, Point};
 use crate::shape::{Element, Loop, Vertex, MAX_COORDINATE};
 
-/// The first frame's radius in sites' diagonals: far enough that the
-/// vertices of nearly collinear rows of sites (a grid's edge) are inside
-/// it at the first try (a growth costs a whole second computation), near
-/// enough that coordinates on it keep the touching tolerance's digits.
-const FIRST_RADIUS: f64 = 4096.0;
+/// The first frame's radius in sites' diagonals. Small: near a frame
+/// far away, the bisectors between sites are nearly parallel where they
+/// meet it (collinear points: parallel lines), and the disks touching two
+/// sites and the frame are ill-conditioned (a frame of 4096 diagonals
+/// broke down on 30 collinear points). Far Voronoi vertices make it grow.
+const FIRST_RADIUS: f64 = 4.0;
 /// How many times the frame grows before the diagram is returned as
-/// incomplete, and by how much each time: up to 2^20 sites' diagonals,
-/// where rounding on the frame (2^20 × 2^-52 of a diagonal) is still far
-/// below the touching tolerance (1e-9 of it by default).
-const GROWTHS: u32 = 2;
+/// incomplete, and by how much each time: up to 4 × 16^4 = 262 144 sites'
+/// diagonals, where rounding on the frame (2^18 × 2^-52 of a diagonal) is
+/// still far below the touching tolerance (1e-9 of it by default). Random
+/// points in a square need about 1000 (their hull has nearly collinear
+/// runs): three computations.
+const GROWTHS: u32 = 4;
 const FACTOR: f64 = 16.0;
 
 /// Arcs of sites are sampled at this angular step (radians) for the hull:
