@@ -77,7 +77,11 @@
 //     within eps of it, where a segment and its own end point count as one
 //     when the disk touches the segment at that end (a brick wall's
 //     vertices on the line through the ends of three rows: medax names the
-//     rows' segments, the SDG their end points).
+//     rows' segments, the SDG their end points). medax joins branch points
+//     whose disks agree within 64 tolerances (multi-branching): vertices
+//     within that distance whose disks touch each other's sites within it
+//     match, their primitives are gathered within it, and edges shorter
+//     than twice it are not compared.
 //     CGAL decides the SDG exactly but constructs its vertices in double:
 //     the circumcentre of nearly collinear points, or of points far from
 //     the origin for their spread, comes out up to ~1e-4 (!) of the
@@ -394,7 +398,11 @@ void check_scene(const Scene& scene, const std::string& tag, const std::string& 
     tally.points += scene.points.size();
     tally.curves += scene.curves.size();
     tally.segments += pr.size() - pr.points;
-    const double diag = pr.diagonal(), eps = 1e-9 * diag, short_edge = 10.0 * eps;
+    // medax joins branch points whose disks agree within 64 tolerances
+    // (multi-branching, thesis 2.2.2.2; tolerance 1e-9 x the sites'
+    // diagonal): an SDG edge shorter than that between two vertices is one
+    // medax node touching all their sites.
+    const double diag = pr.diagonal(), eps = 1e-9 * diag, merged = 64.0 * eps, short_edge = 2.0 * merged;
 
     std::vector<double> points_xy, curves_xyb;
     std::vector<size_t> lengths;
@@ -576,6 +584,11 @@ void check_scene(const Scene& scene, const std::string& tag, const std::string& 
     auto pair_match = [&](const Vertex& m, const Vertex& v) {
         const double pos = std::hypot(m.x - v.x, m.y - v.y);
         if (pos <= eps && std::fabs(m.r - v.r) <= eps) return Match::exact;
+        // Within the merge distance, m's disk touching v's sites within it.
+        if (pos <= merged && std::fabs(m.r - v.r) <= merged &&
+            std::all_of(v.prims.begin(), v.prims.end(),
+                        [&](size_t k) { return std::fabs(pr.distance(k, {m.x, m.y}) - m.r) <= merged; }))
+            return Match::exact;
         if (pos > 1e-6 * diag) return Match::none;
         for (size_t k : v.prims)
             if (std::fabs(pr.distance(k, {m.x, m.y}) - m.r) > eps) return Match::none;
@@ -586,7 +599,7 @@ void check_scene(const Scene& scene, const std::string& tag, const std::string& 
         for (const Vertex& v : from) {
             std::vector<size_t> all;
             Match found = Match::none;
-            for (size_t j : near(to, v.x, v.y, eps)) {
+            for (size_t j : near(to, v.x, v.y, merged)) {
                 const Vertex& w = to[j];
                 all.insert(all.end(), w.prims.begin(), w.prims.end());
                 if ((from_medax ? pair_match(v, w) : pair_match(w, v)) != Match::exact) continue;

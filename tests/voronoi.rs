@@ -637,3 +637,20 @@ fn mixed_sites_points_curves_regions() {
         check_diagram(&sites, &vd, 300, seed);
     }
 }
+
+#[test]
+fn degenerate_scenes_from_the_cgal_cross_check() {
+    // Found by ctest/cgal_voronoi: exactly collinear points and segments on
+    // one line broke down where their parallel bisectors met a frame
+    // thousands of diagonals away; a brick wall of segments and points
+    // broke down at the first frame (a larger one is tried).
+    for (name, seed) in [("collinear_points", 70), ("collinear_segments", 71), ("brick_wall", 72)] {
+        let text =
+            std::fs::read_to_string(format!("{}/tests/data/voronoi_{name}.json", env!("CARGO_MANIFEST_DIR"))).unwrap();
+        let (sites, boundary) = medax::plane::voronoi_json::read_sites(&text).unwrap();
+        assert!(boundary.is_none());
+        let vd = voronoi(&sites, &VoronoiOptions::default()).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!(vd.complete, "{name}");
+        check_diagram(&sites, &vd, 200, seed);
+    }
+}

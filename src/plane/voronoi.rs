@@ -234,15 +234,23 @@ pub fn voronoi(sites: &Sites, opts: &VoronoiOptions) -> Result<VoronoiDiagram, V
     }
     let mut check = FrameCheck::new(sites, bbox, scale);
     let mut last: Option<VoronoiDiagram> = None;
+    let mut first_error = None;
     loop {
-        let framed = build(frame_loop(check.center(), check.radius()))
-            .and_then(|shape| Ok((medial_axis(&shape, &opts.axis)?, shape)));
+        let shape = build(frame_loop(check.center(), check.radius()))?;
         // A larger frame that breaks down leaves the smaller one's
-        // diagram, incomplete, as the answer.
-        let (axis, shape) = match (framed, last) {
-            (Ok(done), _) => done,
+        // diagram, incomplete, as the answer; when the first frame breaks
+        // down, a larger one (other disks, another decomposition) is tried.
+        let axis = match (medial_axis(&shape, &opts.axis), last) {
+            (Ok(axis), _) => axis,
             (Err(_), Some(vd)) => return Ok(vd),
-            (Err(e), None) => return Err(e),
+            (Err(e), None) => {
+                let e = first_error.get_or_insert(VoronoiError::from(e)).clone();
+                if !check.grow() {
+                    return Err(e);
+                }
+                last = None;
+                continue;
+            }
         };
         let vd = VoronoiDiagram::new(shape, loop_sites.clone(), axis, true, false);
         if check.accepts(&vd) {

@@ -259,9 +259,7 @@ pub(crate) fn check_holes(loops: &[Loop], index: &ElementIndex, areas: &[f64]) -
         .map(|h| {
             let hit = if h == 0 { None } else { short[h].or_else(|| full_ray(loops, index, h, probes[h])) };
             // Nothing lies inside a curve site: its ray always enters it.
-            let leaves = |hit: &Hit| {
-                loops[hit.loop_index].kind() == LoopKind::Region && hit.up == ccw[hit.loop_index]
-            };
+            let leaves = |hit: &Hit| loops[hit.loop_index].kind() == LoopKind::Region && hit.up == ccw[hit.loop_index];
             (probes[h], hit.map(|hit| (hit.loop_index, leaves(&hit))))
         })
         .collect();
