@@ -167,7 +167,7 @@ pub struct VoronoiDiagram {
     /// The library's frame is so large that every Voronoi vertex of the
     /// sites lies inside it (checked against the convex hull of the sites:
     /// the edges reaching the frame are exactly those that run to
-    /// infinity). False when growing it to its limit (262 144 of the sites'
+    /// infinity). False when growing it to its limit (2^20 of the sites'
     /// diagonals, or the coordinate range) did not get there: vertices of
     /// nearly collinear sites, very far away; always true for a caller's
     /// boundary.
@@ -239,13 +239,14 @@ pub fn voronoi(sites: &Sites, opts: &VoronoiOptions) -> Result<VoronoiDiagram, V
         let shape = build(frame_loop(check.center(), check.radius()))?;
         // A larger frame that breaks down leaves the smaller one's
         // diagram, incomplete, as the answer; when the first frame breaks
-        // down, a larger one (other disks, another decomposition) is tried.
+        // down, a small one is tried, then larger ones (other disks,
+        // another decomposition).
         let axis = match (medial_axis(&shape, &opts.axis), last) {
             (Ok(axis), _) => axis,
             (Err(_), Some(vd)) => return Ok(vd),
             (Err(e), None) => {
                 let e = first_error.get_or_insert(VoronoiError::from(e)).clone();
-                if !check.grow() {
+                if !check.after_breakdown() {
                     return Err(e);
                 }
                 last = None;

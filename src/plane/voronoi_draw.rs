@@ -6,7 +6,7 @@
 use super::voronoi::{SiteId, VoronoiDiagram};
 use crate::io::svg_writer::{PathCmd, Style, SvgDocument};
 use crate::kernel::Point;
-use crate::shape::shape_path;
+use crate::shape::{shape_path, LoopKind};
 
 impl VoronoiDiagram {
     /// An SVG picture `width_px` wide, edges drawn to chordal tolerance
@@ -34,6 +34,11 @@ impl VoronoiDiagram {
             cmds.drain(..frame_end);
         }
         doc.path(&cmds, &Style::filled("#1f3b73", "#dfe8f6", 1.2, 1.0));
+        // A point site's loop draws nothing: a dot instead.
+        for l in loops.iter().filter(|l| l.kind() == LoopKind::Point) {
+            let p = l.vertices()[0].p;
+            doc.dot([p.x, p.y], 3.0, "#1f3b73");
+        }
         let mut shown = 0;
         for i in self.diagram_edges(self_edges) {
             let e = &self.axis.edges[i];

@@ -14,19 +14,23 @@ use super::voronoi::{SiteId, Sites, VoronoiDiagram};
 use crate::kernel::{BBox, FilteredKernel, Kernel, Orientation, Point};
 use crate::shape::{Element, Loop, Vertex, MAX_COORDINATE};
 
-/// The first frame's radius in sites' diagonals. Small: near a frame
-/// far away, the bisectors between sites are nearly parallel where they
-/// meet it (collinear points: parallel lines), and the disks touching two
-/// sites and the frame are ill-conditioned (a frame of 4096 diagonals
-/// broke down on 30 collinear points). Far Voronoi vertices make it grow.
-const FIRST_RADIUS: f64 = 4.0;
+/// The first frame's radius in sites' diagonals: far enough that the
+/// vertices of random points and of grid-like sites (whose hull has nearly
+/// collinear runs) lie inside at the first try, a growth costing a whole
+/// second computation.
+const FIRST_RADIUS: f64 = 4096.0;
+/// The radius tried when the first frame breaks down, in sites'
+/// diagonals. Near a frame far away, the bisectors of collinear points or
+/// segments are nearly parallel where they meet it, and the disks touching
+/// two of their sites and the frame are ill-conditioned (a frame of 4096
+/// diagonals broke down on 30 collinear points); such sites have no far
+/// vertices, and a small frame keeps the disks well apart.
+const SMALL_RADIUS: f64 = 4.0;
 /// How many times the frame grows before the diagram is returned as
-/// incomplete, and by how much each time: up to 4 × 16^4 = 262 144 sites'
-/// diagonals, where rounding on the frame (2^18 × 2^-52 of a diagonal) is
-/// still far below the touching tolerance (1e-9 of it by default). Random
-/// points in a square need about 1000 (their hull has nearly collinear
-/// runs): three computations.
-const GROWTHS: u32 = 4;
+/// incomplete, and by how much each time: up to 4096 × 16^2 = 2^20 sites'
+/// diagonals, where rounding on the frame (2^20 × 2^-52 of a diagonal) is
+/// still far below the touching tolerance (1e-9 of it by default).
+const GROWTHS: u32 = 2;
 const FACTOR: f64 = 16.0;
 
 /// Arcs of sites are sampled at this angular step (radians) for the hull:
@@ -46,9 +50,13 @@ pub(crate) fn frame_loop(center: Point, radius: f64) -> Vec<Vertex> {
 pub(crate) struct FrameCheck {
     center: Point,
     radius: f64,
+    /// The sites' diagonal (or a unit for sites at one place).
+    scale: f64,
     /// The largest radius whose circle keeps within ±`MAX_COORDINATE`.
     room: f64,
     growths: u32,
+    /// The first frame broke down and the frames start small again.
+    small: bool,
     /// Site pairs of the hull's bridges, each pair sorted, the list sorted.
     bridges: Vec<(SiteId, SiteId)>,
 }
@@ -88,7 +96,15 @@ impl FrameCheck {
         bridges.sort();
         let center = bbox.min.mid(bbox.max);
         let room = MAX_COORDINATE - center.x.abs().max(center.y.abs());
-        FrameCheck { center, radius: (FIRST_RADIUS * scale).min(room).max(scale), room, growths: 0, bridges }
+        FrameCheck {
+            center,
+            radius: (FIRST_RADIUS * scale).min(room).max(scale),
+            scale,
+            room,
+            growths: 0,
+            small: false,
+            bridges,
+        }
     }
 
     /// Centre of the frame circle, model units.
@@ -99,6 +115,18 @@ impl FrameCheck {
     /// Radius of the frame circle, model units.
     pub(crate) fn radius(&self) -> f64 {
         self.radius
+    }
+
+    /// After a breakdown with no diagram yet: the small frame first, then
+    /// growing as usual; false when nothing is left to try.
+    pub(crate) fn after_breakdown(&mut self) -> bool {
+        if self.small {
+            return self.grow();
+        }
+        self.small = true;
+        self.growths = 0;
+        self.radius = (SMALL_RADIUS * self.scale).min(self.room).max(self.scale);
+        true
     }
 
     /// Grows the frame; false when it has reached its limit.
