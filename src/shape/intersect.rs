@@ -11,6 +11,7 @@
 //! constructions (nearly tangent circles, nearly parallel lines).
 
 use super::bulge_loop::Loop;
+use super::bulge_loop::LoopKind;
 use super::element::Element;
 use super::error::ElementRef;
 use crate::kernel::{construct, Point};
@@ -19,21 +20,39 @@ use crate::kernel::{construct, Point};
 /// ignoring the surroundings (64 × `tol`) of the vertices they share as
 /// consecutive elements of one loop; `None` when they keep apart.
 pub(crate) fn element_pair_approach(loops: &[Loop], ra: ElementRef, rb: ElementRef, tol: f64) -> Option<Point> {
-    // A curve loop's way back lies on its way out: only the way out is
-    // checked, as an open chain (its first and last elements do not meet).
-    let back = |r: ElementRef| loops[r.loop_index].twin(r.element).is_some_and(|t| t < r.element);
+    let curve = |r: ElementRef| loops[r.loop_index].kind() == LoopKind::Curve;
+    if curve(ra) || curve(rb) {
+        return curve_pair_approach(loops, ra, rb, tol);
+    }
+    region_pair_approach(loops, ra, rb, tol)
+}
+
+/// [`element_pair_approach`] when one element is on a curve site. A curve
+/// loop's way back lies on its way out: only the way out is checked, as
+/// an open chain (its first and last elements do not meet).
+fn curve_pair_approach(loops: &[Loop], ra: ElementRef, rb: ElementRef, tol: f64) -> Option<Point> {
+    let back = |r: ElementRef| {
+        let l = &loops[r.loop_index];
+        l.kind() == LoopKind::Curve && 2 * r.element >= l.len()
+    };
     if back(ra) || back(rb) {
         return None;
     }
-    if ra.loop_index == rb.loop_index && loops[ra.loop_index].kind() == super::bulge_loop::LoopKind::Curve {
-        let (i, j) = (ra.element.min(rb.element), ra.element.max(rb.element));
-        let (ea, eb) = (loops[ra.loop_index].element(i), loops[ra.loop_index].element(j));
-        let shared: &[Point] = if j == i + 1 { &[ea.end()] } else { &[] };
-        if j == i + 1 && joint_cones_apart(&ea, &eb) {
-            return None;
-        }
-        return approach_point(&ea, &eb, tol, shared, 64.0 * tol);
+    if ra.loop_index != rb.loop_index {
+        return region_pair_approach(loops, ra, rb, tol);
     }
+    let (i, j) = (ra.element.min(rb.element), ra.element.max(rb.element));
+    let (ea, eb) = (loops[ra.loop_index].element(i), loops[ra.loop_index].element(j));
+    let joint = [ea.end()];
+    let shared = if j == i + 1 { &joint[..] } else { &joint[..0] };
+    if j == i + 1 && joint_cones_apart(&ea, &eb) {
+        return None;
+    }
+    approach_point(&ea, &eb, tol, shared, 64.0 * tol)
+}
+
+/// [`element_pair_approach`] for elements of regions (or of two loops).
+fn region_pair_approach(loops: &[Loop], ra: ElementRef, rb: ElementRef, tol: f64) -> Option<Point> {
     let ea = loops[ra.loop_index].element(ra.element);
     let eb = loops[rb.loop_index].element(rb.element);
     let mut shared = [Point::default(); 2];
