@@ -1,6 +1,7 @@
 // Shared pieces of the peer benchmarks (bench_peers, bench_sites): timing,
-// medax from bulge loops through the C API, the loops as integer segments
-// for Boost.Polygon's voronoi, and table cells. Header-only, C++17; pulls
+// medax from bulge loops and medax's Voronoi diagram of sites through the C
+// API, the loops as integer segments for Boost.Polygon's voronoi, and table
+// cells. Header-only, C++17; pulls
 // in Boost.Polygon but not CGAL.
 #ifndef MEDAX_CTEST_BENCH_SUPPORT_HPP
 #define MEDAX_CTEST_BENCH_SUPPORT_HPP
@@ -22,6 +23,7 @@
 namespace mt {
 
 using BoostSegment = boost::polygon::segment_data<int>;
+using BoostPoint = boost::polygon::point_data<int>;
 
 struct Times {
     double wall = 0, cpu = 0;  // seconds; cpu: of the whole process, all threads
@@ -75,6 +77,37 @@ inline mx_status run_medax(const std::vector<double>& xyb, const std::vector<siz
     return st;
 }
 
+// Sites for mx_voronoi_compute as a C caller holds them: point pairs,
+// curve triples and lengths, and optionally the caller's boundary Γ
+// (empty: the library chooses its frame).
+struct VoronoiInput {
+    std::vector<double> points_xy, curves_xyb, boundary_xyb;
+    std::vector<size_t> curve_lengths;
+};
+
+// mx_voronoi_compute on `in` (validation included in the time); `inspect`,
+// when given, sees the diagram before it is freed. The status of the call.
+inline mx_status run_medax_voronoi(const VoronoiInput& in, size_t threads,
+                                   const std::function<void(const mx_voronoi*)>& inspect = {}) {
+    mx_sites sites{};
+    sites.points_xy = in.points_xy.empty() ? nullptr : in.points_xy.data();
+    sites.point_count = in.points_xy.size() / 2;
+    sites.curves_xyb = in.curves_xyb.empty() ? nullptr : in.curves_xyb.data();
+    sites.curves_xyb_len = in.curves_xyb.size();
+    sites.curve_lengths = in.curve_lengths.empty() ? nullptr : in.curve_lengths.data();
+    sites.curve_count = in.curve_lengths.size();
+    sites.boundary_xyb = in.boundary_xyb.empty() ? nullptr : in.boundary_xyb.data();
+    sites.boundary_length = in.boundary_xyb.size() / 3;
+    mx_voronoi_options o;
+    mx_voronoi_options_default(&o);
+    o.threads = threads;
+    mx_voronoi* vd = nullptr;
+    const mx_status st = mx_voronoi_compute(&sites, &o, &vd);
+    if (st == MX_OK && inspect) inspect(vd);
+    mx_voronoi_free(vd);
+    return st;
+}
+
 // Every edge of every loop as an integer segment, coordinates x scale
 // rounded: Boost.Polygon's voronoi takes integers only.
 inline std::vector<BoostSegment> boost_segments(const std::vector<Polygon>& loops, double scale) {
@@ -91,6 +124,12 @@ inline std::vector<BoostSegment> boost_segments(const std::vector<Polygon>& loop
 inline size_t run_boost(const std::vector<BoostSegment>& segments) {
     boost::polygon::voronoi_diagram<double> vd;
     boost::polygon::construct_voronoi(segments.begin(), segments.end(), &vd);
+    return vd.num_vertices();
+}
+
+inline size_t run_boost(const std::vector<BoostPoint>& points) {
+    boost::polygon::voronoi_diagram<double> vd;
+    boost::polygon::construct_voronoi(points.begin(), points.end(), &vd);
     return vd.num_vertices();
 }
 

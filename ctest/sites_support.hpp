@@ -1,8 +1,10 @@
-// Region sites for bench_sites (thesis 2.3.2, Tables 2.1 and 2.2): closed
-// loops of tangent-continuous circular arcs placed in a rectangle Γ. The
-// Voronoi diagram of the sites inside Γ is the medial axis of Γ with the
-// sites as holes (thesis Observation 6), so a scene is a list of bulge
-// loops, Γ first. Header-only, C++17, standard library only.
+// Sites for bench_sites. Region sites (thesis 2.3.2, Tables 2.1 and 2.2):
+// closed loops of tangent-continuous circular arcs placed in a rectangle Γ.
+// The Voronoi diagram of the sites inside Γ is the medial axis of Γ with
+// the sites as holes (thesis Observation 6), so a scene is a list of bulge
+// loops, Γ first. Point and segment sites (tables `points` and `segments`,
+// for mx_voronoi_compute without a boundary): a SiteSet. Header-only,
+// C++17, standard library only.
 #ifndef MEDAX_CTEST_SITES_SUPPORT_HPP
 #define MEDAX_CTEST_SITES_SUPPORT_HPP
 
@@ -206,6 +208,94 @@ inline Scene table22(size_t n, uint64_t seed) {
         const V2 c{static_cast<double>(i % cols) + 0.5 + slack * (2 * u(rng) - 1),
                    static_cast<double>(i / cols) + 0.5 + slack * (2 * u(rng) - 1)};
         s.loops.push_back(oval(c, a, b, r1, 2 * kPi * u(rng)));
+    }
+    return s;
+}
+
+// Point sites or segment sites (never both) in the square [0, side]^2, for
+// mx_voronoi_compute without a boundary (the library chooses its frame).
+struct SiteSet {
+    std::vector<Pt> points;
+    std::vector<std::pair<Pt, Pt>> segments;
+    double side = 0;
+
+    size_t sites() const { return points.size() + segments.size(); }
+    // `x, y` pairs of the points (mx_sites.points_xy).
+    std::vector<double> points_xy() const {
+        std::vector<double> v;
+        v.reserve(2 * points.size());
+        for (const Pt& p : points) v.insert(v.end(), {p.first, p.second});
+        return v;
+    }
+    // `x, y, bulge` triples of the segments as curves of one segment each
+    // (mx_sites.curves_xyb), and the curve lengths (all 2).
+    std::vector<double> curves_xyb() const {
+        std::vector<double> v;
+        v.reserve(6 * segments.size());
+        for (const auto& [a, b] : segments) v.insert(v.end(), {a.first, a.second, 0.0, b.first, b.second, 0.0});
+        return v;
+    }
+    std::vector<size_t> curve_lengths() const { return std::vector<size_t>(segments.size(), 2); }
+    // The segments as two-vertex chains (for sdg_support's insert_chains).
+    std::vector<Polygon> chains() const {
+        std::vector<Polygon> v;
+        v.reserve(segments.size());
+        for (const auto& [a, b] : segments) v.push_back({a, b});
+        return v;
+    }
+    // The sites JSON of `medax voronoi`: {"points": [[x, y], ...]} or
+    // {"curves": [[[x, y, 0], [x, y, 0]], ...]}.
+    bool write_json(const std::string& path) const {
+        std::FILE* f = std::fopen(path.c_str(), "w");
+        if (!f) return false;
+        if (segments.empty()) {
+            std::fputs("{\"points\": [", f);
+            for (size_t i = 0; i < points.size(); ++i)
+                std::fprintf(f, "%s[%.17g, %.17g]", i ? ",\n" : "\n", points[i].first, points[i].second);
+        } else {
+            std::fputs("{\"curves\": [", f);
+            for (size_t i = 0; i < segments.size(); ++i)
+                std::fprintf(f, "%s[[%.17g, %.17g, 0], [%.17g, %.17g, 0]]", i ? ",\n" : "\n",
+                             segments[i].first.first, segments[i].first.second, segments[i].second.first,
+                             segments[i].second.second);
+        }
+        std::fputs("]}\n", f);
+        return std::fclose(f) == 0;
+    }
+};
+
+// `n` points uniformly at random in the square of side √n (one point per
+// unit area, so the density does not change with n).
+inline SiteSet random_points(size_t n, uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    SiteSet s;
+    s.side = std::sqrt(static_cast<double>(n));
+    std::uniform_real_distribution<double> u(0.0, s.side);
+    s.points.reserve(n);
+    for (size_t i = 0; i < n; ++i) {
+        const double x = u(rng);
+        s.points.emplace_back(x, u(rng));
+    }
+    return s;
+}
+
+// `n` disjoint segments, one per unit cell of a near-square grid (row by
+// row): random direction, half-length 0.15 - 0.4, the midpoint jittered so
+// that the segment keeps 0.05 inside its cell (at least 0.1 apart, no
+// shared endpoints); the square round the grid is [0, side]^2.
+inline SiteSet random_segments(size_t n, uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const size_t cols = static_cast<size_t>(std::ceil(std::sqrt(static_cast<double>(n))));
+    SiteSet s;
+    s.side = static_cast<double>(cols);
+    s.segments.reserve(n);
+    for (size_t i = 0; i < n; ++i) {
+        const double h = 0.15 + 0.25 * u(rng), t = 2 * kPi * u(rng);
+        const double dx = h * std::cos(t), dy = h * std::sin(t);
+        const double cx = static_cast<double>(i % cols) + 0.5 + (0.45 - std::abs(dx)) * (2 * u(rng) - 1);
+        const double cy = static_cast<double>(i / cols) + 0.5 + (0.45 - std::abs(dy)) * (2 * u(rng) - 1);
+        s.segments.push_back({{cx - dx, cy - dy}, {cx + dx, cy + dy}});
     }
     return s;
 }
