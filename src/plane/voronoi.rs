@@ -167,7 +167,7 @@ pub struct VoronoiDiagram {
     /// The library's frame is so large that every Voronoi vertex of the
     /// sites lies inside it (checked against the convex hull of the sites:
     /// the edges reaching the frame are exactly those that run to
-    /// infinity). False when growing it to its limit (2^20 of the sites'
+    /// infinity). False when growing it to its limit (2^18 of the sites'
     /// diagonals, or the coordinate range) did not get there: vertices of
     /// nearly collinear sites, very far away; always true for a caller's
     /// boundary.

@@ -14,23 +14,25 @@ use super::voronoi::{SiteId, Sites, VoronoiDiagram};
 use crate::kernel::{BBox, FilteredKernel, Kernel, Orientation, Point};
 use crate::shape::{Element, Loop, Vertex, MAX_COORDINATE};
 
-/// The first frame's radius in sites' diagonals: far enough that the
-/// vertices of random points and of grid-like sites (whose hull has nearly
-/// collinear runs) lie inside at the first try, a growth costing a whole
-/// second computation.
-const FIRST_RADIUS: f64 = 4096.0;
+/// The first frame's radius in sites' diagonals. Disks near the frame
+/// have radii of its size, and constructing the ones that touch two sites
+/// and the frame where the sites' bisectors meet it nearly parallel (the
+/// nearly collinear runs of a hull) loses about radius × 2^-52 × their
+/// condition to rounding, against a tolerance of 1e-9 sites' diagonals:
+/// frames of 256 to 4096 diagonals broke down on random points, 64 did
+/// not (docs/PERFORMANCE.md, stop 13). Farther vertices make it grow.
+const FIRST_RADIUS: f64 = 64.0;
 /// The radius tried when the first frame breaks down, in sites'
-/// diagonals. Near a frame far away, the bisectors of collinear points or
-/// segments are nearly parallel where they meet it, and the disks touching
-/// two of their sites and the frame are ill-conditioned (a frame of 4096
-/// diagonals broke down on 30 collinear points); such sites have no far
-/// vertices, and a small frame keeps the disks well apart.
+/// diagonals: collinear points or segments, whose bisectors are exactly
+/// parallel where they meet the frame, have no far vertices, and a small
+/// frame keeps those disks apart (a frame of 4096 diagonals broke down on
+/// 30 collinear points).
 const SMALL_RADIUS: f64 = 4.0;
 /// How many times the frame grows before the diagram is returned as
-/// incomplete, and by how much each time: up to 4096 × 16^2 = 2^20 sites'
-/// diagonals, where rounding on the frame (2^20 × 2^-52 of a diagonal) is
-/// still far below the touching tolerance (1e-9 of it by default).
-const GROWTHS: u32 = 2;
+/// incomplete, and by how much each time: up to 64 × 16^3 = 2^18 sites'
+/// diagonals. A larger frame that breaks down leaves the diagram of the
+/// last one that did not, marked incomplete.
+const GROWTHS: u32 = 3;
 const FACTOR: f64 = 16.0;
 
 /// Arcs of sites are sampled at this angular step (radians) for the hull:
