@@ -3,7 +3,8 @@
 //! leaf that fails with its pieces and dividing disks (and, for a chain
 //! cut off by one disk, how far each element strays from that disk).
 //! `cargo run --release --example axis_debug -- star|flower N [SEED]` or
-//! `-- plate K [SEED]` or `-- SHAPE.json 0 [SEED]`; `MEDAX_NEAR=x,y` lists the dividing disks near a point;
+//! `-- plate K [SEED]` or `-- SHAPE.json 0 [SEED]` (a shape file, or a Voronoi sites file: the
+//! shape its diagram is computed on first, frame or boundary with the sites as holes); `MEDAX_NEAR=x,y` lists the dividing disks near a point;
 //! `MEDAX_DUMP=DIR` writes each failing leaf for `examples/leaf_replay`.
 use medax::plane::augment::augment;
 use medax::plane::base_case;
@@ -19,7 +20,7 @@ fn main() {
     let shape = match args.get(1).map(String::as_str) {
         Some(path) if path.ends_with(".json") => {
             let text = std::fs::read_to_string(path).expect("readable shape file");
-            Shape2d::from_json_str(&text, &ShapeOptions::default()).expect("valid shape file")
+            medax::plane::voronoi_json::shape_or_sites(&text).expect("a valid shape or sites file")
         }
         kind => {
             let loops = match kind {

@@ -654,3 +654,21 @@ fn degenerate_scenes_from_the_cgal_cross_check() {
         check_diagram(&sites, &vd, 200, seed);
     }
 }
+
+#[test]
+fn the_diagnosis_tools_read_a_sites_file_as_the_diagram_s_first_shape() {
+    use medax::plane::voronoi_json::shape_or_sites;
+    use medax::shape::LoopKind;
+    let text = r#"{"curves": [[[0, 0], [1, 0.2]]], "points": [[0.5, 2]], "regions": [[[3, 0], [4, 0], [4, 1]]]}"#;
+    let shape = shape_or_sites(text).unwrap();
+    let kinds: Vec<LoopKind> = (0..shape.loops().len()).map(|l| shape.kind(l)).collect();
+    assert_eq!(kinds, [LoopKind::Region, LoopKind::Region, LoopKind::Curve, LoopKind::Point]);
+    // The same shape, frame included, as the diagram computes on.
+    let (sites, _) = medax::plane::voronoi_json::read_sites(text).unwrap();
+    assert_eq!(shape.to_json(), vd_of(&sites).shape().to_json());
+    // A given boundary is loop 0; a shape file reads as itself.
+    let bounded = shape_or_sites(r#"{"points": [[1, 1]], "boundary": [[0, 0], [3, 0], [3, 3], [0, 3]]}"#).unwrap();
+    assert_eq!(bounded.loops()[0].vertices().len(), 4);
+    let plain = shape_or_sites(r#"{"loops": [[[0, 0], [3, 0], [3, 3]]]}"#).unwrap();
+    assert_eq!(plain.loops().len(), 1);
+}

@@ -367,6 +367,24 @@ fn locate_foot<P: Slot>(
         Piece::Aux { disk } => Some(disk),
         Piece::Chain { .. } => None,
     };
+    // `m` lies on the fan part's side of the arc direction `d` at one of
+    // its ends (`sign` 1: clockwise from the start, -1: anticlockwise from
+    // the end). The cross product decides, except where it vanishes
+    // because `m` is opposite `d`: at a curve's end the fan is a half turn
+    // (thesis 2.3, zero-area holes), so a disk tangent to one side there
+    // is opposite an arc tangent to the other, and the sign is rounding.
+    // Such an `m` is in the part only when the part is itself a half
+    // turn, i.e. its other end is opposite `d` too.
+    let beside = |d: Point, m: Point, sign: f64, start: Point, end: Point| {
+        let cross = sign * d.cross(m);
+        if cross.abs() > FAN_SLACK || d.dot(m) >= 0.0 {
+            return cross <= FAN_SLACK;
+        }
+        let width = super::augment::cw_offset(start, end);
+        // A part narrower than a half turn whose ends rounding swapped
+        // reads as almost a whole turn: it is empty.
+        (std::f64::consts::PI - FAN_SLACK..1.5 * std::f64::consts::PI).contains(&width)
+    };
     let point = shape.kind(p.loop_index) == crate::shape::LoopKind::Point;
     let holds = |j: usize, at: BoundaryPos| {
         let Some((from, to)) = pieces[j].chain() else { return false };
@@ -381,8 +399,12 @@ fn locate_foot<P: Slot>(
             let (x, w) = (super::augment::cw_offset(a, m), super::augment::cw_offset(a, b));
             return x <= w + FAN_SLACK || x >= std::f64::consts::TAU - FAN_SLACK;
         }
-        let after_ok = to != at || dir(j + 1).is_none_or(|d| d.cross(m) >= -FAN_SLACK);
-        let before_ok = from != at || dir(j + m_len - 1).is_none_or(|d| d.cross(m) <= FAN_SLACK);
+        // The part's ends: the arcs' disks where the chain starts or ends
+        // at the vertex, else the normals of the chain's own elements.
+        let start = if from == at { dir(j + m_len - 1) } else { None }.unwrap_or_else(|| normal_into(shape, at, q));
+        let end = if to == at { dir(j + 1) } else { None }.unwrap_or_else(|| normal_out_of(shape, at, q));
+        let after_ok = to != at || dir(j + 1).is_none_or(|d| beside(d, m, -1.0, start, end));
+        let before_ok = from != at || dir(j + m_len - 1).is_none_or(|d| beside(d, m, 1.0, start, end));
         after_ok && before_ok
     };
     let reps = [Some(p), p.other_way(shape)];
@@ -394,6 +416,22 @@ fn locate_foot<P: Slot>(
     reps.into_iter()
         .flatten()
         .find_map(|r| every_location(pieces, shape, r).into_iter().find(|&(j, _)| holds(j, r)).map(|(j, k)| (j, k, r)))
+}
+
+/// The left normal, at vertex position `at` (point `q`), of the element
+/// that arrives there: where a chain ending at `at` has its fan part start.
+fn normal_into(shape: &Shape2d, at: BoundaryPos, q: Point) -> Point {
+    let lp = &shape.loops()[at.loop_index];
+    let e = if at.t == 0.0 { (at.element + lp.len() - 1) % lp.len() } else { at.element };
+    lp.element(e).left_normal_at(q)
+}
+
+/// The left normal, at vertex position `at` (point `q`), of the element
+/// that leaves there: where a chain starting at `at` has its fan part end.
+fn normal_out_of(shape: &Shape2d, at: BoundaryPos, q: Point) -> Point {
+    let lp = &shape.loops()[at.loop_index];
+    let e = if at.t == 1.0 { (at.element + 1) % lp.len() } else { at.element };
+    lp.element(e).left_normal_at(q)
 }
 
 /// Every chain of `pieces` holding `p` and where along it: those that
@@ -551,5 +589,48 @@ mod tests {
             assert!((len - perimeter).abs() < 1e-9 * perimeter, "shape {si}: {len} vs {perimeter}");
         }
         assert!(cuts_done > 60, "{cuts_done}");
+    }
+
+    /// A disk tangent to one side of a segment site at its end, met by the
+    /// end's fan (a half turn) where an arc tangent to the other side
+    /// starts a chain: the disk is opposite that arc, the cross product is
+    /// 0, and the footpoint must still go to the part of the fan it lies
+    /// in, however the end is written (4000 random segments broke down
+    /// with a leaf holding the whole segment between two disks at its end).
+    #[test]
+    fn a_disk_opposite_an_arc_at_a_curve_end_goes_to_its_own_part() {
+        let v = |x: f64, y: f64| Vertex { p: Point::new(x, y), bulge: 0.0 };
+        let square = vec![v(-10.0, -10.0), v(10.0, -10.0), v(10.0, 10.0), v(-10.0, 10.0)];
+        let shape =
+            Shape2d::from_sites(vec![square], vec![vec![v(0.0, 0.0), v(1.0, 0.0)]], vec![], &ShapeOptions::default())
+                .unwrap();
+        let at = |l: usize, element: usize, t: f64| BoundaryPos { loop_index: l, element, t };
+        // The end (0, 0): its fan turns clockwise from down (the way
+        // back's normal) through left to up (the way out's normal).
+        let cuts = [
+            Cut { center: Point::new(0.0, 2.0), radius: 2.0 },
+            Cut { center: Point::new(-1.0, -1.0), radius: 2f64.sqrt() },
+            Cut { center: Point::new(0.0, -3.0), radius: 3.0 },
+        ];
+        // The way out starts after the arc of disk 0 (up, the fan's end);
+        // the way back ends before the arc of disk 1 (down and left).
+        let s = Subshape {
+            pieces: vec![
+                Piece::Aux { disk: 0 },
+                Piece::Chain { from: at(1, 0, 0.0), to: at(1, 1, 1.0) },
+                Piece::Aux { disk: 1 },
+                Piece::Chain { from: at(0, 0, 0.2), to: at(0, 0, 0.8) },
+            ],
+        };
+        // Disk 2 touches the end from straight below: the fan's start, in
+        // the part between the way back and disk 1.
+        for end in [at(1, 0, 0.0), at(1, 1, 1.0)] {
+            let parts = s.split(&shape, 2, &[end, at(0, 0, 0.5)], cuts[2].center, &cuts).unwrap();
+            let single = Piece::Chain { from: at(1, 1, 1.0), to: at(1, 1, 1.0) };
+            assert!(parts.iter().any(|p| p.pieces.contains(&single)), "{end:?}: {parts:?}");
+            let whole = Piece::Chain { from: at(1, 0, 0.0), to: at(1, 1, 1.0) };
+            let with_whole: Vec<_> = parts.iter().filter(|p| p.pieces.contains(&whole)).collect();
+            assert!(with_whole.len() == 1 && !with_whole[0].pieces.contains(&Piece::Aux { disk: 1 }), "{parts:?}");
+        }
     }
 }

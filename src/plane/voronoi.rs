@@ -203,6 +203,32 @@ pub struct VoronoiDiagram {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn voronoi(sites: &Sites, opts: &VoronoiOptions) -> Result<VoronoiDiagram, VoronoiError> {
+    match voronoi_from(sites, opts, false)? {
+        Computed::Diagram(vd) => Ok(*vd),
+        Computed::FirstShape(_) => unreachable!("only asked for with `shape_only`"),
+    }
+}
+
+/// The shape whose axis [`voronoi`] computes first: the caller's boundary
+/// or the library's first frame, with the sites as holes. A breakdown
+/// deep inside a large diagram is reproduced on it by the diagnosis tools
+/// (`examples/axis_debug`, `examples/leaf_replay`) and by tests.
+#[doc(hidden)]
+pub fn first_shape(sites: &Sites, opts: &VoronoiOptions) -> Result<Shape2d, VoronoiError> {
+    match voronoi_from(sites, opts, true)? {
+        Computed::FirstShape(shape) => Ok(shape),
+        Computed::Diagram(_) => unreachable!("`shape_only` returns before any axis"),
+    }
+}
+
+/// What [`voronoi_from`] stopped at.
+enum Computed {
+    Diagram(Box<VoronoiDiagram>),
+    FirstShape(Shape2d),
+}
+
+/// [`voronoi`], or with `shape_only` the first shape it would compute on.
+fn voronoi_from(sites: &Sites, opts: &VoronoiOptions, shape_only: bool) -> Result<Computed, VoronoiError> {
     if sites.is_empty() {
         return Err(VoronoiError::NoSites);
     }
@@ -229,21 +255,27 @@ pub fn voronoi(sites: &Sites, opts: &VoronoiOptions) -> Result<VoronoiDiagram, V
     };
     if let Some(outer) = &opts.boundary {
         let shape = build(outer.clone())?;
+        if shape_only {
+            return Ok(Computed::FirstShape(shape));
+        }
         let axis = medial_axis(&shape, &opts.axis)?;
-        return Ok(VoronoiDiagram::new(shape, loop_sites, axis, false, true));
+        return Ok(Computed::Diagram(Box::new(VoronoiDiagram::new(shape, loop_sites, axis, false, true))));
     }
     let mut check = FrameCheck::new(sites, bbox, scale);
     let mut last: Option<VoronoiDiagram> = None;
     let mut first_error = None;
     loop {
         let shape = build(frame_loop(check.center(), check.radius()))?;
+        if shape_only {
+            return Ok(Computed::FirstShape(shape));
+        }
         // A larger frame that breaks down leaves the smaller one's
         // diagram, incomplete, as the answer; when the first frame breaks
         // down, a small one is tried, then larger ones (other disks,
         // another decomposition).
         let axis = match (medial_axis(&shape, &opts.axis), last) {
             (Ok(axis), _) => axis,
-            (Err(_), Some(vd)) => return Ok(vd),
+            (Err(_), Some(vd)) => return Ok(Computed::Diagram(Box::new(vd))),
             (Err(e), None) => {
                 let e = first_error.get_or_insert(VoronoiError::from(e)).clone();
                 if !check.after_breakdown() {
@@ -255,10 +287,10 @@ pub fn voronoi(sites: &Sites, opts: &VoronoiOptions) -> Result<VoronoiDiagram, V
         };
         let vd = VoronoiDiagram::new(shape, loop_sites.clone(), axis, true, false);
         if check.accepts(&vd) {
-            return Ok(VoronoiDiagram { complete: true, ..vd });
+            return Ok(Computed::Diagram(Box::new(VoronoiDiagram { complete: true, ..vd })));
         }
         if !check.grow() {
-            return Ok(vd);
+            return Ok(Computed::Diagram(Box::new(vd)));
         }
         last = Some(vd);
     }

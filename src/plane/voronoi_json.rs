@@ -48,6 +48,22 @@ pub fn read_sites(text: &str) -> Result<(Sites, Option<Vec<Vertex>>), ParseError
     Ok((sites, raw.boundary.map(vertices)))
 }
 
+/// The shape the diagnosis tools (`examples/axis_debug`,
+/// `examples/leaf_replay`) and tests work on, from a shape file
+/// (`{"loops": ...}`) or a sites file, which becomes the shape its diagram
+/// is computed on first ([`super::voronoi::first_shape`]): curves and
+/// points are holes of zero area, which a shape file cannot express.
+#[doc(hidden)]
+pub fn shape_or_sites(text: &str) -> Result<crate::shape::Shape2d, String> {
+    use crate::shape::{Shape2d, ShapeOptions};
+    if let Ok(shape) = Shape2d::from_json_str(text, &ShapeOptions::default()) {
+        return Ok(shape);
+    }
+    let (sites, boundary) = read_sites(text).map_err(|e| e.to_string())?;
+    let opts = super::voronoi::VoronoiOptions { boundary, ..Default::default() };
+    super::voronoi::first_shape(&sites, &opts).map_err(|e| e.to_string())
+}
+
 /// A site as JSON.
 pub fn site_id_json(s: SiteId) -> Value {
     match s {
