@@ -672,3 +672,21 @@ fn the_diagnosis_tools_read_a_sites_file_as_the_diagram_s_first_shape() {
     let plain = shape_or_sites(r#"{"loops": [[[0, 0], [3, 0], [3, 3]]]}"#).unwrap();
     assert_eq!(plain.loops().len(), 1);
 }
+
+#[test]
+fn many_random_segments() {
+    // 1 500 random disjoint segments broke down ("no branch point in a
+    // pocket": a footpoint at a segment's end exactly opposite the arc
+    // before its chain went to the wrong part of the half-turn fan); so
+    // did 1 000 of them in a square 4 diagonals wide, in a corner.
+    for name in ["random_segments_1500", "random_segments_1000_square_4_diagonals"] {
+        let text =
+            std::fs::read_to_string(format!("{}/tests/data/voronoi_{name}.json", env!("CARGO_MANIFEST_DIR"))).unwrap();
+        let (sites, boundary) = medax::plane::voronoi_json::read_sites(&text).unwrap();
+        let opts = VoronoiOptions { boundary, ..VoronoiOptions::default() };
+        let vd = voronoi(&sites, &opts).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!(vd.complete, "{name}");
+        check(vd.shape(), &vd.axis, 20, 80);
+        assert!(vd.regions.iter().all(|r| r.walks == 1), "{name}");
+    }
+}
