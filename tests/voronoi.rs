@@ -690,3 +690,45 @@ fn many_random_segments() {
         assert!(vd.regions.iter().all(|r| r.walks == 1), "{name}");
     }
 }
+
+#[test]
+fn review_findings_on_the_frame() {
+    // A region given with its first vertex repeated at the end is the
+    // same region: complete at the first frame, as without the repeat.
+    let mut closed = rect(0.0, 0.0, 1.0, 1.0);
+    closed.push(closed[0]);
+    let sites = Sites { regions: vec![closed], points: vec![Point::new(3.0, 0.5)], ..Sites::default() };
+    assert!(vd_of(&sites).complete);
+    // A point a hair inside the common tangent of two circles: its region
+    // is bounded by a vertex millions of diagonals away, beyond the
+    // frame's limit, and the arcs' sampled hull (which it is outside of)
+    // must not make the diagram claim completeness.
+    let (r1, r2, d): (f64, f64, f64) = (1.0, 2.0, 10.0);
+    let (sin, cos) = ((r2 - r1) / d, (1.0 - ((r2 - r1) / d).powi(2)).sqrt());
+    // Upper common tangent: points p with n . p = r1 (circle 1 at the
+    // origin), n = (-sin, cos).
+    let n = Point::new(-sin, cos);
+    let x = 5.0;
+    let on = (r1 + n.x * -x) / n.y;
+    for (delta, complete) in [(2e-6, false), (0.5, true)] {
+        let sites = Sites {
+            regions: vec![circle(0.0, 0.0, r1), circle(d, 0.0, r2)],
+            points: vec![Point::new(x, on - delta / n.y)],
+            ..Sites::default()
+        };
+        let vd = vd_of(&sites);
+        assert_eq!(vd.complete, complete, "delta {delta}");
+        check(vd.shape(), &vd.axis, 50, 81);
+    }
+    // Sites far out in the coordinate range: the frame stays inside it.
+    let far = points(&[(0.0, 0.0), (9e8, 0.0), (4.5e8, 2.7e8 + 1.0)]);
+    let vd = voronoi(&far, &VoronoiOptions::default()).expect("frame within the coordinate range");
+    assert!(vd.shape().bbox().max.x <= 1e9 && vd.shape().bbox().min.x >= -1e9);
+    // Non-finite coordinates and an empty curve name their site.
+    let inf = points(&[(0.0, 0.0), (f64::INFINITY, 1.0), (1.0, 2.0)]);
+    let e = voronoi(&inf, &VoronoiOptions::default()).unwrap_err();
+    assert!(matches!(e, VoronoiError::Invalid { site: Some(SiteId::Point(1)), .. }), "{e}");
+    let empty = Sites { curves: vec![vec![]], points: vec![Point::new(0.0, 0.0)], ..Sites::default() };
+    let e = voronoi(&empty, &VoronoiOptions::default()).unwrap_err();
+    assert!(matches!(e, VoronoiError::Invalid { site: Some(SiteId::Curve(0)), .. }), "{e}");
+}

@@ -534,10 +534,12 @@ pub unsafe extern "C" fn mx_voronoi_nearest_site(
                     format!("point ({x}, {y}) is not finite"),
                 ));
             }
-            let (s, d, f) = v
-                .diagram
-                .nearest_site(p)
-                .ok_or_else(|| FfiError::new(mx_status::MX_ERR_EMPTY, "the diagram has no sites"))?;
+            let (s, d, f) = v.diagram.nearest_site(p).ok_or_else(|| {
+                FfiError::new(
+                    mx_status::MX_ERR_INVALID_ARGUMENT,
+                    format!("point ({x}, {y}) is too far from the sites for a distance in f64"),
+                )
+            })?;
             Ok(mx_nearest_site { site: site_c(s), distance: d, foot_x: f.x, foot_y: f.y })
         })
     }

@@ -232,13 +232,18 @@ fn voronoi_from(sites: &Sites, opts: &VoronoiOptions, shape_only: bool) -> Resul
     if sites.is_empty() {
         return Err(VoronoiError::NoSites);
     }
+    check_finite(sites)?;
     let bbox = sites_bbox(sites);
     // The length every relative quantity is measured against: the sites'
     // diagonal, or for sites at a single place a unit that keeps the
     // coordinates' digits.
+    // (Non-finite coordinates or an empty curve give a unit here, so that
+    // validation names the site rather than the tolerance derived from
+    // them.)
     let scale = match bbox.diagonal() {
-        d if d > 0.0 => d,
-        _ => 1.0_f64.max(1e-6 * bbox.min.x.abs().max(bbox.min.y.abs())),
+        d if d > 0.0 && d.is_finite() => d,
+        _ if bbox.min.is_finite() => 1.0_f64.max(1e-6 * bbox.min.x.abs().max(bbox.min.y.abs())),
+        _ => 1.0,
     };
     let mut loop_sites = vec![SiteId::Frame];
     loop_sites.extend((0..sites.regions.len()).map(SiteId::Region));
@@ -261,7 +266,7 @@ fn voronoi_from(sites: &Sites, opts: &VoronoiOptions, shape_only: bool) -> Resul
         let axis = medial_axis(&shape, &opts.axis)?;
         return Ok(Computed::Diagram(Box::new(VoronoiDiagram::new(shape, loop_sites, axis, false, true))));
     }
-    let mut check = FrameCheck::new(sites, bbox, scale);
+    let mut check = FrameCheck::new(sites, bbox, scale, tolerance);
     let mut last: Option<VoronoiDiagram> = None;
     let mut first_error = None;
     loop {
@@ -293,6 +298,31 @@ fn voronoi_from(sites: &Sites, opts: &VoronoiOptions, shape_only: bool) -> Resul
             return Ok(Computed::Diagram(Box::new(vd)));
         }
         last = Some(vd);
+    }
+}
+
+/// Non-finite numbers are reported for their site before they reach the
+/// frame (whose centre and size come from the sites).
+fn check_finite(sites: &Sites) -> Result<(), VoronoiError> {
+    let bad = |l: usize, site: SiteId, k: usize| {
+        let at = crate::shape::ElementRef { loop_index: l, element: k };
+        Err(VoronoiError::Invalid { site: Some(site), error: ShapeError::NonFinite { at } })
+    };
+    let finite = |v: &Vertex| v.p.is_finite() && v.bulge.is_finite();
+    let (nr, nc) = (sites.regions.len(), sites.curves.len());
+    for (i, r) in sites.regions.iter().enumerate() {
+        if let Some(k) = r.iter().position(|v| !finite(v)) {
+            return bad(1 + i, SiteId::Region(i), k);
+        }
+    }
+    for (i, c) in sites.curves.iter().enumerate() {
+        if let Some(k) = c.iter().position(|v| !finite(v)) {
+            return bad(1 + nr + i, SiteId::Curve(i), k);
+        }
+    }
+    match sites.points.iter().position(|p| !p.is_finite()) {
+        Some(i) => bad(1 + nr + nc + i, SiteId::Point(i), 0),
+        None => Ok(()),
     }
 }
 
@@ -367,7 +397,17 @@ impl VoronoiDiagram {
                 *f = *a && *b;
             }
         }
-        let regions = site_regions(&axis, &edges, &loop_sites, auto_frame);
+        // The direction an edge leaves a node in, from a point a little
+        // way along it (its ends are the nodes themselves).
+        let toward = |i: usize, from_start: bool| {
+            let e = &axis.edges[i];
+            let (node, s) = if from_start { (e.from, 1e-3) } else { (e.to, 1.0 - 1e-3) };
+            let at = axis.nodes[node].point;
+            let (a, b) = (axis.nodes[e.from].point, axis.nodes[e.to].point);
+            let near = e.eval(&shape, &axis.nodes, s).map_or(a + (b - a) * s, |(c, _)| c);
+            (near - at).unit()
+        };
+        let regions = site_regions(&axis, &edges, &loop_sites, auto_frame, toward);
         let first_site_loop = usize::from(auto_frame);
         let site_index = ChainTree::new(&shape.loops()[first_site_loop..]);
         VoronoiDiagram {

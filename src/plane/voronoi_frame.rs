@@ -59,8 +59,12 @@ pub(crate) struct FrameCheck {
     growths: u32,
     /// The first frame broke down and the frames start small again.
     small: bool,
-    /// Site pairs of the hull's bridges, each pair sorted, the list sorted.
-    bridges: Vec<(SiteId, SiteId)>,
+    /// Site pairs of the hull's bridges, each pair sorted, the list
+    /// sorted: of the hull through points on the arcs, and of the hull
+    /// through their tangent polygons' corners.
+    bridges: [Vec<(SiteId, SiteId)>; 2],
+    /// The radius whose frame broke down, never tried again.
+    failed: Option<f64>,
 }
 
 /// A hull sample: the point, its site, its index along the site's
@@ -79,34 +83,40 @@ impl FrameCheck {
     /// The first frame for `sites` within `bbox`: a circle
     /// [`FIRST_RADIUS`] × `scale` (the sites' diagonal) in radius around
     /// the box's centre, or as large as the coordinate range allows.
-    pub(crate) fn new(sites: &Sites, bbox: BBox, scale: f64) -> FrameCheck {
-        let mut samples = Vec::new();
-        let mut add = |site: SiteId, pts: Vec<Point>, closed: bool| {
-            let count = pts.len();
-            samples.extend(pts.into_iter().enumerate().map(|(index, p)| Sample { p, site, index, count, closed }));
-        };
-        for (i, r) in sites.regions.iter().enumerate() {
-            add(SiteId::Region(i), loop_samples(&Loop::new(r.clone())), true);
-        }
-        for (i, c) in sites.curves.iter().enumerate() {
-            add(SiteId::Curve(i), chain_samples(c), false);
-        }
-        for (i, &p) in sites.points.iter().enumerate() {
-            add(SiteId::Point(i), vec![p], false);
-        }
-        let mut bridges = hull_bridges(samples);
-        bridges.sort();
+    pub(crate) fn new(sites: &Sites, bbox: BBox, scale: f64, tol: f64) -> FrameCheck {
+        // Arcs are sampled on them (the chords' hull lies inside the true
+        // one) and at the corners of their tangent polygons (outside it):
+        // a site within a sagitta of the hull is on one hull and not the
+        // other, and only agreeing with both counts.
+        let bridges = [false, true].map(|outer| {
+            let mut samples = Vec::new();
+            let mut add = |site: SiteId, pts: Vec<Point>, closed: bool| {
+                let count = pts.len();
+                samples.extend(pts.into_iter().enumerate().map(|(index, p)| Sample { p, site, index, count, closed }));
+            };
+            for (i, r) in sites.regions.iter().enumerate() {
+                // As the shape stores it: a closing vertex repeating the
+                // first is no vertex.
+                let mut r = r.clone();
+                if r.len() > 2 && r.first().map(|v| v.p) == r.last().map(|v| v.p) {
+                    r.pop();
+                }
+                add(SiteId::Region(i), loop_samples(&Loop::new(r), outer), true);
+            }
+            for (i, c) in sites.curves.iter().enumerate() {
+                add(SiteId::Curve(i), chain_samples(c, outer), false);
+            }
+            for (i, &p) in sites.points.iter().enumerate() {
+                add(SiteId::Point(i), vec![p], false);
+            }
+            let mut b = hull_bridges(samples, tol);
+            b.sort();
+            b
+        });
         let center = bbox.min.mid(bbox.max);
-        let room = MAX_COORDINATE - center.x.abs().max(center.y.abs());
-        FrameCheck {
-            center,
-            radius: (FIRST_RADIUS * scale).min(room).max(scale),
-            scale,
-            room,
-            growths: 0,
-            small: false,
-            bridges,
-        }
+        let room = (MAX_COORDINATE - center.x.abs().max(center.y.abs())).max(0.0);
+        let radius = (FIRST_RADIUS * scale).min(room);
+        FrameCheck { center, radius, scale, room, growths: 0, small: false, failed: None, bridges }
     }
 
     /// Centre of the frame circle, model units.
@@ -122,23 +132,30 @@ impl FrameCheck {
     /// After a breakdown with no diagram yet: the small frame first, then
     /// growing as usual; false when nothing is left to try.
     pub(crate) fn after_breakdown(&mut self) -> bool {
+        self.failed.get_or_insert(self.radius);
         if self.small {
             return self.grow();
         }
         self.small = true;
         self.growths = 0;
-        self.radius = (SMALL_RADIUS * self.scale).min(self.room).max(self.scale);
+        self.radius = (SMALL_RADIUS * self.scale).min(self.room);
         true
     }
 
-    /// Grows the frame; false when it has reached its limit.
+    /// Grows the frame, past the radius that broke down (the same frame
+    /// gives the same disks and breaks down again); false when it has
+    /// reached its limit.
     pub(crate) fn grow(&mut self) -> bool {
-        if self.growths == GROWTHS || self.radius * FACTOR > self.room {
-            return false;
+        loop {
+            if self.growths == GROWTHS || self.radius * FACTOR > self.room {
+                return false;
+            }
+            self.growths += 1;
+            self.radius *= FACTOR;
+            if self.failed != Some(self.radius) {
+                return true;
+            }
         }
-        self.growths += 1;
-        self.radius *= FACTOR;
-        true
     }
 
     /// True when the edges between sites that reach the frame pair the
@@ -158,45 +175,60 @@ impl FrameCheck {
             }
         }
         reaching.sort();
-        reaching == self.bridges
+        self.bridges.iter().all(|b| *b == reaching)
     }
 }
 
 /// Points along a loop in order: its vertices and, on every arc, interior
-/// points at most [`ARC_STEP`] apart in angle (at least one).
-fn loop_samples(l: &Loop) -> Vec<Point> {
+/// points at most [`ARC_STEP`] apart in angle (at least one), on the arc
+/// or, when `outer`, at the corners of its tangent polygon.
+fn loop_samples(l: &Loop, outer: bool) -> Vec<Point> {
     let mut out = Vec::with_capacity(l.len());
     for (v, e) in l.vertices().iter().zip(l.elements()) {
         out.push(v.p);
-        arc_inside(&e, &mut out);
+        arc_inside(&e, outer, &mut out);
     }
     out
 }
 
 /// [`loop_samples`] of an open chain, its last vertex included.
-fn chain_samples(c: &[Vertex]) -> Vec<Point> {
+fn chain_samples(c: &[Vertex], outer: bool) -> Vec<Point> {
     let mut out = Vec::with_capacity(c.len());
     for w in c.windows(2) {
         out.push(w[0].p);
-        arc_inside(&Element::from_bulge(w[0].p, w[1].p, w[0].bulge), &mut out);
+        arc_inside(&Element::from_bulge(w[0].p, w[1].p, w[0].bulge), outer, &mut out);
     }
     out.extend(c.last().map(|v| v.p));
     out
 }
 
-/// Interior points of an arc at most [`ARC_STEP`] apart (none for a
-/// segment).
-fn arc_inside(e: &Element, out: &mut Vec<Point>) {
-    if let Element::Arc(a) = e {
-        let steps = ((a.sweep().abs() / ARC_STEP).ceil() as usize).max(2);
-        out.extend((1..steps).map(|k| e.point_at(k as f64 / steps as f64)));
+/// Interior samples of an arc at most [`ARC_STEP`] apart (none for a
+/// segment): points on it, or when `outer` the corners of the tangent
+/// polygon through those points and the ends (each outside the arc, on
+/// its convex side, so their hull holds it).
+fn arc_inside(e: &Element, outer: bool, out: &mut Vec<Point>) {
+    let Element::Arc(a) = e else { return };
+    let steps = ((a.sweep().abs() / ARC_STEP).ceil() as usize).max(2);
+    let at = |f: f64| e.point_at(f);
+    if !outer {
+        out.extend((1..steps).map(|k| at(k as f64 / steps as f64)));
+        return;
     }
+    // Corner between samples k and k + 1: on the bisecting ray from the
+    // centre at radius r / cos(half the step).
+    let half = 0.5 * a.sweep().abs() / steps as f64;
+    let reach = a.radius / half.cos();
+    out.extend((0..steps).map(|k| {
+        let mid = at((k as f64 + 0.5) / steps as f64);
+        a.center + (mid - a.center).unit() * reach
+    }));
 }
 
 /// The site pairs of the convex hull's bridges: consecutive hull points
-/// not next to each other along one site. Collinear points on the hull are
+/// not next to each other along one site (within `tol`, model units). Collinear points on the hull are
 /// kept (each is the end of an unbounded edge), with exact orientations.
-fn hull_bridges(mut pts: Vec<Sample>) -> Vec<(SiteId, SiteId)> {
+fn hull_bridges(samples: Vec<Sample>, tol: f64) -> Vec<(SiteId, SiteId)> {
+    let mut pts = samples.clone();
     pts.sort_by(|a, b| a.p.x.total_cmp(&b.p.x).then(a.p.y.total_cmp(&b.p.y)));
     pts.dedup_by(|a, b| a.p == b.p);
     if pts.len() < 2 {
@@ -218,19 +250,51 @@ fn hull_bridges(mut pts: Vec<Sample>) -> Vec<(SiteId, SiteId)> {
     };
     chain(&mut pts.iter(), &mut hull);
     chain(&mut pts.iter().rev(), &mut hull);
-    let n = hull.len();
-    let adjacent = |a: &Sample, b: &Sample| {
-        a.site == b.site
-            && if a.closed {
-                let d = (a.index + a.count - b.index) % a.count;
-                d == 1 || d == a.count - 1
+    // Where each site's samples start in `samples` (they are in site order).
+    let first = |a: &Sample| samples.iter().position(|s| s.site == a.site).unwrap_or(0);
+    // Two hull points of one site run along it when every sample between
+    // them, one way or the other round the site, lies within `tol` of the
+    // hull edge: samples a rounding off the hull (a vertex between two
+    // tangent-polygon corners) are no concavity.
+    let along = |a: &Sample, b: &Sample| {
+        if a.site != b.site {
+            return false;
+        }
+        let base = first(a);
+        let (u, v) = (a.p, b.p);
+        let off = |i: usize| {
+            let q = samples[base + i].p;
+            let d = v - u;
+            let len = d.norm();
+            if len > 0.0 {
+                d.cross(q - u).abs() / len
             } else {
-                a.index.abs_diff(b.index) == 1
+                q.dist(u)
             }
+        };
+        let clear = |from: usize, to: usize, step: usize| {
+            let mut i = from;
+            loop {
+                i = (i + step) % a.count;
+                if i == to {
+                    return true;
+                }
+                if off(i) > tol {
+                    return false;
+                }
+            }
+        };
+        if a.closed {
+            clear(a.index, b.index, 1) || clear(a.index, b.index, a.count - 1)
+        } else {
+            let (lo, hi) = (a.index.min(b.index), a.index.max(b.index));
+            clear(lo, hi, 1)
+        }
     };
+    let n = hull.len();
     (0..n)
         .map(|i| (hull[i], hull[(i + 1) % n]))
-        .filter(|(a, b)| !adjacent(a, b))
+        .filter(|(a, b)| !along(a, b))
         .map(|(a, b)| (a.site.min(b.site), a.site.max(b.site)))
         .collect()
 }
@@ -246,16 +310,37 @@ mod tests {
     #[test]
     fn bridges_of_points_in_convex_and_collinear_position() {
         // A triangle of three single-sample sites: three bridges.
-        let tri = hull_bridges(vec![sample(0.0, 0.0, 0), sample(1.0, 0.0, 1), sample(0.3, 1.0, 2)]);
+        let tri = hull_bridges(vec![sample(0.0, 0.0, 0), sample(1.0, 0.0, 1), sample(0.3, 1.0, 2)], 1e-9);
         assert_eq!(tri.len(), 3);
         // Three collinear sites: the hull walks there and back, four bridges.
-        let line = hull_bridges(vec![sample(0.0, 0.0, 0), sample(1.0, 0.0, 1), sample(2.0, 0.0, 2)]);
+        let line = hull_bridges(vec![sample(0.0, 0.0, 0), sample(1.0, 0.0, 1), sample(2.0, 0.0, 2)], 1e-9);
         assert_eq!(line.len(), 4);
         // A site inside the triangle of three others is on no bridge.
-        let inner =
-            hull_bridges(vec![sample(0.0, 0.0, 0), sample(4.0, 0.0, 1), sample(2.0, 4.0, 2), sample(2.0, 1.0, 3)]);
+        let inner = hull_bridges(
+            vec![sample(0.0, 0.0, 0), sample(4.0, 0.0, 1), sample(2.0, 4.0, 2), sample(2.0, 1.0, 3)],
+            1e-9,
+        );
         assert!(inner.iter().all(|&(a, b)| a != SiteId::Region(3) && b != SiteId::Region(3)));
         assert_eq!(inner.len(), 3);
+    }
+
+    #[test]
+    fn after_a_breakdown_the_failed_radius_is_not_tried_again() {
+        let sites = Sites { points: vec![Point::new(0.0, 0.0), Point::new(1.0, 0.0)], ..Sites::default() };
+        let bbox = BBox { min: Point::new(0.0, 0.0), max: Point::new(1.0, 0.0) };
+        let mut f = FrameCheck::new(&sites, bbox, 1.0, 1e-9);
+        let mut radii = vec![f.radius()];
+        assert!(f.after_breakdown());
+        radii.push(f.radius());
+        while f.grow() {
+            radii.push(f.radius());
+        }
+        assert_eq!(radii[..2], [FIRST_RADIUS, SMALL_RADIUS]);
+        assert_eq!(radii.iter().filter(|&&r| r == FIRST_RADIUS).count(), 1, "{radii:?}");
+        assert!(radii.windows(2).skip(1).all(|w| w[1] > w[0]), "{radii:?}");
+        // A second breakdown goes on growing from where it is.
+        let before = f.radius();
+        assert!(!f.after_breakdown() || f.radius() > before);
     }
 
     #[test]
@@ -268,6 +353,6 @@ mod tests {
             .enumerate()
             .map(|(index, &(x, y))| Sample { p: Point::new(x, y), site: SiteId::Region(0), index, count, closed: true })
             .collect();
-        assert_eq!(hull_bridges(pts), vec![(SiteId::Region(0), SiteId::Region(0))]);
+        assert_eq!(hull_bridges(pts, 1e-9), vec![(SiteId::Region(0), SiteId::Region(0))]);
     }
 }

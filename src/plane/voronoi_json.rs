@@ -18,7 +18,9 @@
 //! ```
 //!
 //! Edge indices in `regions` refer to the `edges` array; a region lists
-//! only edges that were kept (without `--no-self-edges`, all of them).
+//! only edges that were kept, in walk order: an unbounded region's walk
+//! facing the library's frame, and self-edges left out with
+//! `--no-self-edges`, leave gaps (the walk is then not closed).
 //! `frontier` marks a node where an edge runs on to infinity beyond the
 //! library's frame. Edge `sites` number loops as the shape does: loop 0
 //! is the frame, then the regions, curves and points in order; an element

@@ -4,8 +4,10 @@
 //! (counter-clockwise round it). Regions are simply connected, so the walk
 //! is one closed walk.
 
+use super::augment::cw_offset;
 use super::axis::MedialAxis2d;
 use super::voronoi::{SiteId, VoronoiEdge};
+use crate::kernel::Point;
 
 /// The region of one site.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -35,6 +37,7 @@ pub(crate) fn site_regions(
     edges: &[VoronoiEdge],
     loop_sites: &[SiteId],
     skip_frame: bool,
+    toward: impl Fn(usize, bool) -> Point,
 ) -> Vec<SiteRegion> {
     let mut by_site: std::collections::HashMap<SiteId, Vec<(usize, bool)>> = Default::default();
     let mut selfs: std::collections::HashMap<SiteId, Vec<usize>> = Default::default();
@@ -55,15 +58,21 @@ pub(crate) fn site_regions(
         .map(|&site| {
             let directed = by_site.remove(&site).unwrap_or_default();
             let unbounded = skip_frame && directed.iter().any(|&(i, _)| edges[i].sides.contains(&SiteId::Frame));
-            let (boundary, walks) = closed_walks(axis, &directed);
+            let (boundary, walks) = closed_walks(axis, &directed, &toward);
             SiteRegion { site, boundary, walks, self_edges: selfs.remove(&site).unwrap_or_default(), unbounded }
         })
         .collect()
 }
 
-/// The directed edges joined into closed walks (Hierholzer): the walk, and
-/// how many separate walks it is made of.
-fn closed_walks(axis: &MedialAxis2d, directed: &[(usize, bool)]) -> (Vec<(usize, bool)>, usize) {
+/// The directed edges joined into closed walks (Hierholzer, choosing by
+/// rotation where several edges leave a node): the walk, and how many
+/// separate walks it is made of. `toward(i, from_start)` is the direction
+/// in which edge `i` leaves its `from` node (`true`) or its `to` node.
+fn closed_walks(
+    axis: &MedialAxis2d,
+    directed: &[(usize, bool)],
+    toward: &impl Fn(usize, bool) -> Point,
+) -> (Vec<(usize, bool)>, usize) {
     let ends = |&(i, fwd): &(usize, bool)| {
         let e = &axis.edges[i];
         if fwd {
@@ -90,12 +99,18 @@ fn closed_walks(axis: &MedialAxis2d, directed: &[(usize, bool)]) -> (Vec<(usize,
         while let Some(&top) = stack.last() {
             let head = ends(&directed[top]).1;
             let next = out_of.get_mut(&head).and_then(|v| {
-                while let Some(k) = v.pop() {
-                    if !used[k] {
-                        return Some(k);
-                    }
-                }
-                None
+                v.retain(|&k| !used[k]);
+                // Several ways on (a tree of self-edges meets the walk
+                // here): the first clockwise from the way back keeps the
+                // region on the left, as a face is walked.
+                let pick = if v.len() > 1 {
+                    let back = toward(directed[top].0, !directed[top].1);
+                    let turn = |k: usize| cw_offset(back, toward(directed[k].0, directed[k].1));
+                    (0..v.len()).min_by(|&a, &b| turn(v[a]).total_cmp(&turn(v[b])))?
+                } else {
+                    v.len().checked_sub(1)?
+                };
+                Some(v.swap_remove(pick))
             });
             match next {
                 Some(k) => {
