@@ -112,6 +112,7 @@ fn check_diagram(sites: &Sites, vd: &VoronoiDiagram, probes: usize, seed: u64) {
             assert_eq!(end(r.boundary[k], true), end(r.boundary[(k + 1) % n], false), "{}: walk breaks", r.site);
         }
     }
+    check_face_order(vd, diag);
     let polys: Vec<(SiteId, Vec<Point>)> =
         vd.regions.iter().map(|r| (r.site, region_polygon(vd, r.site, 1e-6 * diag))).collect();
     let frame = &vd.shape().loops()[0];
@@ -169,6 +170,58 @@ fn hull_sites(sites: &Sites) -> Vec<bool> {
         }
     }
     on
+}
+
+/// Every region walk goes round its face as a planar graph's face is
+/// walked: at each node it leaves by the first of all the node's edges
+/// clockwise from the one it came in by (directions from the edges'
+/// samples, not from the library's choice).
+fn check_face_order(vd: &VoronoiDiagram, diag: f64) {
+    let nodes = &vd.axis.nodes;
+    // The direction edge i leaves node `at` in: towards its first sample
+    // clear of the node.
+    let leaving = |i: usize, at: usize| {
+        let e = &vd.axis.edges[i];
+        let mut s = e.sample(vd.shape(), nodes, 1e-7 * diag);
+        if e.to == at {
+            s.reverse();
+        }
+        let p = nodes[at].point;
+        let q = s.iter().map(|x| x.0).find(|q| q.dist(p) > 1e-6 * diag).unwrap_or(s[s.len() - 1].0);
+        (q - p).unit()
+    };
+    let mut at_node: Vec<Vec<usize>> = vec![Vec::new(); nodes.len()];
+    for (i, e) in vd.axis.edges.iter().enumerate() {
+        at_node[e.from].push(i);
+        if e.to != e.from {
+            at_node[e.to].push(i);
+        }
+    }
+    let cw = |a: Point, b: Point| (a.y.atan2(a.x) - b.y.atan2(b.x)).rem_euclid(std::f64::consts::TAU);
+    for r in &vd.regions {
+        let n = r.boundary.len();
+        for k in 0..n {
+            let ((i, fwd), (j, _)) = (r.boundary[k], r.boundary[(k + 1) % n]);
+            let e = &vd.axis.edges[i];
+            let v = if fwd { e.to } else { e.from };
+            if at_node[v].len() < 3 {
+                continue;
+            }
+            let back = leaving(i, v);
+            let first = at_node[v]
+                .iter()
+                .filter(|&&x| x != i)
+                .min_by(|&&a, &&b| cw(back, leaving(a, v)).total_cmp(&cw(back, leaving(b, v))))
+                .copied();
+            assert_eq!(
+                first,
+                Some(j),
+                "{}: at node {v} ({:?}) the walk leaves by {j}, not the face's next edge",
+                r.site,
+                nodes[v].point
+            );
+        }
+    }
 }
 
 fn squares_grid(k: usize, size: f64, pitch: f64, jitter: f64, seed: u64) -> Sites {
@@ -731,4 +784,21 @@ fn review_findings_on_the_frame() {
     let empty = Sites { curves: vec![vec![]], points: vec![Point::new(0.0, 0.0)], ..Sites::default() };
     let e = voronoi(&empty, &VoronoiOptions::default()).unwrap_err();
     assert!(matches!(e, VoronoiError::Invalid { site: Some(SiteId::Curve(0)), .. }), "{e}");
+}
+
+#[test]
+fn star_sites_walk_their_trees_of_self_edges_in_face_order() {
+    // A star-shaped polygon's spikes make trees of self-edges in its
+    // region; where several of them leave one node the walk must take
+    // them in rotation order (check_face_order).
+    for seed in 0..60u64 {
+        let star = common::star(40, seed);
+        let sites = Sites {
+            regions: vec![star],
+            points: vec![Point::new(1.6, 0.2), Point::new(-0.4, 1.5)],
+            ..Sites::default()
+        };
+        let vd = vd_of(&sites);
+        check_diagram(&sites, &vd, 60, 90 + seed);
+    }
 }
