@@ -408,22 +408,6 @@ fn the_frame_keeps_every_vertex_of_a_much_larger_one() {
     let auto = vd_of(&sites);
     let big: Vec<Vertex> = circle(2.5, 2.5, 400.0);
     let given = voronoi(&sites, &VoronoiOptions { boundary: Some(big), ..VoronoiOptions::default() }).unwrap();
-    let site_vertices = |vd: &VoronoiDiagram| {
-        let mut touches_frame = vec![false; vd.axis.nodes.len()];
-        let mut deg = vec![0; vd.axis.nodes.len()];
-        for (e, v) in vd.axis.edges.iter().zip(&vd.edges) {
-            for n in [e.from, e.to] {
-                deg[n] += 1;
-                touches_frame[n] |= v.sides.contains(&SiteId::Frame);
-            }
-        }
-        let mut pts: Vec<(f64, f64, f64)> = (0..vd.axis.nodes.len())
-            .filter(|&n| deg[n] >= 3 && !touches_frame[n])
-            .map(|n| (vd.axis.nodes[n].point.x, vd.axis.nodes[n].point.y, vd.axis.nodes[n].radius))
-            .collect();
-        pts.sort_by(|a, b| a.partial_cmp(b).unwrap());
-        pts
-    };
     let (a, b) = (site_vertices(&auto), site_vertices(&given));
     assert_eq!(a.len(), b.len());
     for (p, q) in a.iter().zip(&b) {

@@ -255,7 +255,7 @@ fn voronoi_from(sites: &Sites, opts: &VoronoiOptions, shape_only: bool) -> Resul
         let mut loops = vec![outer];
         loops.extend(sites.regions.iter().cloned());
         Shape2d::from_sites(loops, sites.curves.clone(), sites.points.clone(), &shape_opts).map_err(|error| {
-            VoronoiError::Invalid { site: error_loop(&error).and_then(|l| loop_sites.get(l).copied()), error }
+            VoronoiError::Invalid { site: error.loop_index().and_then(|l| loop_sites.get(l).copied()), error }
         })
     };
     if let Some(outer) = &opts.boundary {
@@ -344,21 +344,6 @@ fn sites_bbox(sites: &Sites) -> BBox {
         }
     }
     b
-}
-
-/// The loop a validation error is about, when it names one.
-fn error_loop(e: &ShapeError) -> Option<usize> {
-    match e {
-        ShapeError::TooFewElements { loop_index, .. } => Some(*loop_index),
-        ShapeError::NonFinite { at }
-        | ShapeError::OutOfRange { at, .. }
-        | ShapeError::NotClosed { at, .. }
-        | ShapeError::Degenerate { at, .. }
-        | ShapeError::InconsistentArc { at, .. } => Some(at.loop_index),
-        ShapeError::Intersection { first, .. } => Some(first.loop_index),
-        ShapeError::HoleOutside { hole, .. } | ShapeError::HoleInsideHole { hole, .. } => Some(*hole),
-        _ => None,
-    }
 }
 
 impl VoronoiDiagram {

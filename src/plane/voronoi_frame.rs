@@ -75,6 +75,8 @@ struct Sample {
     p: Point,
     site: SiteId,
     index: usize,
+    /// Where the site's samples start in the list of all samples.
+    start: usize,
     count: usize,
     closed: bool,
 }
@@ -91,17 +93,20 @@ impl FrameCheck {
         let bridges = [false, true].map(|outer| {
             let mut samples = Vec::new();
             let mut add = |site: SiteId, pts: Vec<Point>, closed: bool| {
-                let count = pts.len();
-                samples.extend(pts.into_iter().enumerate().map(|(index, p)| Sample { p, site, index, count, closed }));
+                let (count, start) = (pts.len(), samples.len());
+                samples.extend(pts.into_iter().enumerate().map(|(index, p)| Sample {
+                    p,
+                    site,
+                    index,
+                    start,
+                    count,
+                    closed,
+                }));
             };
             for (i, r) in sites.regions.iter().enumerate() {
-                // As the shape stores it: a closing vertex repeating the
-                // first is no vertex.
-                let mut r = r.clone();
-                if r.len() > 2 && r.first().map(|v| v.p) == r.last().map(|v| v.p) {
-                    r.pop();
-                }
-                add(SiteId::Region(i), loop_samples(&Loop::new(r), outer), true);
+                // As the shape stores it (a closing vertex repeating the
+                // first is no vertex).
+                add(SiteId::Region(i), loop_samples(&Loop::closed(r.clone()), outer), true);
             }
             for (i, c) in sites.curves.iter().enumerate() {
                 add(SiteId::Curve(i), chain_samples(c, outer), false);
@@ -109,7 +114,7 @@ impl FrameCheck {
             for (i, &p) in sites.points.iter().enumerate() {
                 add(SiteId::Point(i), vec![p], false);
             }
-            let mut b = hull_bridges(samples, tol);
+            let mut b = hull_bridges(&samples, tol);
             b.sort();
             b
         });
@@ -227,8 +232,8 @@ fn arc_inside(e: &Element, outer: bool, out: &mut Vec<Point>) {
 /// The site pairs of the convex hull's bridges: consecutive hull points
 /// not next to each other along one site (within `tol`, model units). Collinear points on the hull are
 /// kept (each is the end of an unbounded edge), with exact orientations.
-fn hull_bridges(samples: Vec<Sample>, tol: f64) -> Vec<(SiteId, SiteId)> {
-    let mut pts = samples.clone();
+fn hull_bridges(samples: &[Sample], tol: f64) -> Vec<(SiteId, SiteId)> {
+    let mut pts = samples.to_vec();
     pts.sort_by(|a, b| a.p.x.total_cmp(&b.p.x).then(a.p.y.total_cmp(&b.p.y)));
     pts.dedup_by(|a, b| a.p == b.p);
     if pts.len() < 2 {
@@ -250,8 +255,6 @@ fn hull_bridges(samples: Vec<Sample>, tol: f64) -> Vec<(SiteId, SiteId)> {
     };
     chain(&mut pts.iter(), &mut hull);
     chain(&mut pts.iter().rev(), &mut hull);
-    // Where each site's samples start in `samples` (they are in site order).
-    let first = |a: &Sample| samples.iter().position(|s| s.site == a.site).unwrap_or(0);
     // Two hull points of one site run along it when every sample between
     // them, one way or the other round the site, lies within `tol` of the
     // hull edge: samples a rounding off the hull (a vertex between two
@@ -260,7 +263,7 @@ fn hull_bridges(samples: Vec<Sample>, tol: f64) -> Vec<(SiteId, SiteId)> {
         if a.site != b.site {
             return false;
         }
-        let base = first(a);
+        let base = a.start;
         let (u, v) = (a.p, b.p);
         let off = |i: usize| {
             let q = samples[base + i].p;
@@ -304,22 +307,20 @@ mod tests {
     use super::*;
 
     fn sample(x: f64, y: f64, site: usize) -> Sample {
-        Sample { p: Point::new(x, y), site: SiteId::Region(site), index: 0, count: 1, closed: true }
+        Sample { p: Point::new(x, y), site: SiteId::Region(site), index: 0, start: site, count: 1, closed: true }
     }
 
     #[test]
     fn bridges_of_points_in_convex_and_collinear_position() {
         // A triangle of three single-sample sites: three bridges.
-        let tri = hull_bridges(vec![sample(0.0, 0.0, 0), sample(1.0, 0.0, 1), sample(0.3, 1.0, 2)], 1e-9);
+        let tri = hull_bridges(&[sample(0.0, 0.0, 0), sample(1.0, 0.0, 1), sample(0.3, 1.0, 2)], 1e-9);
         assert_eq!(tri.len(), 3);
         // Three collinear sites: the hull walks there and back, four bridges.
-        let line = hull_bridges(vec![sample(0.0, 0.0, 0), sample(1.0, 0.0, 1), sample(2.0, 0.0, 2)], 1e-9);
+        let line = hull_bridges(&[sample(0.0, 0.0, 0), sample(1.0, 0.0, 1), sample(2.0, 0.0, 2)], 1e-9);
         assert_eq!(line.len(), 4);
         // A site inside the triangle of three others is on no bridge.
-        let inner = hull_bridges(
-            vec![sample(0.0, 0.0, 0), sample(4.0, 0.0, 1), sample(2.0, 4.0, 2), sample(2.0, 1.0, 3)],
-            1e-9,
-        );
+        let inner =
+            hull_bridges(&[sample(0.0, 0.0, 0), sample(4.0, 0.0, 1), sample(2.0, 4.0, 2), sample(2.0, 1.0, 3)], 1e-9);
         assert!(inner.iter().all(|&(a, b)| a != SiteId::Region(3) && b != SiteId::Region(3)));
         assert_eq!(inner.len(), 3);
     }
@@ -348,11 +349,18 @@ mod tests {
         // A U-shaped region: the hull bridges its mouth.
         let u = [(0.0, 0.0), (3.0, 0.0), (3.0, 3.0), (2.0, 3.0), (2.0, 1.0), (1.0, 1.0), (1.0, 3.0), (0.0, 3.0)];
         let count = u.len();
-        let pts = u
+        let pts: Vec<Sample> = u
             .iter()
             .enumerate()
-            .map(|(index, &(x, y))| Sample { p: Point::new(x, y), site: SiteId::Region(0), index, count, closed: true })
+            .map(|(index, &(x, y))| Sample {
+                p: Point::new(x, y),
+                site: SiteId::Region(0),
+                index,
+                start: 0,
+                count,
+                closed: true,
+            })
             .collect();
-        assert_eq!(hull_bridges(pts, 1e-9), vec![(SiteId::Region(0), SiteId::Region(0))]);
+        assert_eq!(hull_bridges(&pts, 1e-9), vec![(SiteId::Region(0), SiteId::Region(0))]);
     }
 }

@@ -36,7 +36,7 @@ use crate::shape::Vertex;
 use serde_json::{json, Value};
 
 fn vertices(raw: Vec<RawVertex>) -> Vec<Vertex> {
-    raw.into_iter().map(|v| Vertex { p: Point::new(v.x, v.y), bulge: v.bulge }).collect()
+    raw.into_iter().map(Vertex::from).collect()
 }
 
 /// Reads a sites file: the sites and the caller's outer boundary, if any.

@@ -30,6 +30,12 @@ pub enum LoopKind {
     Point,
 }
 
+impl From<crate::io::RawVertex> for Vertex {
+    fn from(v: crate::io::RawVertex) -> Vertex {
+        Vertex { p: Point::new(v.x, v.y), bulge: v.bulge }
+    }
+}
+
 /// A closed chain of segments and arcs. Element `i` runs from vertex `i` to
 /// vertex `(i + 1) % len`. Invariants once inside a validated shape: at
 /// least 2 elements, no zero-length element, no self-intersection (a curve
@@ -60,6 +66,16 @@ impl Loop {
             vertices.push(Vertex { p: open[k - j].p, bulge: -open[k - j - 1].bulge });
         }
         Loop { vertices, kind: LoopKind::Curve }
+    }
+
+    /// A closed loop over `vertices` as a caller writes one: a final vertex
+    /// repeating the first (of a loop of more than two) is dropped, the
+    /// element of the last vertex returning to the first anyway.
+    pub fn closed(mut vertices: Vec<Vertex>) -> Loop {
+        if vertices.len() > 2 && vertices.first().map(|v| v.p) == vertices.last().map(|v| v.p) {
+            vertices.pop();
+        }
+        Loop::new(vertices)
     }
 
     /// The loop of a point site at `p`.

@@ -139,6 +139,25 @@ pub enum ShapeError {
     },
 }
 
+impl ShapeError {
+    /// The loop the error is about (the first one of an intersection), when
+    /// it names one.
+    pub fn loop_index(&self) -> Option<usize> {
+        use ShapeError::*;
+        match self {
+            TooFewElements { loop_index, .. } => Some(*loop_index),
+            NonFinite { at }
+            | OutOfRange { at, .. }
+            | NotClosed { at, .. }
+            | Degenerate { at, .. }
+            | InconsistentArc { at, .. } => Some(at.loop_index),
+            Intersection { first, .. } => Some(first.loop_index),
+            HoleOutside { hole, .. } | HoleInsideHole { hole, .. } => Some(*hole),
+            Parse(_) | Io { .. } | Empty | Unsupported { .. } | InvalidArgument { .. } => None,
+        }
+    }
+}
+
 impl fmt::Display for ShapeError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         use ShapeError::*;

@@ -133,10 +133,7 @@ impl Shape2d {
     }
 
     fn from_raw_json(raw: Vec<RawPolyline>, opts: &ShapeOptions) -> Result<Shape2d, ShapeError> {
-        let loops = raw
-            .into_iter()
-            .map(|p| p.vertices.into_iter().map(|v| Vertex { p: Point::new(v.x, v.y), bulge: v.bulge }).collect())
-            .collect();
+        let loops = raw.into_iter().map(|p| p.vertices.into_iter().map(Vertex::from).collect()).collect();
         Shape2d::from_bulge_loops(loops, opts)
     }
 

@@ -108,16 +108,7 @@ impl Shape2d {
     /// returns to the first; a final vertex repeating the first is dropped).
     /// Orientation is normalised; see [`was_reversed`](Self::was_reversed).
     pub fn from_bulge_loops(loops: Vec<Vec<Vertex>>, opts: &ShapeOptions) -> Result<Shape2d, ShapeError> {
-        let loops = loops
-            .into_iter()
-            .map(|mut vs| {
-                if vs.len() > 2 && vs.first().map(|v| v.p) == vs.last().map(|v| v.p) {
-                    vs.pop();
-                }
-                Loop::new(vs)
-            })
-            .collect();
-        Self::from_loops(loops, opts)
+        Self::from_loops(loops.into_iter().map(Loop::closed).collect(), opts)
     }
 
     /// Builds a shape with Voronoi sites (thesis 2.3, Observation 6):
@@ -134,15 +125,7 @@ impl Shape2d {
         points: Vec<Point>,
         opts: &ShapeOptions,
     ) -> Result<Shape2d, ShapeError> {
-        let mut all: Vec<Loop> = loops
-            .into_iter()
-            .map(|mut vs| {
-                if vs.len() > 2 && vs.first().map(|v| v.p) == vs.last().map(|v| v.p) {
-                    vs.pop();
-                }
-                Loop::new(vs)
-            })
-            .collect();
+        let mut all: Vec<Loop> = loops.into_iter().map(Loop::closed).collect();
         all.extend(curves.iter().map(|c| Loop::curve(c)));
         all.extend(points.into_iter().map(Loop::point));
         Self::from_loops(all, opts)
