@@ -8,6 +8,7 @@
 //! module implements which section). Layers, top to bottom:
 //!
 //! * [`ffi`]: the C ABI (thin: convert, validate, call).
+//! * [`cam`]: pocketing rings and V-carve paths from offsets and the axis.
 //! * [`plane`]: medial axes in the Euclidean plane (thesis chapter 2).
 //! * [`shape`]: shape models — loops of segments and arcs, validated.
 //! * [`kernel`]: number types, predicates, constructions.
@@ -31,6 +32,7 @@
 #![deny(rustdoc::broken_intra_doc_links)]
 #![deny(unsafe_code)]
 
+pub mod cam;
 #[allow(unsafe_code)]
 pub mod ffi;
 pub mod io;

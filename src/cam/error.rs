@@ -1,0 +1,32 @@
+use crate::plane::OffsetError;
+
+/// Why a CAM computation could not be done.
+#[derive(Debug, Clone, PartialEq)]
+pub enum CamError {
+    /// An option is out of its range: which one, and its value.
+    BadOption {
+        /// The option's name as in the options struct.
+        name: &'static str,
+        /// The value given.
+        value: f64,
+    },
+    /// The offsets failed.
+    Offset(OffsetError),
+}
+
+impl std::fmt::Display for CamError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            CamError::BadOption { name, value } => write!(f, "option {name} = {value} is out of range"),
+            CamError::Offset(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for CamError {}
+
+impl From<OffsetError> for CamError {
+    fn from(e: OffsetError) -> Self {
+        CamError::Offset(e)
+    }
+}

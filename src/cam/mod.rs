@@ -1,0 +1,13 @@
+//! The CAM layer on top of the trimmed offsets and the medial axis:
+//! pocketing rings for a tool radius and stepover, and V-carve paths.
+//!
+//! Arcs stay arcs: every ring is a loop of segments and exact arcs in bulge
+//! form, so a caller can emit G2/G3 moves directly.
+
+mod error;
+pub mod pocket;
+pub mod vcarve;
+
+pub use error::CamError;
+pub use pocket::{pocket, Pocket, PocketOptions, PocketOrder, PocketRing, UncutKind, UncutRegion};
+pub use vcarve::{vcarve, VCarve, VCarveOptions, VCarvePath};

@@ -1,0 +1,95 @@
+//! Pocketing: offset rings at ρ_k = r + k·s for a tool of radius r and a
+//! stepover s, until nothing is left, as a tree in machining order, with the
+//! area the tool leaves uncut.
+
+use super::CamError;
+use crate::plane::{OffsetLoop, Offsets};
+use crate::shape::Vertex;
+
+/// In which order the rings of a pocket are machined.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum PocketOrder {
+    /// Every ring after the rings inside it (children first): the tool
+    /// starts at the centre of each pocket and works outwards, so the last
+    /// pass is the finishing pass along the wall.
+    #[default]
+    InsideOut,
+    /// Every ring before the rings inside it: from the wall inwards.
+    OutsideIn,
+}
+
+/// Options for [`pocket`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PocketOptions {
+    /// Tool radius r, model units, > 0: the first ring is the offset at r.
+    pub tool_radius: f64,
+    /// Stepover s between rings, model units, > 0 (usually at most 2r).
+    pub stepover: f64,
+    /// Machining order of [`Pocket::order`].
+    pub order: PocketOrder,
+    /// At most this many levels; beyond it the pocket is cut short (a guard
+    /// against a tiny stepover), default 100 000.
+    pub max_levels: usize,
+}
+
+impl PocketOptions {
+    /// Options for tool radius `r` and stepover `s`, inside-out.
+    pub fn new(tool_radius: f64, stepover: f64) -> PocketOptions {
+        PocketOptions { tool_radius, stepover, order: PocketOrder::InsideOut, max_levels: 100_000 }
+    }
+}
+
+/// One ring: the boundary of one connected region of the offset at one
+/// level, which the tool centre follows.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PocketRing {
+    /// Level k (0 for the ring at the tool radius).
+    pub level: usize,
+    /// Offset distance ρ_k = r + k·s, model units.
+    pub distance: f64,
+    /// The outer loop first (counter-clockwise), then its holes (clockwise).
+    pub loops: Vec<OffsetLoop>,
+    /// The ring of level k − 1 that encloses this one.
+    pub parent: Option<usize>,
+    /// The rings of level k + 1 inside this one.
+    pub children: Vec<usize>,
+}
+
+/// Why some material stays.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum UncutKind {
+    /// Between rings: the stepover left a cusp the tool did not reach.
+    Scallop,
+    /// Along the wall: corners and necks narrower than the tool.
+    Wall,
+}
+
+/// A region the tool does not cut: an outer loop and its holes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct UncutRegion {
+    /// Why it is left.
+    pub kind: UncutKind,
+    /// Outer loop first (counter-clockwise), then holes (clockwise).
+    pub loops: Vec<Vec<Vertex>>,
+    /// Area, square model units.
+    pub area: f64,
+}
+
+/// The rings of a pocket.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Pocket {
+    /// Every ring, level by level.
+    pub rings: Vec<PocketRing>,
+    /// Indices into `rings` in machining order.
+    pub order: Vec<usize>,
+    /// The area left uncut.
+    pub uncut: Vec<UncutRegion>,
+    /// Whether [`PocketOptions::max_levels`] cut the pocket short.
+    pub truncated: bool,
+}
+
+/// The pocket of the prepared shape for the options.
+pub fn pocket(offsets: &Offsets, opts: &PocketOptions) -> Result<Pocket, CamError> {
+    let _ = (offsets, opts);
+    unimplemented!("pocket rings")
+}

@@ -1,0 +1,232 @@
+//! Trimmed offsets from the medial axis (thesis 2.4).
+//!
+//! The boundary of the inner offset Ω^ρ = {p ∈ Ω : dist(p, ∂Ω) > ρ} is
+//! made of offsets of the boundary's own elements: a segment moved by ρ
+//! along its inward normal, an arc with its radius changed by ρ, an arc of
+//! radius ρ around a reflex vertex. The medial axis says which parts
+//! survive: a boundary point f contributes f + ρ·n(f) exactly when the
+//! maximal disk touching it at f has a radius above ρ. Each axis edge
+//! carries the footpoint ranges of its two primitives (its induced subshape,
+//! Definition 2.4.1); split where its radius has an inner extremum
+//! (Figure 2.22), the radius is monotonic along every piece, so the offset
+//! of each side is kept up to the one disk of radius ρ on it, where the
+//! offset turns over to the edge's other side. Walking the boundary's order
+//! of the edge sides (the tour round the axis) concatenates the pieces into
+//! closed loops. Arcs stay exact arcs.
+//!
+//! One [`Offsets`] serves any number of distances; each layer costs time
+//! linear in the size of the axis.
+
+use super::conquer::{medial_axis, AxisError, AxisOptions};
+use super::offset_trim::Trimmer;
+use super::MedialAxis2d;
+use crate::shape::{LoopKind, Shape2d, Vertex};
+
+/// Options for [`Offsets::new`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OffsetOptions {
+    /// Options of the medial-axis computations (the shape's axis, and for
+    /// outer offsets the axes of the shape's complement).
+    pub axis: AxisOptions,
+    /// Outer offsets (negative distances) are available up to this distance,
+    /// model units; 0 for inner offsets only. Outer offsets are inner
+    /// offsets of the complement (thesis 2.4.1): the shape as a hole in a
+    /// circle that far away, and each hole as a region of its own.
+    pub outer_reach: f64,
+}
+
+impl Default for OffsetOptions {
+    fn default() -> Self {
+        OffsetOptions { axis: AxisOptions::default(), outer_reach: 0.0 }
+    }
+}
+
+/// Why offsets could not be computed.
+#[derive(Debug, Clone, PartialEq)]
+pub enum OffsetError {
+    /// The distance is not finite, or an outer distance beyond
+    /// [`OffsetOptions::outer_reach`].
+    BadDistance(f64),
+    /// The reach for outer offsets is negative or not finite.
+    BadReach(f64),
+    /// The shape holds a loop that bounds no region (a point or curve site):
+    /// offsets are of regions.
+    NotRegion {
+        /// The loop, in the shape's indexing.
+        loop_index: usize,
+    },
+    /// A medial axis (of the shape or of its complement) failed.
+    Axis(AxisError),
+    /// The axis did not close into loops at this distance: its edges do not
+    /// form the tour round the boundary they should (a defect, reported
+    /// instead of a wrong offset).
+    Topology {
+        /// The distance asked for.
+        distance: f64,
+        /// What went wrong.
+        what: &'static str,
+    },
+}
+
+impl std::fmt::Display for OffsetError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            OffsetError::BadDistance(d) => write!(f, "offset distance {d} is not finite or beyond the outer reach"),
+            OffsetError::BadReach(r) => write!(f, "outer reach {r} must be finite and at least 0"),
+            OffsetError::NotRegion { loop_index } => {
+                write!(f, "loop {loop_index} is a point or curve site; offsets are of regions")
+            }
+            OffsetError::Axis(e) => write!(f, "medial axis: {e}"),
+            OffsetError::Topology { distance, what } => write!(f, "offset at distance {distance}: {what}"),
+        }
+    }
+}
+
+impl std::error::Error for OffsetError {}
+
+impl From<AxisError> for OffsetError {
+    fn from(e: AxisError) -> Self {
+        OffsetError::Axis(e)
+    }
+}
+
+/// One closed offset loop: segments and exact arcs in bulge form, the
+/// region on its left (outer loops counter-clockwise, holes clockwise).
+#[derive(Debug, Clone, PartialEq)]
+pub struct OffsetLoop {
+    /// The vertices; element `i` runs from vertex `i` to vertex `i + 1`
+    /// (cyclically) with `vertices[i].bulge`. No element is shorter than the
+    /// shape's tolerance.
+    pub vertices: Vec<Vertex>,
+    /// Signed area enclosed, square model units: positive for an outer
+    /// loop, negative for a hole.
+    pub area: f64,
+    /// Index of the region in [`OffsetLayer::regions`] this loop bounds.
+    pub region: usize,
+}
+
+impl OffsetLoop {
+    /// Whether the loop bounds a hole of its region (clockwise).
+    pub fn is_hole(&self) -> bool {
+        self.area < 0.0
+    }
+}
+
+/// A connected part of the offset region: one outer loop and its holes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OffsetRegion {
+    /// Index of the outer loop in [`OffsetLayer::loops`].
+    pub outer: usize,
+    /// Indices of the hole loops.
+    pub holes: Vec<usize>,
+}
+
+/// The offset at one distance.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OffsetLayer {
+    /// The distance, model units: positive inwards, negative outwards.
+    pub distance: f64,
+    /// Every loop of the offset boundary.
+    pub loops: Vec<OffsetLoop>,
+    /// The connected regions the loops bound (for an inner offset, the
+    /// components of Ω^ρ; for an outer one, of the grown shape).
+    pub regions: Vec<OffsetRegion>,
+    /// For each region, an axis position inside it (trimmer, edge, piece),
+    /// and for each trimmer the region of each kept edge piece: how the CAM
+    /// layer nests the regions of successive layers without geometry.
+    pub(crate) anchors: Vec<(usize, usize)>,
+    pub(crate) piece_region: Vec<Vec<u32>>,
+}
+
+impl OffsetLayer {
+    /// Total signed area of the offset region, square model units.
+    pub fn area(&self) -> f64 {
+        self.loops.iter().map(|l| l.area).sum()
+    }
+
+    /// Whether nothing is left at this distance.
+    pub fn is_empty(&self) -> bool {
+        self.loops.is_empty()
+    }
+}
+
+/// A shape prepared for offsetting at any distance: its medial axis, and
+/// for outer offsets the axes of its complement.
+#[derive(Debug, Clone)]
+pub struct Offsets {
+    pub(crate) inner: Trimmer,
+    /// The complement's parts: the shape as a hole in a far circle (first),
+    /// then each hole as a region.
+    pub(crate) outer: Vec<Trimmer>,
+    pub(crate) outer_reach: f64,
+    tolerance: f64,
+}
+
+impl Offsets {
+    /// Computes the shape's medial axis (and, for `opts.outer_reach > 0`,
+    /// the complement's) and prepares the offsets.
+    pub fn new(shape: &Shape2d, opts: &OffsetOptions) -> Result<Offsets, OffsetError> {
+        check_regions(shape)?;
+        let axis = medial_axis(shape, &opts.axis)?;
+        let mut out = Offsets::from_axis(shape, &axis)?;
+        if opts.outer_reach != 0.0 {
+            out.outer = super::offset_outer::complement_trimmers(shape, opts)?;
+            out.outer_reach = opts.outer_reach;
+        }
+        Ok(out)
+    }
+
+    /// Inner offsets from an axis computed by the caller (of this very
+    /// shape).
+    pub fn from_axis(shape: &Shape2d, axis: &MedialAxis2d) -> Result<Offsets, OffsetError> {
+        check_regions(shape)?;
+        Ok(Offsets {
+            inner: Trimmer::new(shape, axis),
+            outer: Vec::new(),
+            outer_reach: 0.0,
+            tolerance: shape.tolerance(),
+        })
+    }
+
+    /// The largest inner distance with anything left: the radius of the
+    /// largest inscribed disk, model units.
+    pub fn max_inner_distance(&self) -> f64 {
+        self.inner.max_radius()
+    }
+
+    /// The outer reach these offsets were prepared for, model units.
+    pub fn outer_reach(&self) -> f64 {
+        self.outer_reach
+    }
+
+    /// The offset at `distance`: inwards for positive distances, outwards for
+    /// negative ones (up to the outer reach), the shape's own boundary at 0.
+    pub fn layer(&self, distance: f64) -> Result<OffsetLayer, OffsetError> {
+        if !distance.is_finite() || -distance > self.outer_reach {
+            return Err(OffsetError::BadDistance(distance));
+        }
+        if distance >= 0.0 {
+            self.inner.layer(distance, self.tolerance)
+        } else {
+            super::offset_outer::outer_layer(self, -distance)
+        }
+    }
+
+    /// The offsets at several distances, computed in parallel, in the order
+    /// given.
+    pub fn layers(&self, distances: &[f64]) -> Result<Vec<OffsetLayer>, OffsetError> {
+        use rayon::prelude::*;
+        distances.par_iter().map(|&d| self.layer(d)).collect()
+    }
+
+    pub(crate) fn tolerance(&self) -> f64 {
+        self.tolerance
+    }
+}
+
+fn check_regions(shape: &Shape2d) -> Result<(), OffsetError> {
+    match (0..shape.loops().len()).find(|&l| shape.kind(l) != LoopKind::Region) {
+        Some(loop_index) => Err(OffsetError::NotRegion { loop_index }),
+        None => Ok(()),
+    }
+}
