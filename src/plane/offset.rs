@@ -238,7 +238,8 @@ impl Offsets {
         distances.par_iter().map(|&d| self.layer(d)).collect()
     }
 
-    pub(crate) fn tolerance(&self) -> f64 {
+    /// The shape's touching tolerance, model units.
+    pub fn tolerance(&self) -> f64 {
         self.tolerance
     }
 }

@@ -314,7 +314,9 @@ impl Trimmer {
             if (e, j, k) == start {
                 let same = matches!(
                     (entry, first),
-                    (Entry::Start, Entry::Start) | (Entry::Low(..), Entry::Low(..)) | (Entry::High(..), Entry::High(..))
+                    (Entry::Start, Entry::Start)
+                        | (Entry::Low(..), Entry::Low(..))
+                        | (Entry::High(..), Entry::High(..))
                 );
                 if !same {
                     return Err("the walk came back to its start another way");
