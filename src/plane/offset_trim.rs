@@ -137,6 +137,11 @@ impl Trimmer {
         }
     }
 
+    /// Whether the axis's edge sides form the tour round the boundary.
+    pub(crate) fn check(&self) -> Result<(), &'static str> {
+        self.tour.as_ref().map(|_| ()).map_err(|e| *e)
+    }
+
     /// The radius of the largest inscribed disk, model units.
     pub(crate) fn max_radius(&self) -> f64 {
         self.max_radius
