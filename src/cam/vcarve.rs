@@ -105,8 +105,9 @@ pub fn vcarve(shape: &Shape2d, axis: &MedialAxis2d, opts: &VCarveOptions) -> Res
         .into_iter()
         .map(|pl| VCarvePath { points: pl.iter().map(|&(p, r)| [p.x, p.y, r / slope]).collect() })
         .collect();
-    let flat = if flat_radius < axis.nodes.iter().map(|n| n.radius).fold(0.0, f64::max) {
-        Offsets::from_axis(shape, axis)?.layer(flat_radius)?
+    let offsets = Offsets::from_axis(shape, axis)?;
+    let flat = if flat_radius < offsets.max_inner_distance() {
+        offsets.layer(flat_radius)?
     } else {
         OffsetLayer::empty(flat_radius)
     };

@@ -122,7 +122,14 @@ impl Trimmer {
                 }
             }
         }
-        let max_radius = axis.nodes.iter().map(|n| n.radius).fold(0.0, f64::max);
+        // The largest disk may lie inside an edge (a D shape's one edge runs
+        // between two corners): its inner extrema are breaks.
+        let max_radius = axis
+            .nodes
+            .iter()
+            .map(|n| n.radius)
+            .chain(profiles.iter().flat_map(|p| p.breaks.iter().map(|b| b.radius)))
+            .fold(0.0, f64::max);
         let disk = (axis.edges.is_empty() && axis.nodes.len() == 1 && shape.loops().len() == 1)
             .then(|| (shape.loops()[0].clone(), axis.nodes[0].point, axis.nodes[0].radius));
         Trimmer {
