@@ -142,6 +142,11 @@ fn check_layer(c: &Case, layer: &OffsetLayer, rho: f64, probes: usize, seed: u64
         panic!("{tag}: layer area {} is not the sum of its loops'", layer.area());
     }
     let (f, seen) = check_parts(c, rho, &layer.loops, &layer.regions, probes, seed, cusps);
+    if std::env::var_os("MEDAX_OFFSET_VERBOSE").is_some() {
+        let arcs = layer.loops.iter().flat_map(|l| &l.vertices).filter(|x| x.bulge != 0.0).count();
+        let elements: usize = layer.loops.iter().map(|l| l.vertices.len()).sum();
+        eprintln!("{tag}: loops {:?}, {elements} elements ({arcs} arcs), {seen:?}", loop_count(layer));
+    }
     f.assert_none(&tag);
     if probes > 0 && !layer.loops.is_empty() {
         assert!(seen.probes > probes / 2 && seen.on_loops > 0, "{tag}: too little checked: {seen:?}");
@@ -633,16 +638,17 @@ fn hole_near_the_side_merges_with_the_outer_offset() {
 
 #[test]
 fn rectangle_with_islands_merging_with_the_outer_offset() {
-    // Islands A (1 from the left side) and C (1 from the bottom) merge
-    // with the outer offset at ρ = ½; B (a circle, 4 from the long sides)
-    // stays a hole until ρ = 2.
+    // Islands A (1 from the left side) and C (1 from the bottom, 2.4 from
+    // the right side) merge with the outer offset at ρ = ½; B (a circle, 4
+    // from the long sides) stays a hole until ρ = 2. (A and B are 6 apart:
+    // ρ = 3 is critical, where loops touch at horn tips.)
     let c = Case::new(
         "rectangle with islands",
-        vec![rect(0.0, 0.0, 20.0, 10.0), rect(1.0, 4.0, 3.0, 6.0), circle(10.0, 5.0, 1.0), rect(16.0, 1.0, 18.0, 2.0)],
+        vec![rect(0.0, 0.0, 20.0, 10.0), rect(1.0, 4.0, 3.0, 6.0), circle(10.0, 5.0, 1.0), rect(16.0, 1.0, 17.6, 2.0)],
         0.0,
     );
     let counts: Vec<(usize, usize)> =
-        check_all(&c, &[0.2, 0.4, 0.6, 1.0, 1.9, 2.1, 3.0, 4.0], 2000).iter().map(loop_count).collect();
+        check_all(&c, &[0.2, 0.4, 0.6, 1.0, 1.9, 2.1, 2.9, 3.1, 3.7], 2000).iter().map(loop_count).collect();
     assert_eq!(&counts[..3], &[(1, 3), (1, 3), (1, 1)], "{counts:?}");
     assert_eq!(counts[4], (1, 1), "{counts:?}");
 }
@@ -840,6 +846,7 @@ fn outer_offsets_of_stars_plates_and_arcs() {
         ("random holes 3", samples::random_holes(3, 1)),
         ("plate with round holes", plate_with_round_holes()),
         ("demo shape", demo_shape()),
+        ("disk dumbbell", vec![disk_dumbbell(2.0, 0.5)]),
     ] {
         let reach = 0.2 * shape(loops.clone()).bbox().diagonal();
         let c = Case::new(name, loops, reach);
@@ -948,4 +955,31 @@ fn metamorphic_star() {
 fn metamorphic_holes_and_arcs() {
     metamorphic("random holes 2", samples::random_holes(2, 9), &[0.05, 0.3, 0.7, 0.95]);
     metamorphic("plate with round holes", plate_with_round_holes(), &[0.1, 0.5, 0.9]);
+}
+
+// ---------------------------------------------------------------- sweeps
+
+/// Many shapes at many random distances, inner and outer, fewer probes
+/// each. `MEDAX_OFFSET_SWEEP=N` runs N seeds of each family (default 3).
+#[test]
+fn sweep_random_shapes_and_distances() {
+    let seeds: u64 = std::env::var("MEDAX_OFFSET_SWEEP").ok().and_then(|s| s.parse().ok()).unwrap_or(3);
+    let mut rng = rand::rngs::SmallRng::seed_from_u64(77);
+    for seed in 0..seeds {
+        let families: Vec<(String, Vec<Vec<Vertex>>)> = vec![
+            (format!("star {seed}"), samples::star_polygon(20 + 40 * (seed as usize % 4), 100 + seed)),
+            (format!("test star {seed}"), vec![common::star(30 + 10 * (seed as usize % 5), 200 + seed)]),
+            (format!("random holes {seed}"), samples::random_holes(2 + seed as usize % 2, 300 + seed)),
+        ];
+        for (name, loops) in families {
+            let reach = 0.3 * shape(loops.clone()).bbox().diagonal();
+            let c = Case::new(&name, loops, reach);
+            let m = c.offsets().max_inner_distance();
+            for i in 0..12 {
+                let rho = if i % 3 == 2 { -rng.gen_range(0.0..reach) } else { rng.gen_range(0.0..m) };
+                let layer = c.layer(rho);
+                check_layer(&c, &layer, rho, 300, seed * 100 + i, false);
+            }
+        }
+    }
 }
