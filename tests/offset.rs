@@ -392,7 +392,7 @@ fn oracle_checks_can_fail() {
     let moved: Vec<Vertex> = exact.iter().map(|x| Vertex { p: x.p + Point::new(1e-6, 0.0), bulge: 0.0 }).collect();
     has(run(&one(moved, 3.0), &region), "from the boundary");
     has(run(&one(exact.clone(), 3.1), &region), "area 3.1");
-    let backwards = reverse(&[exact.clone()]).remove(0);
+    let backwards = reverse(std::slice::from_ref(&exact)).remove(0);
     has(run(&one(backwards, -3.0), &region), "winding -1");
     let mut spike = exact.clone();
     spike.insert(1, v(3.5, 0.5, 0.0));
@@ -415,7 +415,7 @@ fn oracle_checks_can_fail() {
         |loops: &[OffsetLoop], regions: &[OffsetRegion]| check_parts(&ann, 0.5, loops, regions, 2000, 6, false).0 .0;
     let both = [outer.clone(), hole.clone()];
     assert_eq!(run_ann(&both, &[OffsetRegion { outer: 0, holes: vec![1] }]), Vec::<String>::new());
-    has(run_ann(&[outer.clone()], &region), "in offset");
+    has(run_ann(std::slice::from_ref(&outer), &region), "in offset");
     has(run_ann(&both, &[OffsetRegion { outer: 0, holes: vec![] }]), "in no region");
     has(run_ann(&both, &[OffsetRegion { outer: 1, holes: vec![0] }]), "has area");
     let far = OffsetLoop { vertices: reverse(&[circle(9.0, 0.0, 1.5)]).remove(0), area: -PI * 2.25, region: 0 };
@@ -677,6 +677,25 @@ fn loops_vanish_past_the_largest_inscribed_disk() {
             }
         }
     }
+}
+
+#[test]
+fn d_shape_of_a_major_arc_and_its_chord() {
+    // Found by the fuzz target: a major arc (bulge 73/64) closed by its
+    // chord. The axis is one edge between the two corners (radius 0 at
+    // both nodes); the largest inscribed disk, tangent to the chord and the
+    // arc, lies inside the edge: radius (R + c)/2, c the centre's distance
+    // from the chord.
+    let b: f64 = 73.0 / 64.0;
+    let c = Case::new("D shape", vec![vec![v(-11.0, 20.0, b), v(-11.0, 0.0, 0.0)]], 0.0);
+    let half = 10.0;
+    let radius = half * (1.0 + b * b) / (2.0 * b);
+    let centre = half * (b * b - 1.0) / (2.0 * b);
+    let want = (radius + centre) / 2.0;
+    check_all(&c, &[0.1 * want, 0.5 * want, 0.9 * want, 0.999 * want], 2000);
+    assert!(c.layer(want * 1.001).is_empty());
+    let m = c.offsets().max_inner_distance();
+    assert!((m - want).abs() <= c.tol(), "max_inner_distance {m}, want {want} (the layers up to it are not empty)");
 }
 
 // ---------------------------------------------------------------- shapes with arcs
