@@ -6,6 +6,7 @@
 
 mod error;
 pub mod pocket;
+mod uncut;
 pub mod vcarve;
 
 pub use error::CamError;

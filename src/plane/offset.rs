@@ -144,9 +144,28 @@ impl OffsetLayer {
         self.loops.iter().map(|l| l.area).sum()
     }
 
+    /// The empty offset at `distance`.
+    pub fn empty(distance: f64) -> OffsetLayer {
+        OffsetLayer { distance, loops: Vec::new(), regions: Vec::new(), anchors: Vec::new(), piece_region: Vec::new() }
+    }
+
     /// Whether nothing is left at this distance.
     pub fn is_empty(&self) -> bool {
         self.loops.is_empty()
+    }
+
+    /// The region of this layer that encloses region `r` of `deeper`, an
+    /// inner offset of the same [`Offsets`] at a larger distance. Read off
+    /// the axis: the piece of axis inside `r` lies above this layer's
+    /// distance too, in exactly one of its regions.
+    pub fn region_enclosing(&self, deeper: &OffsetLayer, r: usize) -> Option<usize> {
+        let (part, piece) = *deeper.anchors.get(r)?;
+        if piece == usize::MAX {
+            // A disk's single region.
+            return (self.regions.len() == 1).then_some(0);
+        }
+        let found = *self.piece_region.get(part)?.get(piece)?;
+        (found != u32::MAX).then_some(found as usize)
     }
 }
 
@@ -180,8 +199,10 @@ impl Offsets {
     /// shape).
     pub fn from_axis(shape: &Shape2d, axis: &MedialAxis2d) -> Result<Offsets, OffsetError> {
         check_regions(shape)?;
+        let inner = Trimmer::new(shape, axis);
+        inner.check().map_err(|what| OffsetError::Topology { distance: 0.0, what })?;
         Ok(Offsets {
-            inner: Trimmer::new(shape, axis),
+            inner,
             outer: Vec::new(),
             outer_reach: 0.0,
             tolerance: shape.tolerance(),
@@ -202,7 +223,8 @@ impl Offsets {
     /// The offset at `distance`: inwards for positive distances, outwards for
     /// negative ones (up to the outer reach), the shape's own boundary at 0.
     pub fn layer(&self, distance: f64) -> Result<OffsetLayer, OffsetError> {
-        if !distance.is_finite() || -distance > self.outer_reach {
+        // The reach itself is allowed up to rounding (r·k/k).
+        if !distance.is_finite() || -distance > self.outer_reach * (1.0 + 1e-12) {
             return Err(OffsetError::BadDistance(distance));
         }
         if distance >= 0.0 {
@@ -219,7 +241,8 @@ impl Offsets {
         distances.par_iter().map(|&d| self.layer(d)).collect()
     }
 
-    pub(crate) fn tolerance(&self) -> f64 {
+    /// The shape's touching tolerance, model units.
+    pub fn tolerance(&self) -> f64 {
         self.tolerance
     }
 }
