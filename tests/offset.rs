@@ -1002,3 +1002,16 @@ fn sweep_random_shapes_and_distances() {
         }
     }
 }
+
+/// A large plate of random holes at distances where cavalier_contours
+/// counts loops differently (examples/bench_offset, 7 520 elements):
+/// medax held to the oracle there. Release-size; `--ignored` to run.
+#[test]
+#[ignore]
+fn large_random_holes_where_cavalier_counts_differently() {
+    let c = Case::new("random holes 35", samples::random_holes(35, 1), 0.0);
+    for rho in [0.31439189964164105, 0.3700912519403571, 0.397940928089715] {
+        let layer = c.layer(rho);
+        check_layer(&c, &layer, rho, 20000, 90, false);
+    }
+}
