@@ -1,16 +1,88 @@
-//! Outer offsets as inner offsets of the complement (thesis 2.4.1)
-//! (placeholder while the implementation lands).
+//! Outer offsets as inner offsets of the complement (thesis 2.4.1): the
+//! shape becomes a hole in a circle far enough away that the circle's own
+//! offset never meets the shape's, and each hole becomes a region of its
+//! own. The grown shape Ω ⊕ B_ρ is connected (Ω is), so its outer loop is
+//! the one loop round the shape in the framed part, and every other loop
+//! (pockets closed off by the growth, shrunken holes) is a hole of it.
 
-use super::offset::{OffsetError, OffsetLayer, OffsetOptions, Offsets};
+use super::conquer::medial_axis;
+use super::offset::{OffsetError, OffsetLayer, OffsetLoop, OffsetOptions, OffsetRegion, Offsets};
 use super::offset_trim::Trimmer;
-use crate::shape::Shape2d;
+use crate::kernel::Point;
+use crate::shape::{Loop, Shape2d, ShapeOptions, Vertex};
+use rayon::prelude::*;
 
-pub(crate) fn complement_trimmers(shape: &Shape2d, opts: &OffsetOptions) -> Result<Vec<Trimmer>, OffsetError> {
-    let _ = (shape, opts);
-    unimplemented!("outer offsets")
+/// The frame's radius beyond the shape's circumradius: twice the reach,
+/// so that the frame's offset and the shape's stay apart, plus half the
+/// shape's diagonal, so that the frame is never close for a tiny reach.
+fn frame_radius(shape: &Shape2d, reach: f64) -> f64 {
+    let d = shape.bbox().diagonal();
+    0.5 * d + 2.0 * reach + 0.5 * d
 }
 
+/// The trimmers of the complement's parts: the framed shape first, then
+/// each hole's inside.
+pub(crate) fn complement_trimmers(shape: &Shape2d, opts: &OffsetOptions) -> Result<Vec<Trimmer>, OffsetError> {
+    let reach = opts.outer_reach;
+    if !reach.is_finite() || reach < 0.0 {
+        return Err(OffsetError::BadReach(reach));
+    }
+    let bb = shape.bbox();
+    let c = Point::new(0.5 * (bb.min.x + bb.max.x), 0.5 * (bb.min.y + bb.max.y));
+    let r = frame_radius(shape, reach);
+    // Two half circles, counter-clockwise.
+    let frame =
+        vec![Vertex { p: c + Point::new(r, 0.0), bulge: 1.0 }, Vertex { p: c - Point::new(r, 0.0), bulge: 1.0 }];
+    let shape_opts = ShapeOptions { tolerance: Some(shape.tolerance()), ..ShapeOptions::default() };
+    let mut parts: Vec<Vec<Vec<Vertex>>> = vec![vec![frame, shape.outer().reversed().vertices().to_vec()]];
+    parts.extend(shape.holes().iter().map(|h| vec![h.reversed().vertices().to_vec()]));
+    parts
+        .into_par_iter()
+        .map(|loops| {
+            let part = Shape2d::from_bulge_loops(loops, &shape_opts).map_err(|_| OffsetError::Topology {
+                distance: -reach,
+                what: "the shape's complement is no valid shape",
+            })?;
+            let axis = medial_axis(&part, &opts.axis)?;
+            Ok(Trimmer::new(&part, &axis))
+        })
+        .collect()
+}
+
+/// The outer offset at `distance` > 0 from the complement's parts.
 pub(crate) fn outer_layer(offsets: &Offsets, distance: f64) -> Result<OffsetLayer, OffsetError> {
-    let _ = (offsets, distance);
-    unimplemented!("outer offsets")
+    let tol = offsets.tolerance();
+    let (framed, sources) = offsets.outer[0].layer_sources(distance, tol)?;
+    let mut outer: Option<OffsetLoop> = None;
+    let mut holes: Vec<OffsetLoop> = Vec::new();
+    let frame_region = sources.iter().position(|&s| s == 0).map(|i| framed.loops[i].region);
+    for (lp, &source) in framed.loops.iter().zip(&sources) {
+        if source == 0 {
+            continue;
+        }
+        let flipped = flip(lp);
+        if Some(lp.region) == frame_region {
+            if outer.replace(flipped).is_some() {
+                return Err(OffsetError::Topology { distance: -distance, what: "the grown shape has two outer loops" });
+            }
+        } else {
+            holes.push(flipped);
+        }
+    }
+    let Some(outer) = outer else {
+        return Err(OffsetError::Topology { distance: -distance, what: "the grown shape has no outer loop" });
+    };
+    for part in &offsets.outer[1..] {
+        holes.extend(part.layer(distance, tol)?.loops.iter().map(flip));
+    }
+    let mut loops = vec![outer];
+    loops.extend(holes);
+    let regions = vec![OffsetRegion { outer: 0, holes: (1..loops.len()).collect() }];
+    Ok(OffsetLayer { distance: -distance, loops, regions, anchors: vec![(1, usize::MAX)], piece_region: Vec::new() })
+}
+
+/// The loop the other way round, in region 0.
+fn flip(lp: &OffsetLoop) -> OffsetLoop {
+    let vertices = Loop::new(lp.vertices.clone()).reversed().vertices().to_vec();
+    OffsetLoop { vertices, area: -lp.area, region: 0 }
 }
