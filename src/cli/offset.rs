@@ -78,7 +78,7 @@ fn vcarve_values(s: &str) -> Result<(f64, f64), String> {
     if !(angle > 0.0 && angle < 180.0) {
         return Err(format!("angle {angle} must be between 0 and 180 degrees (exclusive)"));
     }
-    if !(depth > 0.0) {
+    if depth.is_nan() || depth <= 0.0 {
         return Err(format!("maximum depth {depth} must be > 0 (inf for no cap)"));
     }
     Ok((angle, depth))
