@@ -20,14 +20,15 @@ fn picture(shape: &Shape2d, axis: Option<&MedialAxis2d>, width_px: f64, tol: f64
     doc
 }
 
-/// Draws the pocket's uncut regions (filled) and rings (one colour per
-/// level) into `doc`.
-pub fn draw_pocket(doc: &mut SvgDocument, pocket: &Pocket) {
+/// Draws the pocket's uncut regions (filled in orange) and rings into
+/// `doc`: in `ring_colour`, or one colour per level when `None`.
+pub fn draw_pocket(doc: &mut SvgDocument, pocket: &Pocket, ring_colour: Option<&str>) {
     for u in &pocket.uncut {
         draw_loops(doc, u.loops.iter().map(Vec::as_slice), &Style::filled(UNCUT_FILL, UNCUT_FILL, 0.5, 0.75));
     }
     for r in &pocket.rings {
-        draw_loops(doc, r.loops.iter().map(|l| l.vertices.as_slice()), &Style::stroke(layer_colour(r.level), 1.2));
+        let style = Style::stroke(ring_colour.unwrap_or(layer_colour(r.level)), 1.2);
+        draw_loops(doc, r.loops.iter().map(|l| l.vertices.as_slice()), &style);
     }
 }
 
@@ -37,7 +38,7 @@ impl Pocket {
     /// colour per level) and the uncut regions filled in orange.
     pub fn to_svg(&self, shape: &Shape2d, axis: Option<&MedialAxis2d>, width_px: f64, tol: f64) -> String {
         let mut doc = picture(shape, axis, width_px, tol);
-        draw_pocket(&mut doc, self);
+        draw_pocket(&mut doc, self, None);
         let levels = self.rings.iter().map(|r| r.level + 1).max().unwrap_or(0);
         let uncut: f64 = self.uncut.iter().map(|u| u.area).sum();
         doc.caption(
