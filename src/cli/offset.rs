@@ -202,7 +202,9 @@ fn pocket_rings(ctx: &Context, tool_radius: f64, stepover: f64, outside_in: bool
     );
     for level in 0..levels {
         let rings: Vec<_> = p.rings.iter().filter(|r| r.level == level).collect();
-        out!("  level {level} (distance {}): {} ring(s)", rings[0].distance, rings.len());
+        if let Some(first) = rings.first() {
+            out!("  level {level} (distance {}): {} ring(s)", first.distance, rings.len());
+        }
     }
     out!("uncut: {} region(s), area {uncut}", p.uncut.len());
     Ok(Computed::Pocket(p))
