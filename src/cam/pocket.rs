@@ -88,8 +88,80 @@ pub struct Pocket {
     pub truncated: bool,
 }
 
-/// The pocket of the prepared shape for the options.
+/// The pocket of the prepared shape for the options: the offsets at
+/// r, r + s, r + 2s, … while anything is left, each connected region of
+/// each level one ring, nested under the ring of the level before that
+/// encloses it (found on the medial axis, not by geometry: a region's
+/// anchor piece of axis lies in exactly one region of every shallower
+/// level).
 pub fn pocket(offsets: &Offsets, opts: &PocketOptions) -> Result<Pocket, CamError> {
-    let _ = (offsets, opts);
-    unimplemented!("pocket rings")
+    let positive =
+        |name, v: f64| if v.is_finite() && v > 0.0 { Ok(()) } else { Err(CamError::BadOption { name, value: v }) };
+    positive("tool_radius", opts.tool_radius)?;
+    positive("stepover", opts.stepover)?;
+    if opts.max_levels == 0 {
+        return Err(CamError::BadOption { name: "max_levels", value: 0.0 });
+    }
+    let deepest = offsets.max_inner_distance();
+    let mut distances = Vec::new();
+    while distances.len() < opts.max_levels {
+        let d = opts.tool_radius + distances.len() as f64 * opts.stepover;
+        if d >= deepest {
+            break;
+        }
+        distances.push(d);
+    }
+    let truncated = opts.tool_radius + distances.len() as f64 * opts.stepover < deepest;
+    let layers = offsets.layers(&distances)?;
+    let mut rings: Vec<PocketRing> = Vec::new();
+    // First ring of each level, to turn a layer's region index into a ring.
+    let mut level_start = Vec::with_capacity(layers.len());
+    for (k, layer) in layers.iter().enumerate() {
+        level_start.push(rings.len());
+        for (r, region) in layer.regions.iter().enumerate() {
+            let mut loops = vec![layer.loops[region.outer].clone()];
+            loops.extend(region.holes.iter().map(|&h| layer.loops[h].clone()));
+            let parent = if k == 0 {
+                None
+            } else {
+                let up = layers[k - 1].region_enclosing(layer, r).ok_or(CamError::Offset(
+                    crate::plane::OffsetError::Topology {
+                        distance: layer.distance,
+                        what: "a ring has no enclosing ring",
+                    },
+                ))?;
+                Some(level_start[k - 1] + up)
+            };
+            rings.push(PocketRing { level: k, distance: layer.distance, loops, parent, children: Vec::new() });
+        }
+    }
+    for i in 0..rings.len() {
+        if let Some(p) = rings[i].parent {
+            rings[p].children.push(i);
+        }
+    }
+    let order = machining_order(&rings, opts.order);
+    Ok(Pocket { rings, order, uncut: Vec::new(), truncated })
+}
+
+/// Depth-first over the ring tree from the level-0 rings: children before
+/// their parent (inside-out) or after it (outside-in).
+fn machining_order(rings: &[PocketRing], order: PocketOrder) -> Vec<usize> {
+    let mut out = Vec::with_capacity(rings.len());
+    // (ring, children done) on an explicit stack: trees can be deep.
+    let mut stack: Vec<(usize, bool)> =
+        rings.iter().enumerate().rev().filter(|(_, r)| r.parent.is_none()).map(|(i, _)| (i, false)).collect();
+    while let Some((i, expanded)) = stack.pop() {
+        if expanded {
+            out.push(i);
+            continue;
+        }
+        if order == PocketOrder::OutsideIn {
+            out.push(i);
+        } else {
+            stack.push((i, true));
+        }
+        stack.extend(rings[i].children.iter().rev().map(|&c| (c, false)));
+    }
+    out
 }

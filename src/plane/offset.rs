@@ -144,9 +144,28 @@ impl OffsetLayer {
         self.loops.iter().map(|l| l.area).sum()
     }
 
+    /// The empty offset at `distance`.
+    pub fn empty(distance: f64) -> OffsetLayer {
+        OffsetLayer { distance, loops: Vec::new(), regions: Vec::new(), anchors: Vec::new(), piece_region: Vec::new() }
+    }
+
     /// Whether nothing is left at this distance.
     pub fn is_empty(&self) -> bool {
         self.loops.is_empty()
+    }
+
+    /// The region of this layer that encloses region `r` of `deeper`, an
+    /// inner offset of the same [`Offsets`] at a larger distance. Read off
+    /// the axis: the piece of axis inside `r` lies above this layer's
+    /// distance too, in exactly one of its regions.
+    pub fn region_enclosing(&self, deeper: &OffsetLayer, r: usize) -> Option<usize> {
+        let (part, piece) = *deeper.anchors.get(r)?;
+        if piece == usize::MAX {
+            // A disk's single region.
+            return (self.regions.len() == 1).then_some(0);
+        }
+        let found = *self.piece_region.get(part)?.get(piece)?;
+        (found != u32::MAX).then_some(found as usize)
     }
 }
 
