@@ -39,8 +39,8 @@ impl Pocket {
     pub fn to_svg(&self, shape: &Shape2d, axis: Option<&MedialAxis2d>, width_px: f64, tol: f64) -> String {
         let mut doc = picture(shape, axis, width_px, tol);
         draw_pocket(&mut doc, self, None);
-        let levels = self.rings.iter().map(|r| r.level + 1).max().unwrap_or(0);
-        let uncut: f64 = self.uncut.iter().map(|u| u.area).sum();
+        let levels = self.level_count();
+        let uncut = self.uncut_area();
         doc.caption(
             0,
             &format!(
@@ -67,9 +67,13 @@ impl VCarve {
     /// filled in grey with its rings, and the paths coloured by depth
     /// (light shallow, dark deep).
     pub fn to_svg(&self, shape: &Shape2d, axis: Option<&MedialAxis2d>, width_px: f64, tol: f64) -> String {
-        let mut doc = picture(shape, axis, width_px, tol);
+        // The flat bottom under the axis, so that the axis shows through.
+        let mut doc = shape_document(shape, 0.0, width_px);
         let flat = self.flat.loops.iter().map(|l| l.vertices.as_slice());
         draw_loops(&mut doc, flat, &Style::filled("#34495e", "#b0bec5", 1.0, 0.8));
+        if let Some(axis) = axis {
+            draw_axis_thin(&mut doc, shape, axis, tol);
+        }
         let deepest = self.paths.iter().flat_map(|p| &p.points).map(|p| p[2]).fold(f64::MIN_POSITIVE, f64::max);
         // Runs of segments in one tenth of the depth range share a stroke.
         let bin = |d: f64| ((d / deepest) * 10.0).floor().min(9.0);

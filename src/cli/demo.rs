@@ -37,7 +37,7 @@ pub fn run(output: &Path) -> Result<(), ExitCode> {
     let t = Instant::now();
     let offsets = Offsets::from_axis(&shape, &axis).map_err(|e| bug(e.to_string()))?;
     let rings = pocket(&offsets, &PocketOptions::new(TOOL_RADIUS, STEPOVER)).map_err(|e| bug(e.to_string()))?;
-    let uncut: f64 = rings.uncut.iter().map(|u| u.area).sum();
+    let uncut = rings.uncut_area();
     let pocket_caption = format!(
         "pocket rings (grey): tool radius {TOOL_RADIUS}, stepover {STEPOVER}: {} rings; uncut (orange) area {uncut:.1}",
         rings.rings.len()

@@ -192,8 +192,8 @@ fn pocket_rings(ctx: &Context, tool_radius: f64, stepover: f64, outside_in: bool
     let order = if outside_in { PocketOrder::OutsideIn } else { PocketOrder::InsideOut };
     let opts = PocketOptions { order, ..PocketOptions::new(tool_radius, stepover) };
     let p = pocket(&offsets, &opts).map_err(|e| e.to_string())?;
-    let levels = p.rings.iter().map(|r| r.level + 1).max().unwrap_or(0);
-    let uncut: f64 = p.uncut.iter().map(|u| u.area).sum();
+    let levels = p.level_count();
+    let uncut = p.uncut_area();
     out!(
         "pocket: {} ring(s) in {levels} level(s), {} order{}",
         p.rings.len(),

@@ -218,10 +218,10 @@ pub unsafe extern "C" fn mx_pocket_get_info(pocket: *const mx_pocket, out: *mut 
             let p = &h.pocket;
             Ok(mx_pocket_info {
                 ring_count: p.rings.len(),
-                level_count: p.rings.iter().map(|r| r.level + 1).max().unwrap_or(0),
+                level_count: p.level_count(),
                 order: ptr_or_null(&p.order),
                 uncut_count: p.uncut.len(),
-                uncut_area: p.uncut.iter().map(|u| u.area).sum(),
+                uncut_area: p.uncut_area(),
                 truncated: p.truncated.into(),
             })
         })
