@@ -1,6 +1,7 @@
 //! The `medax` binary: the axis of a shape with a hole and a Voronoi diagram through the CLI
 //! (JSON contract: one cycle per hole), and a closed stdout is not a crash.
 
+use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 fn medax() -> Command {
@@ -93,10 +94,18 @@ fn scratch(name: &str) -> std::path::PathBuf {
     dir
 }
 
-fn run_ok(args: &[&std::ffi::OsStr]) -> String {
-    let out = medax().args(args).output().unwrap();
-    assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
-    String::from_utf8_lossy(&out.stdout).into_owned()
+/// Runs `medax offset SHAPE MODE... --json DIR/NAME.json --dxf DIR/NAME.dxf
+/// --svg DIR/NAME.svg`, which must succeed: its stdout and the three paths.
+fn run_offset(shape: &Path, mode: &[&str], dir: &Path, name: &str) -> (String, [PathBuf; 3]) {
+    let paths = ["json", "dxf", "svg"].map(|ext| dir.join(format!("{name}.{ext}")));
+    let mut cmd = medax();
+    cmd.arg("offset").arg(shape).args(mode);
+    for (flag, path) in ["--json", "--dxf", "--svg"].iter().zip(&paths) {
+        cmd.arg(flag).arg(path);
+    }
+    let out = cmd.output().unwrap();
+    assert!(out.status.success(), "{mode:?}: {}", String::from_utf8_lossy(&out.stderr));
+    (String::from_utf8_lossy(&out.stdout).into_owned(), paths)
 }
 
 fn json_file(path: &std::path::Path) -> serde_json::Value {
@@ -130,19 +139,7 @@ fn offset_distances_as_json_dxf_and_svg() {
     use std::f64::consts::PI;
     let dir = scratch("offset");
     let shape = holed_square(&dir);
-    let (json, dxf, svg) = (dir.join("o.json"), dir.join("o.dxf"), dir.join("o.svg"));
-    let stdout = run_ok(&[
-        "offset".as_ref(),
-        shape.as_ref(),
-        "--distance".as_ref(),
-        "0.25,-0.5".as_ref(),
-        "--json".as_ref(),
-        json.as_ref(),
-        "--dxf".as_ref(),
-        dxf.as_ref(),
-        "--svg".as_ref(),
-        svg.as_ref(),
-    ]);
+    let (stdout, [json, dxf, svg]) = run_offset(&shape, &["--distance", "0.25,-0.5"], &dir, "o");
     assert!(stdout.contains("distance 0.25: 2 loop(s), 1 region(s)"), "{stdout}");
     assert!(stdout.contains("distance -0.5: 2 loop(s), 1 region(s)"), "{stdout}");
     let doc = json_file(&json);
@@ -184,24 +181,10 @@ fn offset_distances_as_json_dxf_and_svg() {
 fn offset_pocket_rings_in_both_orders() {
     let dir = scratch("pocket");
     let shape = holed_square(&dir);
-    let (json, dxf, svg) = (dir.join("p.json"), dir.join("p.dxf"), dir.join("p.svg"));
     for outside_in in [false, true] {
-        let mut args: Vec<&std::ffi::OsStr> = vec![
-            "offset".as_ref(),
-            shape.as_ref(),
-            "--pocket".as_ref(),
-            "0.1,0.15".as_ref(),
-            "--json".as_ref(),
-            json.as_ref(),
-            "--dxf".as_ref(),
-            dxf.as_ref(),
-            "--svg".as_ref(),
-            svg.as_ref(),
-        ];
-        if outside_in {
-            args.push("--outside-in".as_ref());
-        }
-        let stdout = run_ok(&args);
+        let mode: &[&str] =
+            if outside_in { &["--pocket", "0.1,0.15", "--outside-in"] } else { &["--pocket", "0.1,0.15"] };
+        let (stdout, [json, dxf, svg]) = run_offset(&shape, mode, &dir, "p");
         assert!(stdout.contains("pocket: ") && stdout.contains("level 0 (distance 0.1): 1 ring(s)"), "{stdout}");
         let doc = json_file(&json);
         let rings = doc["rings"].as_array().unwrap();
@@ -245,19 +228,7 @@ fn offset_pocket_rings_in_both_orders() {
 fn offset_vcarve_paths_and_flat_bottom() {
     let dir = scratch("vcarve");
     let shape = holed_square(&dir);
-    let (json, dxf, svg) = (dir.join("v.json"), dir.join("v.dxf"), dir.join("v.svg"));
-    let stdout = run_ok(&[
-        "offset".as_ref(),
-        shape.as_ref(),
-        "--vcarve".as_ref(),
-        "90,0.3".as_ref(),
-        "--json".as_ref(),
-        json.as_ref(),
-        "--dxf".as_ref(),
-        dxf.as_ref(),
-        "--svg".as_ref(),
-        svg.as_ref(),
-    ]);
+    let (stdout, [json, dxf, svg]) = run_offset(&shape, &["--vcarve", "90,0.3"], &dir, "v");
     assert!(stdout.contains("v-carve: ") && stdout.contains("flat bottom: 2 ring(s)"), "{stdout}");
     let doc = json_file(&json);
     assert_eq!(doc["angle_deg"].as_f64(), Some(90.0));
