@@ -9,6 +9,7 @@ mod dxf;
 mod error;
 mod json;
 pub mod pocket;
+mod uncut;
 pub mod vcarve;
 
 pub use error::CamError;

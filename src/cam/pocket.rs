@@ -2,6 +2,7 @@
 //! stepover s, until nothing is left, as a tree in machining order, with the
 //! area the tool leaves uncut.
 
+use super::uncut::band_regions;
 use super::CamError;
 use crate::plane::{OffsetLoop, Offsets};
 use crate::shape::Vertex;
@@ -154,7 +155,39 @@ pub fn pocket(offsets: &Offsets, opts: &PocketOptions) -> Result<Pocket, CamErro
         }
     }
     let order = machining_order(&rings, opts.order);
-    Ok(Pocket { rings, order, uncut: Vec::new(), truncated })
+    let uncut = uncut_regions(offsets, opts, &distances, deepest)?;
+    Ok(Pocket { rings, order, uncut, truncated })
+}
+
+/// The wall's uncut band, the scallops between rings (only when the
+/// stepover exceeds the tool radius) and what is left inside the last ring.
+fn uncut_regions(
+    offsets: &Offsets,
+    opts: &PocketOptions,
+    distances: &[f64],
+    deepest: f64,
+) -> Result<Vec<UncutRegion>, CamError> {
+    let (r, tol) = (opts.tool_radius, offsets.tolerance());
+    let trimmer = &offsets.inner;
+    let mut out = band_regions(trimmer, 0.0, r, r, UncutKind::Wall, tol)?;
+    if opts.stepover > r {
+        for w in distances.windows(2) {
+            out.extend(band_regions(trimmer, w[0] + r, w[1], r, UncutKind::Scallop, tol)?);
+        }
+    }
+    if let Some(&last) = distances.last() {
+        if last + r < deepest {
+            let layer = offsets.layer(last + r)?;
+            for region in &layer.regions {
+                let mut loops = vec![layer.loops[region.outer].vertices.clone()];
+                loops.extend(region.holes.iter().map(|&h| layer.loops[h].vertices.clone()));
+                let area =
+                    layer.loops[region.outer].area + region.holes.iter().map(|&h| layer.loops[h].area).sum::<f64>();
+                out.push(UncutRegion { kind: UncutKind::Scallop, loops, area });
+            }
+        }
+    }
+    Ok(out)
 }
 
 /// Depth-first over the ring tree from the level-0 rings: children before

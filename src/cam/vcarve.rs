@@ -41,9 +41,9 @@ pub struct VCarve {
 }
 
 /// V-carve paths of `shape` from its medial axis `axis`: every edge sampled
-/// to the tolerance, cut where its radius passes the flat radius (the cut
-/// point interpolated between samples, so within the tolerance of the
-/// curve), and joined into long paths through nodes where only two pieces
+/// to the tolerance, cut where its radius passes the flat radius (on the
+/// chord between samples, so within the tolerance of the curve), and
+/// joined into long paths through nodes where only two pieces
 /// meet.
 pub fn vcarve(shape: &Shape2d, axis: &MedialAxis2d, opts: &VCarveOptions) -> Result<VCarve, CamError> {
     let a = opts.angle_deg;
@@ -62,8 +62,23 @@ pub fn vcarve(shape: &Shape2d, axis: &MedialAxis2d, opts: &VCarveOptions) -> Res
     let sampled = axis.sampled(shape, tol);
     // Pieces of edges below the flat radius, as polylines of (point, radius).
     let mut pieces: Vec<Vec<(Point, f64)>> = Vec::new();
-    for samples in &sampled {
+    for (edge, samples) in axis.edges.iter().zip(&sampled) {
         let mut cur: Vec<(Point, f64)> = Vec::new();
+        // The radius is not linear between samples (between two points it
+        // is hyperbolic along a straight edge): the cut is where the
+        // distance to the edge's site reaches the flat radius on the chord.
+        let cut = |p: Point, q: Point| {
+            let (mut lo, mut hi) = (p, q);
+            for _ in 0..60 {
+                let m = lo.mid(hi);
+                if edge.sites[0].distance(shape, m) <= flat_radius {
+                    lo = m;
+                } else {
+                    hi = m;
+                }
+            }
+            (lo.mid(hi), flat_radius)
+        };
         for w in samples.windows(2) {
             let ((p, r), (q, s)) = (w[0], w[1]);
             if cur.is_empty() && r <= flat_radius {
@@ -72,13 +87,11 @@ pub fn vcarve(shape: &Shape2d, axis: &MedialAxis2d, opts: &VCarveOptions) -> Res
             match (r <= flat_radius, s <= flat_radius) {
                 (true, true) => cur.push((q, s)),
                 (true, false) => {
-                    let t = (flat_radius - r) / (s - r);
-                    cur.push((p + (q - p) * t, flat_radius));
+                    cur.push(cut(p, q));
                     pieces.push(std::mem::take(&mut cur));
                 }
                 (false, true) => {
-                    let t = (flat_radius - r) / (s - r);
-                    cur.push((p + (q - p) * t, flat_radius));
+                    cur.push(cut(q, p));
                     cur.push((q, s));
                 }
                 (false, false) => {}

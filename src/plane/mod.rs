@@ -26,7 +26,7 @@ mod offset_outer;
 mod offset_prim;
 mod offset_profile;
 mod offset_tour;
-mod offset_trim;
+pub(crate) mod offset_trim;
 pub mod subshape;
 mod tour;
 pub mod voronoi;

@@ -199,8 +199,10 @@ impl Offsets {
     /// shape).
     pub fn from_axis(shape: &Shape2d, axis: &MedialAxis2d) -> Result<Offsets, OffsetError> {
         check_regions(shape)?;
+        let inner = Trimmer::new(shape, axis);
+        inner.check().map_err(|what| OffsetError::Topology { distance: 0.0, what })?;
         Ok(Offsets {
-            inner: Trimmer::new(shape, axis),
+            inner,
             outer: Vec::new(),
             outer_reach: 0.0,
             tolerance: shape.tolerance(),
@@ -221,7 +223,8 @@ impl Offsets {
     /// The offset at `distance`: inwards for positive distances, outwards for
     /// negative ones (up to the outer reach), the shape's own boundary at 0.
     pub fn layer(&self, distance: f64) -> Result<OffsetLayer, OffsetError> {
-        if !distance.is_finite() || -distance > self.outer_reach {
+        // The reach itself is allowed up to rounding (r·k/k).
+        if !distance.is_finite() || -distance > self.outer_reach * (1.0 + 1e-12) {
             return Err(OffsetError::BadDistance(distance));
         }
         if distance >= 0.0 {
@@ -238,7 +241,8 @@ impl Offsets {
         distances.par_iter().map(|&d| self.layer(d)).collect()
     }
 
-    pub(crate) fn tolerance(&self) -> f64 {
+    /// The shape's touching tolerance, model units.
+    pub fn tolerance(&self) -> f64 {
         self.tolerance
     }
 }

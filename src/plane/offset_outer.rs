@@ -44,7 +44,9 @@ pub(crate) fn complement_trimmers(shape: &Shape2d, opts: &OffsetOptions) -> Resu
                 what: "the shape's complement is no valid shape",
             })?;
             let axis = medial_axis(&part, &opts.axis)?;
-            Ok(Trimmer::new(&part, &axis))
+            let t = Trimmer::new(&part, &axis);
+            t.check().map_err(|what| OffsetError::Topology { distance: -reach, what })?;
+            Ok(t)
         })
         .collect()
 }

@@ -39,18 +39,48 @@ pub(crate) struct Trimmer {
 /// How the walk enters a state.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Entry {
-    /// At the start of the piece's side (its radius there exceeds ρ).
+    /// At the start of the piece's side (its radius there lies in the
+    /// band).
     Start,
-    /// At the disk of radius ρ, coming over from the other side.
-    Crossing(Point, [f64; 2]),
+    /// At the disk of the band's lower radius, coming over from the other
+    /// side.
+    Low(Point, [f64; 2]),
+    /// At the disk of the band's upper radius, coming over from the other
+    /// side.
+    High(Point, [f64; 2]),
 }
 
 /// A piece of an offset loop on one primitive.
-#[derive(Debug, Clone, Copy)]
-struct Run {
-    prim: OffsetPrim,
-    start: Point,
-    advance: f64,
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Run {
+    pub prim: OffsetPrim,
+    pub start: Point,
+    pub advance: f64,
+}
+
+/// A piece of the boundary of a band {lo < dist < ·, radius of the
+/// maximal disk at the footpoint < hi}.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum BandPiece {
+    /// The offset at the lower radius along one primitive.
+    Run(Run),
+    /// Across the edge along the two footpoint normals of the disk of the
+    /// upper radius (centre `centre`), from the offset point on one side to
+    /// the other's.
+    Turn { centre: Point, from: Point, to: Point },
+}
+
+/// A closed band loop and its component (union–find root).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct BandLoop {
+    pub pieces: Vec<BandPiece>,
+    pub component: usize,
+}
+
+/// Whether a piece of edge with end radii `r0`, `r1` (monotonic between)
+/// reaches into the open band (`lo`, `hi`).
+fn in_band(r0: f64, r1: f64, lo: f64, hi: f64) -> bool {
+    r0.max(r1) > lo && r0.min(r1) < hi
 }
 
 impl Trimmer {
@@ -107,6 +137,11 @@ impl Trimmer {
         }
     }
 
+    /// Whether the axis's edge sides form the tour round the boundary.
+    pub(crate) fn check(&self) -> Result<(), &'static str> {
+        self.tour.as_ref().map(|_| ()).map_err(|e| *e)
+    }
+
     /// The radius of the largest inscribed disk, model units.
     pub(crate) fn max_radius(&self) -> f64 {
         self.max_radius
@@ -144,71 +179,100 @@ impl Trimmer {
     /// [`Trimmer::layer`] and, for each loop, the lowest index of the shape
     /// loops it runs along.
     pub(crate) fn layer_sources(&self, rho: f64, tol: f64) -> Result<(OffsetLayer, Vec<u32>), OffsetError> {
-        let topology = |what| OffsetError::Topology { distance: rho, what };
         if let Some((lp, centre, radius)) = &self.disk {
             let layer = disk_layer(lp, *centre, *radius, rho);
             let sources = vec![0; layer.loops.len()];
             return Ok((layer, sources));
         }
+        let (band, mut uf) = self.band_loops(rho, f64::INFINITY)?;
+        let mut loops: Vec<(OffsetLoop, usize, usize)> = Vec::new();
+        let mut sources = Vec::new();
+        for (bl, piece) in band {
+            let runs: Vec<Run> = bl
+                .pieces
+                .iter()
+                .filter_map(|p| match p {
+                    BandPiece::Run(r) => Some(*r),
+                    BandPiece::Turn { .. } => None,
+                })
+                .collect();
+            let source = runs.iter().map(|r| r.prim.loop_index).min().unwrap_or(0);
+            if let Some(vertices) = close_runs(runs, rho, tol) {
+                let area = Loop::new(vertices.clone()).signed_area();
+                loops.push((OffsetLoop { vertices, area, region: 0 }, bl.component, piece));
+                sources.push(source);
+            }
+        }
+        Ok((self.regions(loops, &mut uf, rho)?, sources))
+    }
+
+    /// Every closed loop bounding the band of points at distance above `lo`
+    /// whose footpoint's maximal disk has a radius below `hi` (`hi` infinite:
+    /// the inner offset at `lo`), with the piece of axis it started from,
+    /// and the union–find over the axis in the band.
+    pub(crate) fn band_loops(&self, lo: f64, hi: f64) -> Result<(Vec<(BandLoop, usize)>, UnionFind), OffsetError> {
+        let topology = |what| OffsetError::Topology { distance: lo, what };
         let tour = self.tour.as_ref().map_err(|w| topology(w))?;
         let total = *self.sub_base.last().unwrap_or(&0) as usize;
         let mut uf = UnionFind::new(self.nodes + 2 * total - self.profiles.len());
         for (e, p) in self.profiles.iter().enumerate() {
             for j in 0..p.breaks.len() - 1 {
+                if !in_band(p.breaks[j].radius, p.breaks[j + 1].radius, lo, hi) {
+                    continue;
+                }
                 for i in [j, j + 1] {
-                    if p.breaks[i].radius > rho && p.breaks[j].radius.max(p.breaks[j + 1].radius) > rho {
+                    let r = p.breaks[i].radius;
+                    if r > lo && r < hi {
                         uf.union(self.piece_id(e, j), self.break_id(e, i));
                     }
                 }
             }
         }
         let mut visited = vec![false; 2 * total];
-        let mut loops: Vec<(OffsetLoop, usize, usize)> = Vec::new();
-        let mut sources = Vec::new();
+        let mut out = Vec::new();
         for (e, p) in self.profiles.iter().enumerate() {
             for j in 0..p.breaks.len() - 1 {
-                if p.breaks[j].radius.max(p.breaks[j + 1].radius) <= rho {
+                if !in_band(p.breaks[j].radius, p.breaks[j + 1].radius, lo, hi) {
                     continue;
                 }
                 for k in 0..2 {
                     if visited[2 * (self.sub_base[e] as usize + j) + k] {
                         continue;
                     }
-                    let runs = self.walk(tour, (e, j, k), rho, &mut visited).map_err(topology)?;
-                    let source = runs.iter().map(|r| r.prim.loop_index).min().unwrap_or(0);
-                    if let Some(vertices) = close_runs(runs, rho, tol) {
-                        let area = Loop::new(vertices.clone()).signed_area();
-                        let piece = self.sub_base[e] as usize + j;
-                        loops.push((OffsetLoop { vertices, area, region: 0 }, uf.find(self.piece_id(e, j)), piece));
-                        sources.push(source);
-                    }
+                    let pieces = self.walk(tour, (e, j, k), (lo, hi), &mut visited).map_err(topology)?;
+                    let component = uf.find(self.piece_id(e, j));
+                    out.push((BandLoop { pieces, component }, self.sub_base[e] as usize + j));
                 }
             }
         }
-        Ok((self.regions(loops, &mut uf, rho)?, sources))
+        Ok((out, uf))
     }
 
-    /// Walks one closed loop from state (edge, piece, side).
+    /// Walks one closed loop of the band (`lo`, `hi`) from state (edge,
+    /// piece, side).
     fn walk(
         &self,
         tour: &Tour,
         start: (usize, usize, usize),
-        rho: f64,
+        (lo, hi): (f64, f64),
         visited: &mut [bool],
-    ) -> Result<Vec<Run>, &'static str> {
+    ) -> Result<Vec<BandPiece>, &'static str> {
         let (mut e, mut j, mut k) = start;
         let first = {
             let p = &self.profiles[e];
             let r_in = p.breaks[if k == 1 { j } else { j + 1 }].radius;
-            if r_in > rho {
-                Entry::Start
+            if r_in <= lo {
+                let (c, u) = p.crossing(j, lo);
+                Entry::Low(c, u)
+            } else if r_in >= hi {
+                let (c, u) = p.crossing(j, hi);
+                Entry::High(c, u)
             } else {
-                let (c, u) = p.crossing(j, rho);
-                Entry::Crossing(c, u)
+                Entry::Start
             }
         };
         let mut entry = first;
-        let mut runs = Vec::new();
+        let mut out = Vec::new();
         let limit = visited.len() + 2;
         for _ in 0..limit {
             visited[2 * (self.sub_base[e] as usize + j) + k] = true;
@@ -216,11 +280,26 @@ impl Trimmer {
             let (bi, bo) = if k == 1 { (j, j + 1) } else { (j + 1, j) };
             let prim = p.prims[k];
             let (start_point, u0) = match entry {
-                Entry::Start => (prim.point_at(p.breaks[bi].u[k], rho), p.breaks[bi].u[k]),
-                Entry::Crossing(c, u) => (c, u[k]),
+                Entry::Start => (prim.point_at(p.breaks[bi].u[k], lo), p.breaks[bi].u[k]),
+                Entry::Low(c, u) => (c, u[k]),
+                Entry::High(_, u) => (prim.point_at(u[k], lo), u[k]),
             };
-            if p.breaks[bo].radius > rho {
-                runs.push(Run { prim, start: start_point, advance: prim.advance(u0, p.breaks[bo].u[k]) });
+            let r_out = p.breaks[bo].radius;
+            let run = |u1: f64| BandPiece::Run(Run { prim, start: start_point, advance: prim.advance(u0, u1) });
+            if r_out <= lo {
+                let (c, u) = p.crossing(j, lo);
+                out.push(run(u[k]));
+                entry = Entry::Low(c, u);
+                k = 1 - k;
+            } else if r_out >= hi {
+                let (c, u) = p.crossing(j, hi);
+                out.push(run(u[k]));
+                let (from, to) = (prim.point_at(u[k], lo), p.prims[1 - k].point_at(u[1 - k], lo));
+                out.push(BandPiece::Turn { centre: c, from, to });
+                entry = Entry::High(c, u);
+                k = 1 - k;
+            } else {
+                out.push(run(p.breaks[bo].u[k]));
                 entry = Entry::Start;
                 if k == 1 && j + 1 < self.pieces(e) {
                     j += 1;
@@ -230,25 +309,24 @@ impl Trimmer {
                     let h = 2 * e + k;
                     for gap in tour.gaps(h) {
                         let (arc, u) = self.arcs[gap];
-                        runs.push(Run { prim: arc, start: arc.point_at(u, rho), advance: arc.bound });
+                        out.push(BandPiece::Run(Run { prim: arc, start: arc.point_at(u, lo), advance: arc.bound }));
                     }
                     let hn = tour.next[h] as usize;
                     (e, k) = (hn / 2, hn % 2);
                     j = if k == 1 { 0 } else { self.pieces(e) - 1 };
                 }
-            } else {
-                let (c, u) = p.crossing(j, rho);
-                runs.push(Run { prim, start: start_point, advance: prim.advance(u0, u[k]) });
-                entry = Entry::Crossing(c, u);
-                k = 1 - k;
             }
             if (e, j, k) == start {
-                let same =
-                    matches!((entry, first), (Entry::Start, Entry::Start) | (Entry::Crossing(..), Entry::Crossing(..)));
+                let same = matches!(
+                    (entry, first),
+                    (Entry::Start, Entry::Start)
+                        | (Entry::Low(..), Entry::Low(..))
+                        | (Entry::High(..), Entry::High(..))
+                );
                 if !same {
                     return Err("the walk came back to its start another way");
                 }
-                return Ok(runs);
+                return Ok(out);
             }
         }
         Err("the walk did not close")
@@ -348,7 +426,7 @@ fn close_runs(mut runs: Vec<Run>, rho: f64, tol: f64) -> Option<Vec<Vertex>> {
 }
 
 /// Union–find with path halving.
-struct UnionFind {
+pub(crate) struct UnionFind {
     parent: Vec<u32>,
 }
 
@@ -357,7 +435,7 @@ impl UnionFind {
         UnionFind { parent: (0..n as u32).collect() }
     }
 
-    fn find(&mut self, mut x: usize) -> usize {
+    pub(crate) fn find(&mut self, mut x: usize) -> usize {
         while self.parent[x] as usize != x {
             let g = self.parent[self.parent[x] as usize];
             self.parent[x] = g;
