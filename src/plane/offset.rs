@@ -201,12 +201,7 @@ impl Offsets {
         check_regions(shape)?;
         let inner = Trimmer::new(shape, axis);
         inner.check().map_err(|what| OffsetError::Topology { distance: 0.0, what })?;
-        Ok(Offsets {
-            inner,
-            outer: Vec::new(),
-            outer_reach: 0.0,
-            tolerance: shape.tolerance(),
-        })
+        Ok(Offsets { inner, outer: Vec::new(), outer_reach: 0.0, tolerance: shape.tolerance() })
     }
 
     /// The largest inner distance with anything left: the radius of the
