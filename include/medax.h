@@ -33,6 +33,28 @@
 #define MX_AXIS_MIN_RELATIVE_SAMPLE_TOLERANCE 1e-12
 
 /**
+ * `mx_pocket_options.order`: every ring after the rings inside it (the
+ * wall last, as a finishing pass).
+ */
+#define MX_POCKET_INSIDE_OUT 0
+
+/**
+ * `mx_pocket_options.order`: every ring before the rings inside it.
+ */
+#define MX_POCKET_OUTSIDE_IN 1
+
+/**
+ * `mx_uncut_region.kind`: a cusp between rings that the stepover left.
+ */
+#define MX_UNCUT_SCALLOP 0
+
+/**
+ * `mx_uncut_region.kind`: corners and necks along the wall narrower than
+ * the tool.
+ */
+#define MX_UNCUT_WALL 1
+
+/**
  * `mx_element.kind` of a line segment.
  */
 #define MX_ELEMENT_SEGMENT 0
@@ -303,12 +325,40 @@ typedef struct mx_ball mx_ball;
 typedef struct mx_mesh3d mx_mesh3d;
 
 /**
+ * The offset at one distance: closed loops of segments and arcs and the
+ * regions they bound. Opaque; from `mx_offsets_layer`,
+ * `mx_offsets_layers` (release with `mx_offset_layer_free`) or borrowed
+ * from `mx_vcarve_flat`. Immutable.
+ */
+typedef struct mx_offset_layer mx_offset_layer;
+
+/**
+ * A shape prepared for offsets at any distance: its medial axis and, for
+ * outer offsets, the axes of its complement. Opaque; create with
+ * `mx_offsets_compute`, release with `mx_offsets_free`. Immutable: a
+ * `const mx_offsets*` may be used from several threads at once.
+ */
+typedef struct mx_offsets mx_offsets;
+
+/**
+ * The rings of a pocket. Opaque; create with `mx_pocket_compute`, release
+ * with `mx_pocket_free`. Immutable.
+ */
+typedef struct mx_pocket mx_pocket;
+
+/**
  * A validated 2D shape: an outer loop and holes of segments and circular
  * arcs. Opaque; create with `mx_shape2d_from_*`, release with
  * `mx_shape2d_free`. Immutable: a `const mx_shape2d*` may be used from
  * several threads at once.
  */
 typedef struct mx_shape2d mx_shape2d;
+
+/**
+ * V-carve paths and the flat bottom. Opaque; create with
+ * `mx_vcarve_compute`, release with `mx_vcarve_free`. Immutable.
+ */
+typedef struct mx_vcarve mx_vcarve;
 
 /**
  * A computed Voronoi diagram. Opaque; create with `mx_voronoi_compute`,
@@ -473,6 +523,256 @@ typedef struct mx_error_info {
 } mx_error_info;
 
 /**
+ * Options for `mx_offsets_compute`. Initialise with
+ * `mx_offset_options_default` (which sets `struct_size`).
+ */
+typedef struct mx_offset_options {
+  /**
+   * `sizeof(mx_offset_options)` as the caller was compiled.
+   */
+  size_t struct_size;
+  /**
+   * Seed of the divide step's random choices (as `mx_axis_options.seed`).
+   */
+  uint64_t seed;
+  /**
+   * Worker threads, as `mx_axis_options.threads`; also used for the
+   * layers and pockets of these offsets.
+   */
+  size_t threads;
+  /**
+   * Outer offsets (negative distances) are available down to
+   * −`outer_reach`, model units (finite, ≥ 0; default 0: inner offsets
+   * only). A larger reach costs nothing per layer but frames the
+   * complement farther away.
+   */
+  double outer_reach;
+  /**
+   * Optional progress callback, as `mx_axis_options.progress` (called
+   * with 0 before and 1 after; nonzero at 0 cancels).
+   */
+  mx_progress_fn progress;
+  /**
+   * Passed unchanged to `progress`.
+   */
+  void *user;
+} mx_offset_options;
+
+/**
+ * Facts about one offset layer.
+ */
+typedef struct mx_offset_layer_info {
+  /**
+   * The distance, model units: positive inwards, negative outwards.
+   */
+  double distance;
+  /**
+   * Area of the offset region, square model units.
+   */
+  double area;
+  /**
+   * Number of loops (`mx_offset_layer_get_loop`).
+   */
+  size_t loop_count;
+  /**
+   * Number of connected regions (`mx_offset_layer_get_region`).
+   */
+  size_t region_count;
+} mx_offset_layer_info;
+
+/**
+ * Closed bulge loops, borrowed from the handle that owns them, laid out
+ * as `mx_shape2d_from_bulges` takes them. The pointers are NULL when the
+ * counts are 0.
+ */
+typedef struct mx_bulge_loops {
+  /**
+   * `x, y, bulge` triples of every loop back to back (model units;
+   * bulge = tan(sweep/4) of the element starting at that vertex,
+   * positive counter-clockwise). Element `i` of a loop runs from its
+   * vertex `i` to vertex `i + 1`, the last back to the first.
+   */
+  const double *xyb;
+  /**
+   * Doubles in `xyb`: 3 × the sum of `lengths`.
+   */
+  size_t xyb_len;
+  /**
+   * Vertex count of each loop.
+   */
+  const size_t *lengths;
+  /**
+   * Number of loops.
+   */
+  size_t count;
+} mx_bulge_loops;
+
+/**
+ * One loop of an offset layer. The region lies on its left: outer loops
+ * run counter-clockwise, holes clockwise.
+ */
+typedef struct mx_offset_loop {
+  /**
+   * `x, y, bulge` triples, 3 × `vertex_count` doubles; borrowed from the
+   * layer.
+   */
+  const double *xyb;
+  /**
+   * Number of vertices (= elements).
+   */
+  size_t vertex_count;
+  /**
+   * Signed area enclosed, square model units: positive for an outer
+   * loop, negative for a hole.
+   */
+  double area;
+  /**
+   * The region it bounds (`mx_offset_layer_get_region`).
+   */
+  size_t region;
+  /**
+   * 1 for a hole (clockwise), 0 for an outer loop.
+   */
+  int32_t is_hole;
+} mx_offset_loop;
+
+/**
+ * One connected region of an offset layer: an outer loop and its holes
+ * (loop indices).
+ */
+typedef struct mx_offset_region {
+  /**
+   * Index of the outer loop.
+   */
+  size_t outer;
+  /**
+   * Indices of the hole loops, `hole_count` entries; borrowed from the
+   * layer (NULL when there are none).
+   */
+  const size_t *holes;
+  /**
+   * Number of holes.
+   */
+  size_t hole_count;
+} mx_offset_region;
+
+/**
+ * Options for `mx_pocket_compute`. Initialise with
+ * `mx_pocket_options_default` (which sets `struct_size`), then set
+ * `tool_radius` and `stepover`: their defaults (0) are rejected.
+ */
+typedef struct mx_pocket_options {
+  /**
+   * `sizeof(mx_pocket_options)` as the caller was compiled.
+   */
+  size_t struct_size;
+  /**
+   * Tool radius r, model units, > 0: the first ring is the offset at r.
+   */
+  double tool_radius;
+  /**
+   * Stepover s between rings, model units, > 0: ring k is the offset at
+   * r + k·s.
+   */
+  double stepover;
+  /**
+   * `MX_POCKET_INSIDE_OUT` (default) or `MX_POCKET_OUTSIDE_IN`.
+   */
+  uint32_t order;
+  /**
+   * At most this many levels (default 100 000); beyond it the pocket is
+   * cut short and `mx_pocket_info.truncated` is 1.
+   */
+  size_t max_levels;
+} mx_pocket_options;
+
+/**
+ * Facts about a whole pocket.
+ */
+typedef struct mx_pocket_info {
+  /**
+   * Number of rings (`mx_pocket_get_ring`).
+   */
+  size_t ring_count;
+  /**
+   * Number of levels (the deepest ring's level + 1).
+   */
+  size_t level_count;
+  /**
+   * Ring indices in machining order, `ring_count` entries; borrowed.
+   */
+  const size_t *order;
+  /**
+   * Number of uncut regions (`mx_pocket_get_uncut`).
+   */
+  size_t uncut_count;
+  /**
+   * Their total area, square model units.
+   */
+  double uncut_area;
+  /**
+   * 1 when `max_levels` cut the pocket short.
+   */
+  int32_t truncated;
+} mx_pocket_info;
+
+/**
+ * One ring: the boundary of one connected region of the offset at its
+ * level, which the tool centre follows.
+ */
+typedef struct mx_pocket_ring {
+  /**
+   * Level k (0 at the tool radius).
+   */
+  size_t level;
+  /**
+   * Offset distance r + k·s, model units.
+   */
+  double distance;
+  /**
+   * 1 when `parent` holds the ring of level k − 1 that encloses this one.
+   */
+  int32_t has_parent;
+  /**
+   * The enclosing ring (valid when `has_parent` is 1).
+   */
+  size_t parent;
+  /**
+   * The rings of level k + 1 inside this one, `child_count` entries;
+   * borrowed.
+   */
+  const size_t *children;
+  /**
+   * Number of children.
+   */
+  size_t child_count;
+  /**
+   * The outer loop first (counter-clockwise), then its holes
+   * (clockwise); borrowed.
+   */
+  struct mx_bulge_loops loops;
+} mx_pocket_ring;
+
+/**
+ * A region the tool does not cut.
+ */
+typedef struct mx_uncut_region {
+  /**
+   * `MX_UNCUT_SCALLOP` or `MX_UNCUT_WALL`.
+   */
+  uint32_t kind;
+  /**
+   * Area, square model units.
+   */
+  double area;
+  /**
+   * The outer loop first (counter-clockwise), then its holes
+   * (clockwise); borrowed.
+   */
+  struct mx_bulge_loops loops;
+} mx_uncut_region;
+
+/**
  * Tolerances for building shapes. Initialise with `mx_shape_options_default`
  * (which sets `struct_size`), then change fields. Lengths in model units.
  */
@@ -581,6 +881,81 @@ typedef struct mx_bbox {
    */
   double ymax;
 } mx_bbox;
+
+/**
+ * Options for `mx_vcarve_compute`. Initialise with
+ * `mx_vcarve_options_default` (which sets `struct_size`).
+ */
+typedef struct mx_vcarve_options {
+  /**
+   * `sizeof(mx_vcarve_options)` as the caller was compiled.
+   */
+  size_t struct_size;
+  /**
+   * Seed of the divide step's random choices (as `mx_axis_options.seed`).
+   */
+  uint64_t seed;
+  /**
+   * Worker threads, as `mx_axis_options.threads`.
+   */
+  size_t threads;
+  /**
+   * Included angle of the V-bit, degrees, in (0, 180); default 90.
+   */
+  double angle_deg;
+  /**
+   * Maximum depth, model units, > 0; default `INFINITY` (no cap).
+   */
+  double max_depth;
+  /**
+   * Chordal tolerance of the paths along the axis's curves, model units;
+   * 0 (default) = 1000 × the shape's tolerance.
+   */
+  double tolerance;
+  /**
+   * Optional progress callback, as `mx_axis_options.progress` (called
+   * with 0 before and 1 after; nonzero at 0 cancels).
+   */
+  mx_progress_fn progress;
+  /**
+   * Passed unchanged to `progress`.
+   */
+  void *user;
+} mx_vcarve_options;
+
+/**
+ * Facts about a V-carve.
+ */
+typedef struct mx_vcarve_info {
+  /**
+   * Number of paths (`mx_vcarve_get_path`).
+   */
+  size_t path_count;
+  /**
+   * The disk radius where the depth is capped: max_depth · tan(α/2),
+   * model units (infinite without a cap).
+   */
+  double flat_radius;
+  /**
+   * Number of flat-bottom rings (loops of `mx_vcarve_flat`).
+   */
+  size_t flat_loop_count;
+} mx_vcarve_info;
+
+/**
+ * One V-carve path: the tool tip's points along the medial axis.
+ */
+typedef struct mx_vcarve_path {
+  /**
+   * `x, y, depth` triples, 3 × `point_count` doubles, model units; depth
+   * ≥ 0 measured down from the surface. Borrowed.
+   */
+  const double *xyd;
+  /**
+   * Number of points.
+   */
+  size_t point_count;
+} mx_vcarve_path;
 
 /**
  * Options for `mx_voronoi_compute`. Initialise with
@@ -921,6 +1296,189 @@ void mx_clear_last_error(void);
  * Fills `out` with the default options (and its `struct_size`).
  *
  * # Safety
+ * `out` must be NULL or point to a writable `mx_offset_options`.
+ */
+enum mx_status mx_offset_options_default(struct mx_offset_options *out);
+
+/**
+ * Prepares `shape` for offsets (thesis 2.4: its medial axis, and for
+ * `outer_reach` > 0 the axes of its complement) and writes a new handle
+ * to `*out`. `options` may be NULL. The handle does not borrow the shape.
+ * Fails with `MX_ERR_INVALID_ARGUMENT` for bad options (a negative or
+ * non-finite `outer_reach`, too many threads), `MX_ERR_NUMERICAL` or
+ * `MX_ERR_CANCELLED` as `mx_axis_compute`; `*out` is then untouched.
+ *
+ * # Safety
+ * `shape` NULL or a live handle; `options` NULL or valid; `out` NULL or
+ * writable.
+ */
+enum mx_status mx_offsets_compute(const struct mx_shape2d *shape,
+                                  const struct mx_offset_options *options,
+                                  struct mx_offsets **out);
+
+/**
+ * Releases prepared offsets (layers taken from them stay valid). NULL is
+ * a no-op.
+ *
+ * # Safety
+ * `offsets` must be NULL or a handle from medax not yet freed.
+ */
+void mx_offsets_free(struct mx_offsets *offsets);
+
+/**
+ * The largest inner distance with anything left (the radius of the
+ * largest inscribed disk), model units.
+ *
+ * # Safety
+ * `offsets` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_offsets_max_inner_distance(const struct mx_offsets *offsets, double *out);
+
+/**
+ * The offset at `distance` (model units: positive inwards, negative
+ * outwards down to −`outer_reach`, 0 the shape's own boundary) as a new
+ * handle in `*out`; beyond the largest inscribed disk it has no loops.
+ * `MX_ERR_INVALID_ARGUMENT` for a non-finite distance or one beyond the
+ * outer reach; `*out` is then untouched.
+ *
+ * # Safety
+ * `offsets` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_offsets_layer(const struct mx_offsets *offsets,
+                                double distance,
+                                struct mx_offset_layer **out);
+
+/**
+ * The offsets at `count` distances, computed in parallel: `out[k]`
+ * receives a new handle for `distances[k]` (each to be freed with
+ * `mx_offset_layer_free`). On failure (the first bad distance is named in
+ * the message) nothing is written and nothing needs freeing.
+ *
+ * # Safety
+ * `offsets` NULL or a live handle; `distances` NULL or `count` readable
+ * doubles; `out` NULL or `count` writable pointers.
+ */
+enum mx_status mx_offsets_layers(const struct mx_offsets *offsets,
+                                 const double *distances,
+                                 size_t count,
+                                 struct mx_offset_layer **out);
+
+/**
+ * Releases a layer. NULL is a no-op; never pass the borrowed layer of
+ * `mx_vcarve_flat`.
+ *
+ * # Safety
+ * `layer` must be NULL or a handle from medax not yet freed.
+ */
+void mx_offset_layer_free(struct mx_offset_layer *layer);
+
+/**
+ * Distance, area and counts of a layer.
+ *
+ * # Safety
+ * `layer` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_offset_layer_get_info(const struct mx_offset_layer *layer,
+                                        struct mx_offset_layer_info *out);
+
+/**
+ * Every loop of the layer at once, borrowed (valid while the layer
+ * lives), in loop index order: ready for `mx_shape2d_from_bulges` after
+ * picking a region's loops.
+ *
+ * # Safety
+ * `layer` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_offset_layer_loops(const struct mx_offset_layer *layer,
+                                     struct mx_bulge_loops *out);
+
+/**
+ * Loop `index` of the layer (`MX_ERR_INDEX_OUT_OF_RANGE` unless below
+ * `loop_count`), its vertices borrowed.
+ *
+ * # Safety
+ * `layer` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_offset_layer_get_loop(const struct mx_offset_layer *layer,
+                                        size_t index,
+                                        struct mx_offset_loop *out);
+
+/**
+ * Region `index` of the layer (`MX_ERR_INDEX_OUT_OF_RANGE` unless below
+ * `region_count`), its hole indices borrowed.
+ *
+ * # Safety
+ * `layer` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_offset_layer_get_region(const struct mx_offset_layer *layer,
+                                          size_t index,
+                                          struct mx_offset_region *out);
+
+/**
+ * Fills `out` with the default options (and its `struct_size`).
+ *
+ * # Safety
+ * `out` must be NULL or point to a writable `mx_pocket_options`.
+ */
+enum mx_status mx_pocket_options_default(struct mx_pocket_options *out);
+
+/**
+ * The pocket of the prepared shape: rings at r + k·s until nothing is
+ * left, as a tree in machining order, with the uncut area. Writes a new
+ * handle to `*out`. Fails with `MX_ERR_INVALID_ARGUMENT` (the option
+ * named in the message) for a tool radius or stepover that is not finite
+ * and > 0, an unknown order or `max_levels` 0; `*out` is then untouched.
+ *
+ * # Safety
+ * `offsets` NULL or a live handle; `options` NULL (then it fails: the
+ * tool radius must be set) or valid; `out` NULL or writable.
+ */
+enum mx_status mx_pocket_compute(const struct mx_offsets *offsets,
+                                 const struct mx_pocket_options *options,
+                                 struct mx_pocket **out);
+
+/**
+ * Releases a pocket. NULL is a no-op.
+ *
+ * # Safety
+ * `pocket` must be NULL or a handle from medax not yet freed.
+ */
+void mx_pocket_free(struct mx_pocket *pocket);
+
+/**
+ * Counts, machining order and uncut area of the pocket.
+ *
+ * # Safety
+ * `pocket` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_pocket_get_info(const struct mx_pocket *pocket, struct mx_pocket_info *out);
+
+/**
+ * Ring `index` (`MX_ERR_INDEX_OUT_OF_RANGE` unless below `ring_count`),
+ * its children and loops borrowed.
+ *
+ * # Safety
+ * `pocket` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_pocket_get_ring(const struct mx_pocket *pocket,
+                                  size_t index,
+                                  struct mx_pocket_ring *out);
+
+/**
+ * Uncut region `index` (`MX_ERR_INDEX_OUT_OF_RANGE` unless below
+ * `uncut_count`), its loops borrowed.
+ *
+ * # Safety
+ * `pocket` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_pocket_get_uncut(const struct mx_pocket *pocket,
+                                   size_t index,
+                                   struct mx_uncut_region *out);
+
+/**
+ * Fills `out` with the default options (and its `struct_size`).
+ *
+ * # Safety
  * `out` must be NULL or point to a writable `mx_shape_options`.
  */
 enum mx_status mx_shape_options_default(struct mx_shape_options *out);
@@ -1097,6 +1655,68 @@ enum mx_status mx_shape2d_write_svg(const struct mx_shape2d *shape, const char *
  * give "unknown status". Never NULL; do not free.
  */
 const char *mx_status_str(int32_t status);
+
+/**
+ * Fills `out` with the default options (and its `struct_size`).
+ *
+ * # Safety
+ * `out` must be NULL or point to a writable `mx_vcarve_options`.
+ */
+enum mx_status mx_vcarve_options_default(struct mx_vcarve_options *out);
+
+/**
+ * Computes the medial axis of `shape` and the V-carve paths along it for
+ * the options' V-bit, and writes a new handle to `*out`. `options` may be
+ * NULL (a 90° bit, no depth cap). Fails with `MX_ERR_INVALID_ARGUMENT`
+ * (the option named in the message) for an angle outside (0, 180), a
+ * maximum depth ≤ 0 or NaN, a negative tolerance or too many threads,
+ * `MX_ERR_NUMERICAL` or `MX_ERR_CANCELLED` as `mx_axis_compute`; `*out`
+ * is then untouched.
+ *
+ * # Safety
+ * `shape` NULL or a live handle; `options` NULL or valid; `out` NULL or
+ * writable.
+ */
+enum mx_status mx_vcarve_compute(const struct mx_shape2d *shape,
+                                 const struct mx_vcarve_options *options,
+                                 struct mx_vcarve **out);
+
+/**
+ * Releases a V-carve (and its flat layer). NULL is a no-op.
+ *
+ * # Safety
+ * `vcarve` must be NULL or a handle from medax not yet freed.
+ */
+void mx_vcarve_free(struct mx_vcarve *vcarve);
+
+/**
+ * Counts and the flat radius.
+ *
+ * # Safety
+ * `vcarve` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_vcarve_get_info(const struct mx_vcarve *vcarve, struct mx_vcarve_info *out);
+
+/**
+ * Path `index` (`MX_ERR_INDEX_OUT_OF_RANGE` unless below `path_count`),
+ * its points borrowed.
+ *
+ * # Safety
+ * `vcarve` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_vcarve_get_path(const struct mx_vcarve *vcarve,
+                                  size_t index,
+                                  struct mx_vcarve_path *out);
+
+/**
+ * The flat bottom's rings at the capped radius, as an offset layer read
+ * with the `mx_offset_layer_*` functions (no loops when the cap is never
+ * reached). Borrowed: valid until `mx_vcarve_free`; do not free it.
+ *
+ * # Safety
+ * `vcarve` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_vcarve_flat(const struct mx_vcarve *vcarve, const struct mx_offset_layer **out);
 
 /**
  * The version of the loaded library as a static NUL-terminated string

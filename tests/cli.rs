@@ -1,6 +1,7 @@
 //! The `medax` binary: the axis of a shape with a hole and a Voronoi diagram through the CLI
 //! (JSON contract: one cycle per hole), and a closed stdout is not a crash.
 
+use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 fn medax() -> Command {
@@ -83,5 +84,202 @@ fn voronoi_of_region_sites_and_bad_sites() {
     let typo = medax().arg("voronoi").arg(&sites).output().unwrap();
     assert_eq!(typo.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&typo.stderr).contains("regoins"));
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A fresh scratch directory for one test.
+fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("medax-cli-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// Runs `medax offset SHAPE MODE... --json DIR/NAME.json --dxf DIR/NAME.dxf
+/// --svg DIR/NAME.svg`, which must succeed: its stdout and the three paths.
+fn run_offset(shape: &Path, mode: &[&str], dir: &Path, name: &str) -> (String, [PathBuf; 3]) {
+    let paths = ["json", "dxf", "svg"].map(|ext| dir.join(format!("{name}.{ext}")));
+    let mut cmd = medax();
+    cmd.arg("offset").arg(shape).args(mode);
+    for (flag, path) in ["--json", "--dxf", "--svg"].iter().zip(&paths) {
+        cmd.arg(flag).arg(path);
+    }
+    let out = cmd.output().unwrap();
+    assert!(out.status.success(), "{mode:?}: {}", String::from_utf8_lossy(&out.stderr));
+    (String::from_utf8_lossy(&out.stdout).into_owned(), paths)
+}
+
+fn json_file(path: &std::path::Path) -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+/// Closed bulge loops `[[[x, y, bulge], ..], ..]` from JSON.
+fn loops_of(v: &serde_json::Value) -> Vec<Vec<medax::shape::Vertex>> {
+    let num = |x: &serde_json::Value| x.as_f64().unwrap();
+    v.as_array()
+        .unwrap()
+        .iter()
+        .map(|l| {
+            let l = l.as_array().unwrap();
+            l.iter()
+                .map(|v| medax::shape::Vertex {
+                    p: medax::kernel::Point::new(num(&v[0]), num(&v[1])),
+                    bulge: num(&v[2]),
+                })
+                .collect()
+        })
+        .collect()
+}
+
+fn signed_area(l: &[medax::shape::Vertex]) -> f64 {
+    medax::shape::Loop::new(l.to_vec()).signed_area()
+}
+
+#[test]
+fn offset_distances_as_json_dxf_and_svg() {
+    use std::f64::consts::PI;
+    let dir = scratch("offset");
+    let shape = holed_square(&dir);
+    let (stdout, [json, dxf, svg]) = run_offset(&shape, &["--distance", "0.25,-0.5"], &dir, "o");
+    assert!(stdout.contains("distance 0.25: 2 loop(s), 1 region(s)"), "{stdout}");
+    assert!(stdout.contains("distance -0.5: 2 loop(s), 1 region(s)"), "{stdout}");
+    let doc = json_file(&json);
+    let layers = doc["offsets"].as_array().unwrap();
+    assert_eq!(layers.len(), 2);
+    // Inside: the outer square shrinks to 3.5 × 3.5, the 2 × 2 hole grows
+    // by 0.25 with round corners. Outside: the square grows by 0.5 with
+    // round corners, the hole shrinks to 1 × 1.
+    let expected = [(0.25, 12.25 - (4.0 + 2.0 + PI * 0.0625)), (-0.5, 16.0 + 8.0 + PI * 0.25 - 1.0)];
+    let mut dxf_loops = 0;
+    for (layer, (d, area)) in layers.iter().zip(expected) {
+        assert_eq!(layer["distance"].as_f64(), Some(d));
+        let loops = loops_of(&layer["loops"]);
+        assert_eq!(loops.len(), 2);
+        dxf_loops += loops.len();
+        let from_loops: f64 = loops.iter().map(|l| signed_area(l)).sum();
+        assert!((from_loops - area).abs() < 1e-9, "distance {d}: {from_loops} vs {area}");
+        assert!((layer["area"].as_f64().unwrap() - area).abs() < 1e-9);
+        let regions = layer["regions"].as_array().unwrap();
+        assert_eq!(regions.len(), 1);
+        let outer = regions[0]["outer"].as_u64().unwrap() as usize;
+        let holes = regions[0]["holes"].as_array().unwrap();
+        assert_eq!(holes.len(), 1);
+        assert!(signed_area(&loops[outer]) > 0.0);
+        assert!(signed_area(&loops[holes[0].as_u64().unwrap() as usize]) < 0.0);
+    }
+    // The DXF holds one closed polyline with bulges per loop, and reads back.
+    let drawing = medax::io::dxf::read_dxf(&std::fs::read_to_string(&dxf).unwrap()).unwrap();
+    assert_eq!(drawing.polylines.len(), dxf_loops);
+    assert!(drawing.polylines.iter().all(|p| p.closed));
+    assert!(drawing.polylines.iter().any(|p| p.vertices.iter().any(|v| v.bulge != 0.0)), "arcs stay arcs");
+    // Rounded corners are SVG arcs.
+    let picture = std::fs::read_to_string(&svg).unwrap();
+    assert!(picture.starts_with("<svg") && picture.contains("A0.25 0.25"), "{picture}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn offset_pocket_rings_in_both_orders() {
+    let dir = scratch("pocket");
+    let shape = holed_square(&dir);
+    for outside_in in [false, true] {
+        let mode: &[&str] =
+            if outside_in { &["--pocket", "0.1,0.15", "--outside-in"] } else { &["--pocket", "0.1,0.15"] };
+        let (stdout, [json, dxf, svg]) = run_offset(&shape, mode, &dir, "p");
+        assert!(stdout.contains("pocket: ") && stdout.contains("level 0 (distance 0.1): 1 ring(s)"), "{stdout}");
+        let doc = json_file(&json);
+        let rings = doc["rings"].as_array().unwrap();
+        // Levels at 0.1, 0.25 and 0.4 are one ring round the hole each; at
+        // 0.55 only the four corners are left (their largest disks have
+        // radius sqrt(2) / (1 + sqrt(2)) = 0.586), children of the third.
+        assert_eq!(rings.len(), 7, "{doc}");
+        for (i, r) in rings.iter().enumerate() {
+            let level = r["level"].as_u64().unwrap();
+            assert_eq!(level, (i as u64).min(3));
+            assert!((r["distance"].as_f64().unwrap() - (0.1 + 0.15 * level as f64)).abs() < 1e-12);
+            assert_eq!(loops_of(&r["loops"]).len(), if level < 3 { 2 } else { 1 }, "ring {i}");
+            for c in r["children"].as_array().unwrap() {
+                assert_eq!(rings[c.as_u64().unwrap() as usize]["parent"].as_u64(), Some(i as u64));
+            }
+        }
+        let order: Vec<usize> = doc["order"].as_array().unwrap().iter().map(|v| v.as_u64().unwrap() as usize).collect();
+        let mut position = vec![usize::MAX; rings.len()];
+        for (k, &i) in order.iter().enumerate() {
+            position[i] = k;
+        }
+        assert!(position.iter().all(|&k| k != usize::MAX), "{order:?}");
+        // Inside-out: every ring after the rings inside it, the wall last;
+        // outside-in: the wall first.
+        for (i, r) in rings.iter().enumerate() {
+            for c in r["children"].as_array().unwrap() {
+                let child_first = position[c.as_u64().unwrap() as usize] < position[i];
+                assert_eq!(child_first, !outside_in, "{order:?}");
+            }
+        }
+        assert_eq!(if outside_in { order[0] } else { order[6] }, 0, "{order:?}");
+        assert!(doc["uncut"].is_array() && doc["truncated"] == false);
+        let drawing = medax::io::dxf::read_dxf(&std::fs::read_to_string(&dxf).unwrap()).unwrap();
+        assert!(drawing.polylines.len() >= 10);
+        assert!(std::fs::read_to_string(&svg).unwrap().starts_with("<svg"));
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn offset_vcarve_paths_and_flat_bottom() {
+    let dir = scratch("vcarve");
+    let shape = holed_square(&dir);
+    let (stdout, [json, dxf, svg]) = run_offset(&shape, &["--vcarve", "90,0.3"], &dir, "v");
+    assert!(stdout.contains("v-carve: ") && stdout.contains("flat bottom: 2 ring(s)"), "{stdout}");
+    let doc = json_file(&json);
+    assert_eq!(doc["angle_deg"].as_f64(), Some(90.0));
+    // A 90° bit: depth = radius, capped at 0.3, where the corridor's
+    // half-width 0.5 would go deeper.
+    assert!((doc["flat_radius"].as_f64().unwrap() - 0.3).abs() < 1e-12);
+    let paths = doc["paths"].as_array().unwrap();
+    assert!(!paths.is_empty());
+    for p in paths {
+        for q in p.as_array().unwrap() {
+            let depth = q[2].as_f64().unwrap();
+            assert!((-1e-12..=0.3 + 1e-9).contains(&depth), "{q}");
+        }
+    }
+    assert_eq!(loops_of(&doc["flat"]["loops"]).len(), 2);
+    let text = std::fs::read_to_string(&dxf).unwrap();
+    assert!(text.contains("POLYLINE\n  8\nVCARVE"), "3D tool paths");
+    // Our 2D reader skips the 3D paths and reads the flat rings.
+    assert_eq!(medax::io::dxf::read_dxf(&text).unwrap().polylines.len(), 2);
+    assert!(std::fs::read_to_string(&svg).unwrap().starts_with("<svg"));
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn offset_bad_arguments_name_the_option() {
+    let dir = scratch("offset-bad");
+    let shape = holed_square(&dir);
+    let cases: [(&[&str], &str); 9] = [
+        (&[], "--distance"),
+        (&["--distance", "1,abc"], "--distance"),
+        (&["--distance=nan"], "--distance"),
+        (&["--pocket", "1"], "--pocket"),
+        (&["--pocket", "0,0.5"], "tool radius"),
+        (&["--pocket", "1,-2"], "stepover"),
+        (&["--vcarve", "180,1"], "--vcarve"),
+        (&["--vcarve", "60,0"], "maximum depth"),
+        (&["--distance", "1", "--outside-in"], "--outside-in"),
+    ];
+    for (args, named) in cases {
+        let out = medax().arg("offset").arg(&shape).args(args).output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(err.contains(named), "{args:?}: {err}");
+    }
+    let both = medax().arg("offset").arg(&shape).args(["--distance", "1", "--pocket", "1,1"]).output().unwrap();
+    assert_eq!(both.status.code(), Some(2));
+    // An invalid shape: exit 1 with the validation error.
+    let bad = dir.join("bad.json");
+    std::fs::write(&bad, r#"{"loops": [[[0, 0], [1, 1], [1, 0], [0, 1]]]}"#).unwrap();
+    let out = medax().arg("offset").arg(&bad).args(["--distance", "0.1"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("intersect"));
     std::fs::remove_dir_all(&dir).ok();
 }

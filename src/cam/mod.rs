@@ -4,7 +4,10 @@
 //! Arcs stay arcs: every ring is a loop of segments and exact arcs in bulge
 //! form, so a caller can emit G2/G3 moves directly.
 
+pub mod draw;
+mod dxf;
 mod error;
+mod json;
 pub mod pocket;
 mod uncut;
 pub mod vcarve;

@@ -89,6 +89,19 @@ pub struct Pocket {
     pub truncated: bool,
 }
 
+impl Pocket {
+    /// The total area left uncut, square model units (0, not −0, when
+    /// nothing is left).
+    pub fn uncut_area(&self) -> f64 {
+        self.uncut.iter().fold(0.0, |a, u| a + u.area)
+    }
+
+    /// Number of levels: the deepest ring's level + 1 (0 without rings).
+    pub fn level_count(&self) -> usize {
+        self.rings.iter().map(|r| r.level + 1).max().unwrap_or(0)
+    }
+}
+
 /// The pocket of the prepared shape for the options: the offsets at
 /// r, r + s, r + 2s, … while anything is left, each connected region of
 /// each level one ring, nested under the ring of the level before that

@@ -19,6 +19,7 @@ fn put(text: &str) {
 mod axis;
 mod demo;
 mod info;
+mod offset;
 mod voronoi;
 
 use clap::{Parser, Subcommand};
@@ -108,6 +109,8 @@ enum Command {
     Axis(axis::AxisArgs),
     /// Compute the Voronoi diagram of sites: points, open curves and closed regions.
     Voronoi(voronoi::VoronoiArgs),
+    /// Trimmed offsets at distances, pocketing rings or V-carve paths (arcs stay arcs).
+    Offset(offset::OffsetArgs),
     /// Run the demo: validate and draw the embedded demo shape (the default).
     Demo {
         /// Output SVG file.
@@ -140,6 +143,7 @@ pub fn run() -> ExitCode {
         Command::Info { shape } => info::run(&shape),
         Command::Axis(args) => axis::run(&args),
         Command::Voronoi(args) => voronoi::run(&args),
+        Command::Offset(args) => offset::run(&args),
         Command::Draw { shape, output, width } => match shape.load() {
             Ok(s) => write_file(&output, &s.to_svg(width)).map(|_| out!("wrote {}", output.display())),
             Err(e) => Err(fail(&shape.shape, &e)),

@@ -7,6 +7,7 @@
 //! with a position, never a panic.
 
 pub mod dxf;
+pub mod dxf_writer;
 pub mod json;
 mod json_scan;
 pub mod svg_path;

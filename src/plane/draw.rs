@@ -35,7 +35,17 @@ impl MedialAxis2d {
         let bb = shape.bbox();
         let mut doc = SvgDocument::new([bb.min.x, bb.min.y, bb.max.x, bb.max.y], pic.width_px);
         draw_shape(&mut doc, shape);
-        let r_max = self.nodes.iter().map(|n| n.radius).fold(0.0, f64::max).max(f64::MIN_POSITIVE);
+        self.draw_axis(&mut doc, shape, pic);
+        doc.caption(0, &self.picture_caption());
+        doc.finish()
+    }
+
+    /// Draws the axis coloured by radius, its nodes by kind and (on
+    /// request) the disks at branch points into `doc`, over whatever is
+    /// there (the shape, rings): pictures that show more than the axis
+    /// compose with this.
+    pub fn draw_axis(&self, doc: &mut SvgDocument, shape: &Shape2d, pic: &AxisPicture) {
+        let r_max = self.largest_radius();
         if pic.disks {
             for n in self.nodes.iter().filter(|n| n.kind == NodeKind::Branch) {
                 doc.circle([n.point.x, n.point.y], n.radius, &Style::filled("#9aa5b1", "none", 0.6, 0.0));
@@ -76,16 +86,20 @@ impl MedialAxis2d {
             };
             doc.dot([n.point.x, n.point.y], 2.2, colour);
         }
+    }
+
+    fn largest_radius(&self) -> f64 {
+        self.nodes.iter().map(|n| n.radius).fold(0.0, f64::max).max(f64::MIN_POSITIVE)
+    }
+
+    /// The caption of [`MedialAxis2d::to_svg`]: counts and the colour scale.
+    pub fn picture_caption(&self) -> String {
         let branches = self.nodes.iter().filter(|n| n.kind == NodeKind::Branch).count();
-        doc.caption(
-            0,
-            &format!(
-                "medial axis: {} nodes ({branches} branch), {} edges; colour = disk radius (blue small, red {:.4})",
-                self.nodes.len(),
-                self.edges.len(),
-                r_max
-            ),
-        );
-        doc.finish()
+        format!(
+            "medial axis: {} nodes ({branches} branch), {} edges; colour = disk radius (blue small, red {:.4})",
+            self.nodes.len(),
+            self.edges.len(),
+            self.largest_radius()
+        )
     }
 }

@@ -36,6 +36,12 @@ impl From<crate::io::RawVertex> for Vertex {
     }
 }
 
+impl From<Vertex> for crate::io::RawVertex {
+    fn from(v: Vertex) -> crate::io::RawVertex {
+        crate::io::RawVertex { x: v.p.x, y: v.p.y, bulge: v.bulge }
+    }
+}
+
 /// A closed chain of segments and arcs. Element `i` runs from vertex `i` to
 /// vertex `(i + 1) % len`. Invariants once inside a validated shape: at
 /// least 2 elements, no zero-length element, no self-intersection (a curve

@@ -1,5 +1,6 @@
 //! Pictures of shapes as SVG.
 
+use super::bulge_loop::Vertex;
 use super::element::Element;
 use super::joints::JointKind;
 use super::shape2d::Shape2d;
@@ -10,18 +11,25 @@ use crate::io::svg_writer::{PathCmd, Style, SvgDocument};
 pub fn shape_path(shape: &Shape2d) -> Vec<PathCmd> {
     let mut cmds = Vec::with_capacity(shape.element_count() + 2 * shape.loops().len());
     for l in shape.loops() {
-        let Some(first) = l.vertices().first() else { continue };
-        cmds.push(PathCmd::MoveTo([first.p.x, first.p.y]));
-        for e in l.elements() {
-            let to = [e.end().x, e.end().y];
-            cmds.push(match e {
-                Element::Segment(_) => PathCmd::LineTo(to),
-                Element::Arc(a) => PathCmd::ArcTo { radius: a.radius, large: a.bulge.abs() > 1.0, ccw: a.is_ccw(), to },
-            });
-        }
-        cmds.push(PathCmd::Close);
+        push_loop_path(&mut cmds, l.vertices());
     }
     cmds
+}
+
+/// Appends the SVG path commands of one closed bulge loop (arcs as exact
+/// `A` commands) to `cmds`; nothing for an empty loop.
+pub fn push_loop_path(cmds: &mut Vec<PathCmd>, vertices: &[Vertex]) {
+    let Some(first) = vertices.first() else { return };
+    cmds.push(PathCmd::MoveTo([first.p.x, first.p.y]));
+    for (i, v) in vertices.iter().enumerate() {
+        let next = vertices[(i + 1) % vertices.len()].p;
+        let to = [next.x, next.y];
+        cmds.push(match Element::from_bulge(v.p, next, v.bulge) {
+            Element::Segment(_) => PathCmd::LineTo(to),
+            Element::Arc(a) => PathCmd::ArcTo { radius: a.radius, large: a.bulge.abs() > 1.0, ccw: a.is_ccw(), to },
+        });
+    }
+    cmds.push(PathCmd::Close);
 }
 
 /// Adds the shape (filled, outlined, corners marked: convex red, reflex blue)

@@ -337,10 +337,7 @@ impl Shape2d {
 
     /// The loops as plain `[x, y, bulge]` vertex lists, as stored.
     pub fn to_raw_loops(&self) -> Vec<Vec<crate::io::RawVertex>> {
-        self.loops
-            .iter()
-            .map(|l| l.vertices.iter().map(|v| crate::io::RawVertex { x: v.p.x, y: v.p.y, bulge: v.bulge }).collect())
-            .collect()
+        self.loops.iter().map(|l| l.vertices.iter().map(|&v| crate::io::RawVertex::from(v)).collect()).collect()
     }
 
     /// The shape in medax JSON (`{"loops": ...}`), normalised orientation.

@@ -1,0 +1,220 @@
+//! `medax offset`: trimmed offsets at given distances, pocketing rings or
+//! V-carve paths of a shape, as JSON, DXF and/or SVG.
+
+use super::{fail, write_file, RunArgs, ShapeArgs};
+use medax::cam::{pocket, vcarve, Pocket, PocketOptions, PocketOrder, VCarve, VCarveOptions};
+use medax::plane::offset_draw::offsets_to_svg;
+use medax::plane::offset_dxf::offsets_to_dxf;
+use medax::plane::offset_json::offsets_to_json;
+use medax::plane::{medial_axis, AxisOptions, MedialAxis2d, OffsetLayer, OffsetOptions, Offsets};
+use medax::shape::Shape2d;
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Instant;
+
+/// Arguments of `medax offset`.
+#[derive(clap::Args)]
+#[command(group(clap::ArgGroup::new("mode").required(true).args(["distance", "pocket", "vcarve"])))]
+pub struct OffsetArgs {
+    #[command(flatten)]
+    pub shape: ShapeArgs,
+    /// Offset distances, model units, comma-separated: positive inwards, negative outwards
+    /// (e.g. --distance=-2,1,3.5).
+    #[arg(long, value_name = "D1,D2,...", value_delimiter = ',', allow_hyphen_values = true, value_parser = finite)]
+    pub distance: Option<Vec<f64>>,
+    /// Pocketing rings at TOOL_RADIUS + k × STEPOVER (model units) until nothing is left.
+    #[arg(long, value_name = "TOOL_RADIUS,STEPOVER", value_parser = pocket_values)]
+    pub pocket: Option<(f64, f64)>,
+    /// V-carve paths for a V-bit of included angle ANGLE_DEG (degrees) cut at most MAX_DEPTH deep
+    /// (model units; `inf` for no cap).
+    #[arg(long, value_name = "ANGLE_DEG,MAX_DEPTH", value_parser = vcarve_values)]
+    pub vcarve: Option<(f64, f64)>,
+    /// Machine pocket rings from the wall inwards (default: inside out, the wall last); with --pocket.
+    #[arg(long)]
+    pub outside_in: bool,
+    /// Write the result as JSON (offsets, pocket or v-carve format; see README).
+    #[arg(long)]
+    pub json: Option<PathBuf>,
+    /// Write the result as DXF (closed LWPOLYLINEs with bulges; v-carve paths as 3D POLYLINEs).
+    #[arg(long)]
+    pub dxf: Option<PathBuf>,
+    /// Write a picture of the shape, its axis and the loops, rings or paths.
+    #[arg(long)]
+    pub svg: Option<PathBuf>,
+    #[command(flatten)]
+    pub run: RunArgs,
+}
+
+fn finite(s: &str) -> Result<f64, String> {
+    let v: f64 = s.trim().parse().map_err(|_| format!("{s:?} is not a number"))?;
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(format!("{s:?} is not a finite number"))
+    }
+}
+
+/// Two comma-separated numbers (`what` names them for the message).
+fn pair(s: &str, what: &str) -> Result<(f64, f64), String> {
+    let parts: Vec<&str> = s.split(',').collect();
+    let [a, b] = parts[..] else { return Err(format!("expected {what}, two numbers separated by a comma")) };
+    let num = |t: &str| t.trim().parse::<f64>().map_err(|_| format!("{t:?} is not a number (expected {what})"));
+    Ok((num(a)?, num(b)?))
+}
+
+fn pocket_values(s: &str) -> Result<(f64, f64), String> {
+    let (r, step) = pair(s, "TOOL_RADIUS,STEPOVER")?;
+    if !(r.is_finite() && r > 0.0) {
+        return Err(format!("tool radius {r} must be a finite number > 0"));
+    }
+    if !(step.is_finite() && step > 0.0) {
+        return Err(format!("stepover {step} must be a finite number > 0"));
+    }
+    Ok((r, step))
+}
+
+fn vcarve_values(s: &str) -> Result<(f64, f64), String> {
+    let (angle, depth) = pair(s, "ANGLE_DEG,MAX_DEPTH")?;
+    if !(angle > 0.0 && angle < 180.0) {
+        return Err(format!("angle {angle} must be between 0 and 180 degrees (exclusive)"));
+    }
+    if depth.is_nan() || depth <= 0.0 {
+        return Err(format!("maximum depth {depth} must be > 0 (inf for no cap)"));
+    }
+    Ok((angle, depth))
+}
+
+/// What was computed, written only in the formats asked for.
+enum Computed {
+    Offsets(Vec<OffsetLayer>),
+    Pocket(Pocket),
+    VCarve(VCarve, VCarveOptions),
+}
+
+impl Computed {
+    fn json(&self) -> String {
+        match self {
+            Computed::Offsets(layers) => offsets_to_json(layers),
+            Computed::Pocket(p) => p.to_json(),
+            Computed::VCarve(v, opts) => v.to_json(opts),
+        }
+    }
+
+    fn dxf(&self) -> String {
+        match self {
+            Computed::Offsets(layers) => offsets_to_dxf(layers),
+            Computed::Pocket(p) => p.to_dxf(),
+            Computed::VCarve(v, opts) => v.to_dxf(opts),
+        }
+    }
+
+    fn svg(&self, ctx: &Context) -> String {
+        let (shape, axis) = (ctx.shape, Some(ctx.axis));
+        match self {
+            Computed::Offsets(layers) => offsets_to_svg(shape, axis, layers, 900.0, ctx.tol),
+            Computed::Pocket(p) => p.to_svg(shape, axis, 900.0, ctx.tol),
+            Computed::VCarve(v, _) => v.to_svg(shape, axis, 900.0, ctx.tol),
+        }
+    }
+}
+
+pub fn run(args: &OffsetArgs) -> Result<(), ExitCode> {
+    // Checked here: clap's `requires` is not enforced on a member of the
+    // satisfied mode group.
+    if args.outside_in && args.pocket.is_none() {
+        eprintln!("medax offset: --outside-in orders pocket rings; use it with --pocket");
+        return Err(ExitCode::from(2));
+    }
+    let name = args.shape.shape.display().to_string();
+    let shape = args.shape.load().map_err(|e| fail(&args.shape.shape, &e))?;
+    let pool = args.run.pool()?;
+    let failed = |e: &dyn std::fmt::Display| {
+        eprintln!("medax: {name}: {e}");
+        ExitCode::from(1)
+    };
+    let axis_opts = AxisOptions { seed: args.run.seed, ..AxisOptions::default() };
+    let t = Instant::now();
+    let axis = pool.install(|| medial_axis(&shape, &axis_opts)).map_err(|e| failed(&e))?;
+    let tol = args.run.sample_tolerance.unwrap_or(1e-4 * shape.bbox().diagonal());
+    let ctx = Context { shape: &shape, axis: &axis, axis_opts, tol };
+    let computed = pool.install(|| {
+        if let Some(ds) = &args.distance {
+            offsets(&ctx, ds)
+        } else if let Some((r, s)) = args.pocket {
+            pocket_rings(&ctx, r, s, args.outside_in)
+        } else if let Some((angle, depth)) = args.vcarve {
+            vcarve_paths(&ctx, angle, depth)
+        } else {
+            unreachable!("clap requires one mode")
+        }
+    });
+    let computed = computed.map_err(|e| failed(&e))?;
+    out!("computed in {:.3} s ({} elements)", t.elapsed().as_secs_f64(), shape.element_count());
+    let writers: [(&Option<PathBuf>, &dyn Fn() -> String); 3] =
+        [(&args.json, &|| computed.json()), (&args.dxf, &|| computed.dxf()), (&args.svg, &|| computed.svg(&ctx))];
+    for (path, text) in writers {
+        if let Some(path) = path {
+            write_file(path, &text())?;
+            out!("wrote {}", path.display());
+        }
+    }
+    Ok(())
+}
+
+/// The shape, its axis and how it was computed.
+struct Context<'a> {
+    shape: &'a Shape2d,
+    axis: &'a MedialAxis2d,
+    axis_opts: AxisOptions,
+    /// Chordal tolerance of drawn axis curves and v-carve paths, model units.
+    tol: f64,
+}
+
+fn offsets(ctx: &Context, distances: &[f64]) -> Result<Computed, String> {
+    let reach = distances.iter().map(|d| -d).fold(0.0, f64::max);
+    // Outer offsets need the complement's axes too; inner ones reuse the axis.
+    let offsets = if reach > 0.0 {
+        Offsets::new(ctx.shape, &OffsetOptions { axis: ctx.axis_opts, outer_reach: reach })
+    } else {
+        Offsets::from_axis(ctx.shape, ctx.axis)
+    }
+    .map_err(|e| e.to_string())?;
+    let layers = offsets.layers(distances).map_err(|e| e.to_string())?;
+    out!("offsets: {} distance(s)", layers.len());
+    for l in &layers {
+        out!("  distance {}: {} loop(s), {} region(s), area {}", l.distance, l.loops.len(), l.regions.len(), l.area());
+    }
+    Ok(Computed::Offsets(layers))
+}
+
+fn pocket_rings(ctx: &Context, tool_radius: f64, stepover: f64, outside_in: bool) -> Result<Computed, String> {
+    let offsets = Offsets::from_axis(ctx.shape, ctx.axis).map_err(|e| e.to_string())?;
+    let order = if outside_in { PocketOrder::OutsideIn } else { PocketOrder::InsideOut };
+    let opts = PocketOptions { order, ..PocketOptions::new(tool_radius, stepover) };
+    let p = pocket(&offsets, &opts).map_err(|e| e.to_string())?;
+    let levels = p.level_count();
+    let uncut = p.uncut_area();
+    out!(
+        "pocket: {} ring(s) in {levels} level(s), {} order{}",
+        p.rings.len(),
+        if outside_in { "outside-in" } else { "inside-out" },
+        if p.truncated { "; cut short at the level limit" } else { "" }
+    );
+    for level in 0..levels {
+        let rings: Vec<_> = p.rings.iter().filter(|r| r.level == level).collect();
+        if let Some(first) = rings.first() {
+            out!("  level {level} (distance {}): {} ring(s)", first.distance, rings.len());
+        }
+    }
+    out!("uncut: {} region(s), area {uncut}", p.uncut.len());
+    Ok(Computed::Pocket(p))
+}
+
+fn vcarve_paths(ctx: &Context, angle_deg: f64, max_depth: f64) -> Result<Computed, String> {
+    let opts = VCarveOptions { angle_deg, max_depth, tolerance: ctx.tol };
+    let v = vcarve(ctx.shape, ctx.axis, &opts).map_err(|e| e.to_string())?;
+    let deepest = v.paths.iter().flat_map(|p| &p.points).map(|p| p[2]).fold(0.0, f64::max);
+    out!("v-carve: {} path(s), deepest {deepest}", v.paths.len());
+    out!("flat bottom: {} ring(s) at radius {}", v.flat.loops.len(), v.flat_radius);
+    Ok(Computed::VCarve(v, opts))
+}

@@ -1,0 +1,467 @@
+//! C functions for trimmed offsets: prepare a shape (`mx_offsets`), take
+//! the offset at one or many distances (`mx_offset_layer`), read its loops
+//! and regions, free. Mirrors `crate::plane::offset`; no geometry here.
+//!
+//! Loops are handed out as borrowed arrays laid out as
+//! `mx_shape2d_from_bulges` takes them (`x, y, bulge` triples back to back
+//! and one length per loop, as in `mx_sites`), valid until the handle that
+//! owns them is freed: a caller can feed a layer back as a shape without
+//! copying by hand.
+
+use super::axis::{axis_error, in_pool, mx_progress_fn, progress, MX_AXIS_MAX_THREADS};
+use super::boundary::{self, check_out, deref, guard, index_error, read_options, slice, write_out};
+use super::last_error::FfiError;
+use super::shape2d::mx_shape2d;
+use super::status::mx_status;
+use crate::plane::{AxisOptions, OffsetError, OffsetLayer, OffsetOptions, Offsets};
+use crate::shape::Vertex;
+use std::ffi::c_void;
+
+/// A shape prepared for offsets at any distance: its medial axis and, for
+/// outer offsets, the axes of its complement. Opaque; create with
+/// `mx_offsets_compute`, release with `mx_offsets_free`. Immutable: a
+/// `const mx_offsets*` may be used from several threads at once.
+#[allow(non_camel_case_types)]
+pub struct mx_offsets {
+    pub(crate) offsets: Offsets,
+    /// The worker threads asked for at compute time, used again for layers
+    /// and pockets.
+    pub(crate) threads: usize,
+}
+
+/// The offset at one distance: closed loops of segments and arcs and the
+/// regions they bound. Opaque; from `mx_offsets_layer`,
+/// `mx_offsets_layers` (release with `mx_offset_layer_free`) or borrowed
+/// from `mx_vcarve_flat`. Immutable.
+#[allow(non_camel_case_types)]
+pub struct mx_offset_layer {
+    layer: OffsetLayer,
+    loops: FlatLoops,
+}
+
+/// Options for `mx_offsets_compute`. Initialise with
+/// `mx_offset_options_default` (which sets `struct_size`).
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Debug, Clone, Copy)]
+pub struct mx_offset_options {
+    /// `sizeof(mx_offset_options)` as the caller was compiled.
+    pub struct_size: usize,
+    /// Seed of the divide step's random choices (as `mx_axis_options.seed`).
+    pub seed: u64,
+    /// Worker threads, as `mx_axis_options.threads`; also used for the
+    /// layers and pockets of these offsets.
+    pub threads: usize,
+    /// Outer offsets (negative distances) are available down to
+    /// −`outer_reach`, model units (finite, ≥ 0; default 0: inner offsets
+    /// only). A larger reach costs nothing per layer but frames the
+    /// complement farther away.
+    pub outer_reach: f64,
+    /// Optional progress callback, as `mx_axis_options.progress` (called
+    /// with 0 before and 1 after; nonzero at 0 cancels).
+    pub progress: mx_progress_fn,
+    /// Passed unchanged to `progress`.
+    pub user: *mut c_void,
+}
+
+fn default_options() -> mx_offset_options {
+    mx_offset_options {
+        struct_size: std::mem::size_of::<mx_offset_options>(),
+        seed: AxisOptions::default().seed,
+        threads: 0,
+        outer_reach: 0.0,
+        progress: None,
+        user: std::ptr::null_mut(),
+    }
+}
+
+const OPTIONS_V1_SIZE: usize = std::mem::size_of::<mx_offset_options>();
+
+/// Closed bulge loops, borrowed from the handle that owns them, laid out
+/// as `mx_shape2d_from_bulges` takes them. The pointers are NULL when the
+/// counts are 0.
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Debug, Clone, Copy)]
+pub struct mx_bulge_loops {
+    /// `x, y, bulge` triples of every loop back to back (model units;
+    /// bulge = tan(sweep/4) of the element starting at that vertex,
+    /// positive counter-clockwise). Element `i` of a loop runs from its
+    /// vertex `i` to vertex `i + 1`, the last back to the first.
+    pub xyb: *const f64,
+    /// Doubles in `xyb`: 3 × the sum of `lengths`.
+    pub xyb_len: usize,
+    /// Vertex count of each loop.
+    pub lengths: *const usize,
+    /// Number of loops.
+    pub count: usize,
+}
+
+/// Facts about one offset layer.
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct mx_offset_layer_info {
+    /// The distance, model units: positive inwards, negative outwards.
+    pub distance: f64,
+    /// Area of the offset region, square model units.
+    pub area: f64,
+    /// Number of loops (`mx_offset_layer_get_loop`).
+    pub loop_count: usize,
+    /// Number of connected regions (`mx_offset_layer_get_region`).
+    pub region_count: usize,
+}
+
+/// One loop of an offset layer. The region lies on its left: outer loops
+/// run counter-clockwise, holes clockwise.
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct mx_offset_loop {
+    /// `x, y, bulge` triples, 3 × `vertex_count` doubles; borrowed from the
+    /// layer.
+    pub xyb: *const f64,
+    /// Number of vertices (= elements).
+    pub vertex_count: usize,
+    /// Signed area enclosed, square model units: positive for an outer
+    /// loop, negative for a hole.
+    pub area: f64,
+    /// The region it bounds (`mx_offset_layer_get_region`).
+    pub region: usize,
+    /// 1 for a hole (clockwise), 0 for an outer loop.
+    pub is_hole: i32,
+}
+
+/// One connected region of an offset layer: an outer loop and its holes
+/// (loop indices).
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct mx_offset_region {
+    /// Index of the outer loop.
+    pub outer: usize,
+    /// Indices of the hole loops, `hole_count` entries; borrowed from the
+    /// layer (NULL when there are none).
+    pub holes: *const usize,
+    /// Number of holes.
+    pub hole_count: usize,
+}
+
+/// Loops stored the way `mx_bulge_loops` shows them.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct FlatLoops {
+    xyb: Vec<f64>,
+    lengths: Vec<usize>,
+    /// Where each loop starts in `xyb`.
+    starts: Vec<usize>,
+}
+
+/// NULL for an empty array: C callers never see a dangling pointer.
+pub(crate) fn ptr_or_null<T>(v: &[T]) -> *const T {
+    if v.is_empty() {
+        std::ptr::null()
+    } else {
+        v.as_ptr()
+    }
+}
+
+impl FlatLoops {
+    pub(crate) fn new<'a>(loops: impl IntoIterator<Item = &'a [Vertex]>) -> FlatLoops {
+        let mut out = FlatLoops::default();
+        for l in loops {
+            out.starts.push(out.xyb.len());
+            out.lengths.push(l.len());
+            out.xyb.extend(l.iter().flat_map(|v| [v.p.x, v.p.y, v.bulge]));
+        }
+        out
+    }
+
+    pub(crate) fn view(&self) -> mx_bulge_loops {
+        mx_bulge_loops {
+            xyb: ptr_or_null(&self.xyb),
+            xyb_len: self.xyb.len(),
+            lengths: ptr_or_null(&self.lengths),
+            count: self.lengths.len(),
+        }
+    }
+
+    /// Loop `i`'s triples (NULL when it has no vertices).
+    fn one(&self, i: usize) -> *const f64 {
+        ptr_or_null(&self.xyb[self.starts[i]..self.starts[i] + 3 * self.lengths[i]])
+    }
+}
+
+impl mx_offset_layer {
+    pub(crate) fn new(layer: OffsetLayer) -> mx_offset_layer {
+        let loops = FlatLoops::new(layer.loops.iter().map(|l| l.vertices.as_slice()));
+        mx_offset_layer { layer, loops }
+    }
+
+    pub(crate) fn loop_count(&self) -> usize {
+        self.layer.loops.len()
+    }
+}
+
+pub(crate) fn offset_error(e: OffsetError) -> FfiError {
+    let message = e.to_string();
+    match e {
+        OffsetError::BadDistance(_) | OffsetError::BadReach(_) => {
+            FfiError::new(mx_status::MX_ERR_INVALID_ARGUMENT, message)
+        }
+        OffsetError::NotRegion { loop_index } => {
+            let mut f = FfiError::new(mx_status::MX_ERR_INVALID_ARGUMENT, message);
+            f.info.loop_index = loop_index as i64;
+            f
+        }
+        OffsetError::Axis(a) => {
+            let mut f = axis_error(a);
+            f.message = message;
+            f
+        }
+        OffsetError::Topology { .. } => FfiError::new(mx_status::MX_ERR_NUMERICAL, message),
+    }
+}
+
+/// Fills `out` with the default options (and its `struct_size`).
+///
+/// # Safety
+/// `out` must be NULL or point to a writable `mx_offset_options`.
+#[no_mangle]
+pub unsafe extern "C" fn mx_offset_options_default(out: *mut mx_offset_options) -> mx_status {
+    guard(|| {
+        check_out(out, "out")?;
+        // SAFETY: checked non-NULL above.
+        unsafe { write_out(out, default_options()) };
+        Ok(())
+    })
+}
+
+/// Prepares `shape` for offsets (thesis 2.4: its medial axis, and for
+/// `outer_reach` > 0 the axes of its complement) and writes a new handle
+/// to `*out`. `options` may be NULL. The handle does not borrow the shape.
+/// Fails with `MX_ERR_INVALID_ARGUMENT` for bad options (a negative or
+/// non-finite `outer_reach`, too many threads), `MX_ERR_NUMERICAL` or
+/// `MX_ERR_CANCELLED` as `mx_axis_compute`; `*out` is then untouched.
+///
+/// # Safety
+/// `shape` NULL or a live handle; `options` NULL or valid; `out` NULL or
+/// writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_offsets_compute(
+    shape: *const mx_shape2d,
+    options: *const mx_offset_options,
+    out: *mut *mut mx_offsets,
+) -> mx_status {
+    guard(|| {
+        check_out(out, "out")?;
+        // SAFETY: caller contract.
+        let s = unsafe { deref(shape, "shape")? };
+        // SAFETY: `mx_offset_options` starts with `struct_size`.
+        let o = unsafe { read_options(options, default_options(), OPTIONS_V1_SIZE, "mx_offset_options")? }
+            .unwrap_or_else(default_options);
+        if o.threads > MX_AXIS_MAX_THREADS || !(o.outer_reach.is_finite() && o.outer_reach >= 0.0) {
+            return Err(FfiError::new(
+                mx_status::MX_ERR_INVALID_ARGUMENT,
+                format!(
+                    "mx_offset_options: threads = {} (at most {MX_AXIS_MAX_THREADS}), outer_reach = {} (finite, >= 0)",
+                    o.threads, o.outer_reach
+                ),
+            ));
+        }
+        if progress(o.progress, o.user, 0.0) {
+            return Err(FfiError::new(
+                mx_status::MX_ERR_CANCELLED,
+                "mx_offsets_compute cancelled by the progress callback",
+            ));
+        }
+        let opts =
+            OffsetOptions { axis: AxisOptions { seed: o.seed, ..AxisOptions::default() }, outer_reach: o.outer_reach };
+        let offsets = in_pool(o.threads, || Offsets::new(&s.inner, &opts))?.map_err(offset_error)?;
+        let h = Box::into_raw(Box::new(mx_offsets { offsets, threads: o.threads }));
+        progress(o.progress, o.user, 1.0);
+        // SAFETY: checked non-NULL above.
+        unsafe { write_out(out, h) };
+        Ok(())
+    })
+}
+
+/// Releases prepared offsets (layers taken from them stay valid). NULL is
+/// a no-op.
+///
+/// # Safety
+/// `offsets` must be NULL or a handle from medax not yet freed.
+#[no_mangle]
+pub unsafe extern "C" fn mx_offsets_free(offsets: *mut mx_offsets) {
+    if !offsets.is_null() {
+        // SAFETY: per the contract, it came from Box::into_raw in `mx_offsets_compute`.
+        drop(unsafe { Box::from_raw(offsets) });
+    }
+}
+
+/// The largest inner distance with anything left (the radius of the
+/// largest inscribed disk), model units.
+///
+/// # Safety
+/// `offsets` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_offsets_max_inner_distance(offsets: *const mx_offsets, out: *mut f64) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { boundary::query(offsets, "offsets", out, |o| Ok(o.offsets.max_inner_distance())) }
+}
+
+/// The offset at `distance` (model units: positive inwards, negative
+/// outwards down to −`outer_reach`, 0 the shape's own boundary) as a new
+/// handle in `*out`; beyond the largest inscribed disk it has no loops.
+/// `MX_ERR_INVALID_ARGUMENT` for a non-finite distance or one beyond the
+/// outer reach; `*out` is then untouched.
+///
+/// # Safety
+/// `offsets` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_offsets_layer(
+    offsets: *const mx_offsets,
+    distance: f64,
+    out: *mut *mut mx_offset_layer,
+) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe {
+        boundary::query(offsets, "offsets", out, |o| {
+            let layer = in_pool(o.threads, || o.offsets.layer(distance))?.map_err(offset_error)?;
+            Ok(Box::into_raw(Box::new(mx_offset_layer::new(layer))))
+        })
+    }
+}
+
+/// The offsets at `count` distances, computed in parallel: `out[k]`
+/// receives a new handle for `distances[k]` (each to be freed with
+/// `mx_offset_layer_free`). On failure (the first bad distance is named in
+/// the message) nothing is written and nothing needs freeing.
+///
+/// # Safety
+/// `offsets` NULL or a live handle; `distances` NULL or `count` readable
+/// doubles; `out` NULL or `count` writable pointers.
+#[no_mangle]
+pub unsafe extern "C" fn mx_offsets_layers(
+    offsets: *const mx_offsets,
+    distances: *const f64,
+    count: usize,
+    out: *mut *mut mx_offset_layer,
+) -> mx_status {
+    guard(|| {
+        check_out(out, "out")?;
+        // SAFETY: caller contract.
+        let (o, ds) = unsafe { (deref(offsets, "offsets")?, slice(distances, count, "distances")?) };
+        let layers = in_pool(o.threads, || o.offsets.layers(ds))?.map_err(offset_error)?;
+        for (k, layer) in layers.into_iter().enumerate() {
+            // SAFETY: k < count entries, writable per the contract.
+            unsafe { write_out(out.add(k), Box::into_raw(Box::new(mx_offset_layer::new(layer)))) };
+        }
+        Ok(())
+    })
+}
+
+/// Releases a layer. NULL is a no-op; never pass the borrowed layer of
+/// `mx_vcarve_flat`.
+///
+/// # Safety
+/// `layer` must be NULL or a handle from medax not yet freed.
+#[no_mangle]
+pub unsafe extern "C" fn mx_offset_layer_free(layer: *mut mx_offset_layer) {
+    if !layer.is_null() {
+        // SAFETY: per the contract, it came from Box::into_raw in `mx_offsets_layer(s)`.
+        drop(unsafe { Box::from_raw(layer) });
+    }
+}
+
+/// Runs `f` on a layer handle and writes its result to `out`.
+unsafe fn query<T>(
+    layer: *const mx_offset_layer,
+    out: *mut T,
+    f: impl FnOnce(&mx_offset_layer) -> Result<T, FfiError>,
+) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { boundary::query(layer, "layer", out, f) }
+}
+
+/// Distance, area and counts of a layer.
+///
+/// # Safety
+/// `layer` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_offset_layer_get_info(
+    layer: *const mx_offset_layer,
+    out: *mut mx_offset_layer_info,
+) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe {
+        query(layer, out, |l| {
+            let layer = &l.layer;
+            Ok(mx_offset_layer_info {
+                distance: layer.distance,
+                area: layer.area(),
+                loop_count: layer.loops.len(),
+                region_count: layer.regions.len(),
+            })
+        })
+    }
+}
+
+/// Every loop of the layer at once, borrowed (valid while the layer
+/// lives), in loop index order: ready for `mx_shape2d_from_bulges` after
+/// picking a region's loops.
+///
+/// # Safety
+/// `layer` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_offset_layer_loops(layer: *const mx_offset_layer, out: *mut mx_bulge_loops) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { query(layer, out, |l| Ok(l.loops.view())) }
+}
+
+/// Loop `index` of the layer (`MX_ERR_INDEX_OUT_OF_RANGE` unless below
+/// `loop_count`), its vertices borrowed.
+///
+/// # Safety
+/// `layer` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_offset_layer_get_loop(
+    layer: *const mx_offset_layer,
+    index: usize,
+    out: *mut mx_offset_loop,
+) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe {
+        query(layer, out, |l| {
+            let loops = &l.layer.loops;
+            let lp = loops.get(index).ok_or_else(|| index_error("loop", index, loops.len()))?;
+            Ok(mx_offset_loop {
+                xyb: l.loops.one(index),
+                vertex_count: lp.vertices.len(),
+                area: lp.area,
+                region: lp.region,
+                is_hole: lp.is_hole().into(),
+            })
+        })
+    }
+}
+
+/// Region `index` of the layer (`MX_ERR_INDEX_OUT_OF_RANGE` unless below
+/// `region_count`), its hole indices borrowed.
+///
+/// # Safety
+/// `layer` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_offset_layer_get_region(
+    layer: *const mx_offset_layer,
+    index: usize,
+    out: *mut mx_offset_region,
+) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe {
+        query(layer, out, |l| {
+            let regions = &l.layer.regions;
+            let r = regions.get(index).ok_or_else(|| index_error("region", index, regions.len()))?;
+            Ok(mx_offset_region { outer: r.outer, holes: ptr_or_null(&r.holes), hole_count: r.holes.len() })
+        })
+    }
+}

@@ -1,0 +1,283 @@
+//! C functions for pocketing: rings for a tool radius and stepover from
+//! prepared offsets, their tree and machining order, the area left uncut.
+//! Mirrors `crate::cam::pocket`; no geometry here.
+
+use super::boundary::{self, check_out, guard, index_error, read_options, write_out};
+use super::last_error::FfiError;
+use super::offset::{mx_bulge_loops, mx_offsets, offset_error, ptr_or_null, FlatLoops};
+use super::status::mx_status;
+use crate::cam::{pocket, CamError, Pocket, PocketOptions, PocketOrder, UncutKind};
+
+/// The rings of a pocket. Opaque; create with `mx_pocket_compute`, release
+/// with `mx_pocket_free`. Immutable.
+#[allow(non_camel_case_types)]
+pub struct mx_pocket {
+    pocket: Pocket,
+    rings: Vec<FlatLoops>,
+    uncut: Vec<FlatLoops>,
+}
+
+/// `mx_pocket_options.order`: every ring after the rings inside it (the
+/// wall last, as a finishing pass).
+pub const MX_POCKET_INSIDE_OUT: u32 = 0;
+/// `mx_pocket_options.order`: every ring before the rings inside it.
+pub const MX_POCKET_OUTSIDE_IN: u32 = 1;
+
+/// `mx_uncut_region.kind`: a cusp between rings that the stepover left.
+pub const MX_UNCUT_SCALLOP: u32 = 0;
+/// `mx_uncut_region.kind`: corners and necks along the wall narrower than
+/// the tool.
+pub const MX_UNCUT_WALL: u32 = 1;
+
+/// Options for `mx_pocket_compute`. Initialise with
+/// `mx_pocket_options_default` (which sets `struct_size`), then set
+/// `tool_radius` and `stepover`: their defaults (0) are rejected.
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Debug, Clone, Copy)]
+pub struct mx_pocket_options {
+    /// `sizeof(mx_pocket_options)` as the caller was compiled.
+    pub struct_size: usize,
+    /// Tool radius r, model units, > 0: the first ring is the offset at r.
+    pub tool_radius: f64,
+    /// Stepover s between rings, model units, > 0: ring k is the offset at
+    /// r + k·s.
+    pub stepover: f64,
+    /// `MX_POCKET_INSIDE_OUT` (default) or `MX_POCKET_OUTSIDE_IN`.
+    pub order: u32,
+    /// At most this many levels (default 100 000); beyond it the pocket is
+    /// cut short and `mx_pocket_info.truncated` is 1.
+    pub max_levels: usize,
+}
+
+fn default_options() -> mx_pocket_options {
+    let d = PocketOptions::new(0.0, 0.0);
+    mx_pocket_options {
+        struct_size: std::mem::size_of::<mx_pocket_options>(),
+        tool_radius: 0.0,
+        stepover: 0.0,
+        order: MX_POCKET_INSIDE_OUT,
+        max_levels: d.max_levels,
+    }
+}
+
+const OPTIONS_V1_SIZE: usize = std::mem::size_of::<mx_pocket_options>();
+
+/// Facts about a whole pocket.
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct mx_pocket_info {
+    /// Number of rings (`mx_pocket_get_ring`).
+    pub ring_count: usize,
+    /// Number of levels (the deepest ring's level + 1).
+    pub level_count: usize,
+    /// Ring indices in machining order, `ring_count` entries; borrowed.
+    pub order: *const usize,
+    /// Number of uncut regions (`mx_pocket_get_uncut`).
+    pub uncut_count: usize,
+    /// Their total area, square model units.
+    pub uncut_area: f64,
+    /// 1 when `max_levels` cut the pocket short.
+    pub truncated: i32,
+}
+
+/// One ring: the boundary of one connected region of the offset at its
+/// level, which the tool centre follows.
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Debug, Clone, Copy)]
+pub struct mx_pocket_ring {
+    /// Level k (0 at the tool radius).
+    pub level: usize,
+    /// Offset distance r + k·s, model units.
+    pub distance: f64,
+    /// 1 when `parent` holds the ring of level k − 1 that encloses this one.
+    pub has_parent: i32,
+    /// The enclosing ring (valid when `has_parent` is 1).
+    pub parent: usize,
+    /// The rings of level k + 1 inside this one, `child_count` entries;
+    /// borrowed.
+    pub children: *const usize,
+    /// Number of children.
+    pub child_count: usize,
+    /// The outer loop first (counter-clockwise), then its holes
+    /// (clockwise); borrowed.
+    pub loops: mx_bulge_loops,
+}
+
+/// A region the tool does not cut.
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Debug, Clone, Copy)]
+pub struct mx_uncut_region {
+    /// `MX_UNCUT_SCALLOP` or `MX_UNCUT_WALL`.
+    pub kind: u32,
+    /// Area, square model units.
+    pub area: f64,
+    /// The outer loop first (counter-clockwise), then its holes
+    /// (clockwise); borrowed.
+    pub loops: mx_bulge_loops,
+}
+
+pub(crate) fn cam_error(e: CamError) -> FfiError {
+    match e {
+        CamError::BadOption { .. } => FfiError::new(mx_status::MX_ERR_INVALID_ARGUMENT, e.to_string()),
+        CamError::Offset(o) => offset_error(o),
+    }
+}
+
+/// Fills `out` with the default options (and its `struct_size`).
+///
+/// # Safety
+/// `out` must be NULL or point to a writable `mx_pocket_options`.
+#[no_mangle]
+pub unsafe extern "C" fn mx_pocket_options_default(out: *mut mx_pocket_options) -> mx_status {
+    guard(|| {
+        check_out(out, "out")?;
+        // SAFETY: checked non-NULL above.
+        unsafe { write_out(out, default_options()) };
+        Ok(())
+    })
+}
+
+/// The pocket of the prepared shape: rings at r + k·s until nothing is
+/// left, as a tree in machining order, with the uncut area. Writes a new
+/// handle to `*out`. Fails with `MX_ERR_INVALID_ARGUMENT` (the option
+/// named in the message) for a tool radius or stepover that is not finite
+/// and > 0, an unknown order or `max_levels` 0; `*out` is then untouched.
+///
+/// # Safety
+/// `offsets` NULL or a live handle; `options` NULL (then it fails: the
+/// tool radius must be set) or valid; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_pocket_compute(
+    offsets: *const mx_offsets,
+    options: *const mx_pocket_options,
+    out: *mut *mut mx_pocket,
+) -> mx_status {
+    guard(|| {
+        check_out(out, "out")?;
+        // SAFETY: caller contract.
+        let o = unsafe { boundary::deref(offsets, "offsets")? };
+        // SAFETY: `mx_pocket_options` starts with `struct_size`.
+        let c = unsafe { read_options(options, default_options(), OPTIONS_V1_SIZE, "mx_pocket_options")? }
+            .unwrap_or_else(default_options);
+        let order = match c.order {
+            MX_POCKET_INSIDE_OUT => PocketOrder::InsideOut,
+            MX_POCKET_OUTSIDE_IN => PocketOrder::OutsideIn,
+            k => {
+                return Err(FfiError::new(
+                    mx_status::MX_ERR_INVALID_ARGUMENT,
+                    format!("mx_pocket_options.order = {k}: use MX_POCKET_INSIDE_OUT (0) or MX_POCKET_OUTSIDE_IN (1)"),
+                ))
+            }
+        };
+        let opts = PocketOptions { tool_radius: c.tool_radius, stepover: c.stepover, order, max_levels: c.max_levels };
+        let p = super::axis::in_pool(o.threads, || pocket(&o.offsets, &opts))?.map_err(cam_error)?;
+        let rings = p.rings.iter().map(|r| FlatLoops::new(r.loops.iter().map(|l| l.vertices.as_slice()))).collect();
+        let uncut = p.uncut.iter().map(|u| FlatLoops::new(u.loops.iter().map(Vec::as_slice))).collect();
+        let h = Box::into_raw(Box::new(mx_pocket { pocket: p, rings, uncut }));
+        // SAFETY: checked non-NULL above.
+        unsafe { write_out(out, h) };
+        Ok(())
+    })
+}
+
+/// Releases a pocket. NULL is a no-op.
+///
+/// # Safety
+/// `pocket` must be NULL or a handle from medax not yet freed.
+#[no_mangle]
+pub unsafe extern "C" fn mx_pocket_free(pocket: *mut mx_pocket) {
+    if !pocket.is_null() {
+        // SAFETY: per the contract, it came from Box::into_raw in `mx_pocket_compute`.
+        drop(unsafe { Box::from_raw(pocket) });
+    }
+}
+
+/// Runs `f` on a pocket handle and writes its result to `out`.
+unsafe fn query<T>(
+    pocket: *const mx_pocket,
+    out: *mut T,
+    f: impl FnOnce(&mx_pocket) -> Result<T, FfiError>,
+) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { boundary::query(pocket, "pocket", out, f) }
+}
+
+/// Counts, machining order and uncut area of the pocket.
+///
+/// # Safety
+/// `pocket` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_pocket_get_info(pocket: *const mx_pocket, out: *mut mx_pocket_info) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe {
+        query(pocket, out, |h| {
+            let p = &h.pocket;
+            Ok(mx_pocket_info {
+                ring_count: p.rings.len(),
+                level_count: p.level_count(),
+                order: ptr_or_null(&p.order),
+                uncut_count: p.uncut.len(),
+                uncut_area: p.uncut_area(),
+                truncated: p.truncated.into(),
+            })
+        })
+    }
+}
+
+/// Ring `index` (`MX_ERR_INDEX_OUT_OF_RANGE` unless below `ring_count`),
+/// its children and loops borrowed.
+///
+/// # Safety
+/// `pocket` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_pocket_get_ring(
+    pocket: *const mx_pocket,
+    index: usize,
+    out: *mut mx_pocket_ring,
+) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe {
+        query(pocket, out, |h| {
+            let rings = &h.pocket.rings;
+            let r = rings.get(index).ok_or_else(|| index_error("ring", index, rings.len()))?;
+            Ok(mx_pocket_ring {
+                level: r.level,
+                distance: r.distance,
+                has_parent: r.parent.is_some().into(),
+                parent: r.parent.unwrap_or(0),
+                children: ptr_or_null(&r.children),
+                child_count: r.children.len(),
+                loops: h.rings[index].view(),
+            })
+        })
+    }
+}
+
+/// Uncut region `index` (`MX_ERR_INDEX_OUT_OF_RANGE` unless below
+/// `uncut_count`), its loops borrowed.
+///
+/// # Safety
+/// `pocket` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_pocket_get_uncut(
+    pocket: *const mx_pocket,
+    index: usize,
+    out: *mut mx_uncut_region,
+) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe {
+        query(pocket, out, |h| {
+            let uncut = &h.pocket.uncut;
+            let u = uncut.get(index).ok_or_else(|| index_error("uncut region", index, uncut.len()))?;
+            let kind = match u.kind {
+                UncutKind::Scallop => MX_UNCUT_SCALLOP,
+                UncutKind::Wall => MX_UNCUT_WALL,
+            };
+            Ok(mx_uncut_region { kind, area: u.area, loops: h.uncut[index].view() })
+        })
+    }
+}
