@@ -217,7 +217,7 @@ const REFINES: usize = 3;
 /// numerically (rare: near-degenerate configurations such as many disks
 /// alike to within a few tolerances) is divided again into leaves of half
 /// its size, with random choices of its own, and those are solved; after
-/// [`REFINES`] rounds the first breakdown is reported. New cuts are
+/// `REFINES` rounds the first breakdown is reported. New cuts are
 /// appended to `d.cuts`. The order of the result depends only on `d` and
 /// `seed`.
 pub fn solve_leaves<K: AxisKernel>(

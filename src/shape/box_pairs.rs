@@ -127,7 +127,7 @@ impl BoxTree {
     /// `(i, j)`; pairs that cannot beat an answer already found may be
     /// skipped.
     ///
-    /// With a `budget`, gives up with [`BudgetExceeded`] once more than that
+    /// With a `budget`, gives up with `BudgetExceeded` once more than that
     /// many overlapping pairs were seen. The pair count is a property of the
     /// input, so whether the budget runs out does not depend on scheduling.
     pub fn min_overlapping_pair<P: Send>(
