@@ -16,6 +16,36 @@
 //!
 //! One [`Offsets`] serves any number of distances; each layer costs time
 //! linear in the size of the axis.
+//!
+//! ```
+//! use medax::kernel::Point;
+//! use medax::plane::{OffsetOptions, Offsets};
+//! use medax::shape::{Shape2d, ShapeOptions, Vertex};
+//! let v = |x, y| Vertex { p: Point::new(x, y), bulge: 0.0 };
+//! // A 4 × 2 rectangle with a 1 × 1 square hole.
+//! let shape = Shape2d::from_bulge_loops(
+//!     vec![vec![v(0.0, 0.0), v(4.0, 0.0), v(4.0, 2.0), v(0.0, 2.0)],
+//!          vec![v(2.5, 0.5), v(3.5, 0.5), v(3.5, 1.5), v(2.5, 1.5)]],
+//!     &ShapeOptions::default(),
+//! )?;
+//! let offsets = Offsets::new(&shape, &OffsetOptions { outer_reach: 1.0, ..OffsetOptions::default() })?;
+//! // Inwards by 0.2: the hole grows round (quarter arcs at its corners)
+//! // and the outer boundary shrinks to a 3.6 × 1.6 rectangle.
+//! let layer = offsets.layer(0.2)?;
+//! assert_eq!((layer.loops.len(), layer.regions.len()), (2, 1));
+//! let hole = 1.0 + 4.0 * 0.2 + std::f64::consts::PI * 0.2 * 0.2;
+//! assert!((layer.area() - (3.6 * 1.6 - hole)).abs() < 1e-12);
+//! // At 0.25 the 0.5-wide channels round the hole close: the big part on
+//! // the left and two small ones at the hole's right corners.
+//! assert_eq!(offsets.layer(0.25)?.regions.len(), 3);
+//! // Arcs stay arcs: the hole's loop has four quarter arcs (bulge tan(π/8)).
+//! let hole_loop = &layer.loops[layer.regions[0].holes[0]];
+//! assert_eq!(hole_loop.vertices.iter().filter(|v| v.bulge != 0.0).count(), 4);
+//! // Outwards by 0.5: one region, the hole shrunk to 0 (gone).
+//! let grown = offsets.layer(-0.5)?;
+//! assert_eq!(grown.loops.len(), 1);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 
 use super::conquer::{medial_axis, AxisError, AxisOptions};
 use super::offset_trim::Trimmer;
