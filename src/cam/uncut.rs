@@ -21,7 +21,7 @@
 
 use super::{CamError, UncutKind, UncutRegion};
 use crate::kernel::construct::{circle_circle, line_circle};
-use crate::kernel::{FilteredKernel, Point};
+use crate::kernel::{BBox, FilteredKernel, Point};
 use crate::plane::offset_trim::{BandPiece, Trimmer};
 use crate::shape::{Element, Loop, Vertex};
 use std::f64::consts::TAU;
@@ -88,25 +88,21 @@ pub(crate) fn band_regions(
     }
     let mut out_loops: Vec<Vec<Piece>> = Vec::new();
     for lp in loops {
-        out_loops.extend(clip(lp, &disks, r, arcs, tol)?);
+        out_loops.extend(clip(lp, &disks, (lo, r), arcs, tol)?);
     }
     Ok(group(out_loops, kind))
 }
 
-/// Bounding box test of a disk against a loop's box.
-fn near(c: Point, r: f64, lo: Point, hi: Point) -> bool {
-    c.x + r >= lo.x && c.x - r <= hi.x && c.y + r >= lo.y && c.y - r <= hi.y
-}
-
-/// The loop less the disks of radius `r` at `disks`.
-fn clip(lp: Vec<Piece>, disks: &[Point], r: f64, own_arcs: bool, tol: f64) -> Result<Vec<Vec<Piece>>, CamError> {
-    let (mut lo, mut hi) = (Point::new(f64::INFINITY, f64::INFINITY), Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY));
-    for p in &lp {
-        let b = p.element().bbox();
-        lo = Point::new(lo.x.min(b.min.x), lo.y.min(b.min.y));
-        hi = Point::new(hi.x.max(b.max.x), hi.y.max(b.max.y));
-    }
-    let rel: Vec<usize> = (0..disks.len()).filter(|&i| near(disks[i], r, lo, hi)).collect();
+/// The loop of the band above `lo` less the disks of radius `r` at `disks`.
+fn clip(
+    lp: Vec<Piece>,
+    disks: &[Point],
+    (lo, r): (f64, f64),
+    own_arcs: bool,
+    tol: f64,
+) -> Result<Vec<Vec<Piece>>, CamError> {
+    let bbox = lp.iter().fold(BBox::default(), |b, p| b.union(&p.element().bbox()));
+    let rel: Vec<usize> = (0..disks.len()).filter(|&i| bbox.distance_to(disks[i]) < r).collect();
     // Cut points on each piece (fractions) and on each disk's circle (angles).
     let mut cuts: Vec<Vec<f64>> = vec![Vec::new(); lp.len()];
     let mut on_circle: Vec<Vec<f64>> = vec![Vec::new(); rel.len()];
@@ -194,35 +190,44 @@ fn clip(lp: Vec<Piece>, disks: &[Point], r: f64, own_arcs: bool, tol: f64) -> Re
             kept.push(Piece { a: pa, b: pb, bulge: -((a1 - a0) / 4.0).tan(), on_disk: Some(d) });
         }
     }
-    link(kept, tol)
+    link(kept, lo, tol)
 }
 
-/// Closes pieces into loops, each end to the nearest unused start.
-fn link(pieces: Vec<Piece>, tol: f64) -> Result<Vec<Vec<Piece>>, CamError> {
+/// Closes pieces into loops, each end to the nearest unused start. The
+/// pieces come mostly in loop order, so the next one is tried first and the
+/// search over all of them is the exception (where a circle was inserted).
+fn link(pieces: Vec<Piece>, lo: f64, tol: f64) -> Result<Vec<Vec<Piece>>, CamError> {
     let n = pieces.len();
+    let close = 64.0 * tol.max(f64::MIN_POSITIVE);
     let mut used = vec![false; n];
     let mut out = Vec::new();
-    let bad = CamError::BadOption { name: "uncut region (pieces do not close)", value: f64::NAN };
     for s in 0..n {
         if used[s] {
             continue;
         }
         used[s] = true;
-        let mut lp = vec![pieces[s]];
+        let (mut lp, mut last) = (vec![pieces[s]], s);
         loop {
-            let end = lp[lp.len() - 1].b;
-            if end.dist(lp[0].a) <= 64.0 * tol.max(1e-300) && lp.len() > 1 {
+            let end = pieces[last].b;
+            if lp.len() > 1 && end.dist(lp[0].a) <= close {
                 break;
             }
-            let next =
-                (0..n).filter(|&i| !used[i]).min_by(|&i, &j| pieces[i].a.dist(end).total_cmp(&pieces[j].a.dist(end)));
+            let next = if last + 1 < n && !used[last + 1] && pieces[last + 1].a.dist(end) <= close {
+                Some(last + 1)
+            } else {
+                (0..n).filter(|&i| !used[i]).min_by(|&i, &j| pieces[i].a.dist(end).total_cmp(&pieces[j].a.dist(end)))
+            };
             match next {
-                Some(i) if pieces[i].a.dist(end) <= 64.0 * tol.max(1e-300) => {
+                Some(i) if pieces[i].a.dist(end) <= close => {
                     used[i] = true;
                     lp.push(pieces[i]);
+                    last = i;
                 }
-                _ if end.dist(lp[0].a) <= 64.0 * tol.max(1e-300) => break,
-                _ => return Err(bad),
+                _ if end.dist(lp[0].a) <= close => break,
+                _ => {
+                    let what = "an uncut region's pieces do not close";
+                    return Err(CamError::Offset(crate::plane::OffsetError::Topology { distance: lo, what }));
+                }
             }
         }
         out.push(lp);

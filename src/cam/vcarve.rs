@@ -60,9 +60,11 @@ pub fn vcarve(shape: &Shape2d, axis: &MedialAxis2d, opts: &VCarveOptions) -> Res
     let flat_radius = opts.max_depth * slope;
     let tol = if opts.tolerance > 0.0 { opts.tolerance } else { 1000.0 * shape.tolerance() };
     let sampled = axis.sampled(shape, tol);
-    // Pieces of edges below the flat radius, as polylines of (point, radius).
-    let mut pieces: Vec<Vec<(Point, f64)>> = Vec::new();
+    // Pieces of edges below the flat radius, as polylines of (point,
+    // radius), with the nodes they start and end at (none at a cut).
+    let mut pieces: Vec<Piece> = Vec::new();
     for (edge, samples) in axis.edges.iter().zip(&sampled) {
+        let mut start = Some(edge.from);
         let mut cur: Vec<(Point, f64)> = Vec::new();
         // The radius is not linear between samples (between two points it
         // is hyperbolic along a straight edge): the cut is where the
@@ -88,7 +90,8 @@ pub fn vcarve(shape: &Shape2d, axis: &MedialAxis2d, opts: &VCarveOptions) -> Res
                 (true, true) => cur.push((q, s)),
                 (true, false) => {
                     cur.push(cut(p, q));
-                    pieces.push(std::mem::take(&mut cur));
+                    pieces.push(Piece { points: std::mem::take(&mut cur), ends: [start, None] });
+                    start = None;
                 }
                 (false, true) => {
                     cur.push(cut(q, p));
@@ -98,10 +101,10 @@ pub fn vcarve(shape: &Shape2d, axis: &MedialAxis2d, opts: &VCarveOptions) -> Res
             }
         }
         if cur.len() >= 2 {
-            pieces.push(cur);
+            pieces.push(Piece { points: cur, ends: [start, Some(edge.to)] });
         }
     }
-    let paths = chain(pieces, shape.tolerance())
+    let paths = chain(pieces)
         .into_iter()
         .map(|pl| VCarvePath { points: pl.iter().map(|&(p, r)| [p.x, p.y, r / slope]).collect() })
         .collect();
@@ -114,43 +117,46 @@ pub fn vcarve(shape: &Shape2d, axis: &MedialAxis2d, opts: &VCarveOptions) -> Res
     Ok(VCarve { paths, flat_radius, flat })
 }
 
-/// Joins polylines end to end where exactly two ends meet (within `tol`),
-/// so the tool lifts only at branch points and leaves.
-fn chain(pieces: Vec<Vec<(Point, f64)>>, tol: f64) -> Vec<Vec<(Point, f64)>> {
+/// A polyline of (point, radius) along one edge and the axis nodes at its
+/// ends (`None` where it was cut at the flat radius).
+struct Piece {
+    points: Vec<(Point, f64)>,
+    ends: [Option<usize>; 2],
+}
+
+/// Joins pieces end to end at nodes where exactly two of them meet, so the
+/// tool lifts only at branch points, leaves and the flat radius.
+fn chain(pieces: Vec<Piece>) -> Vec<Vec<(Point, f64)>> {
     use std::collections::HashMap;
-    // Ends keyed by a grid cell of size tol; ends at one node share the
-    // node's computed point, so an exact key is enough in practice and the
-    // cell only absorbs rounding.
-    let cell = |p: Point| {
-        ((p.x / tol.max(f64::MIN_POSITIVE)).round() as i64, (p.y / tol.max(f64::MIN_POSITIVE)).round() as i64)
-    };
-    let mut at: HashMap<(i64, i64), Vec<(usize, bool)>> = HashMap::new();
-    for (i, pl) in pieces.iter().enumerate() {
-        at.entry(cell(pl[0].0)).or_default().push((i, false));
-        at.entry(cell(pl[pl.len() - 1].0)).or_default().push((i, true));
+    let mut at: HashMap<usize, Vec<(usize, bool)>> = HashMap::new();
+    for (i, pc) in pieces.iter().enumerate() {
+        for (end, node) in pc.ends.iter().enumerate() {
+            if let Some(n) = node {
+                at.entry(*n).or_default().push((i, end == 1));
+            }
+        }
     }
+    let joint = |node: Option<usize>| node.and_then(|n| at.get(&n)).filter(|v| v.len() == 2);
     let mut used = vec![false; pieces.len()];
     let mut out = Vec::new();
-    let degree2 = |p: Point| at.get(&cell(p)).is_some_and(|v| v.len() == 2);
     // Start at ends that are not joints, then close any remaining cycles.
-    let mut starts: Vec<usize> = (0..pieces.len()).filter(|&i| !degree2(pieces[i][0].0)).collect();
+    let mut starts: Vec<usize> = (0..pieces.len()).filter(|&i| joint(pieces[i].ends[0]).is_none()).collect();
     starts.extend(0..pieces.len());
     for s in starts {
         if used[s] {
             continue;
         }
         used[s] = true;
-        let mut path = pieces[s].clone();
-        loop {
-            let end = path[path.len() - 1].0;
-            let Some(ends) = at.get(&cell(end)).filter(|v| v.len() == 2) else { break };
-            let Some(&(j, at_end)) = ends.iter().find(|(j, _)| !used[*j]) else { break };
+        let mut path = pieces[s].points.clone();
+        let mut end = pieces[s].ends[1];
+        while let Some(&(j, at_end)) = joint(end).and_then(|v| v.iter().find(|(j, _)| !used[*j])) {
             used[j] = true;
-            let mut next = pieces[j].clone();
+            let mut next = pieces[j].points.clone();
             if at_end {
                 next.reverse();
             }
             path.extend_from_slice(&next[1..]);
+            end = pieces[j].ends[usize::from(!at_end)];
         }
         out.push(path);
     }

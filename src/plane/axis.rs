@@ -131,7 +131,7 @@ impl AxisEdge {
 
     /// The primitive whose footpoint moves furthest along the edge: the
     /// better-conditioned parametrisation.
-    fn driver(&self, shape: &Shape2d, r_max: f64) -> usize {
+    pub(crate) fn driver(&self, shape: &Shape2d, r_max: f64) -> usize {
         usize::from(self.reach(shape, 1, r_max) > self.reach(shape, 0, r_max) * (1.0 + TINY))
     }
 
@@ -198,6 +198,15 @@ fn site_distance(s: &Site, c: Point) -> f64 {
 /// directrix degenerates to that line). Such an edge is the end of a fan
 /// too narrow to hold a footpoint, a few tolerances long.
 pub fn edge_kind(shape: &Shape2d, a: Primitive, b: Primitive) -> ConicKind {
+    if own_end_pair(shape, a, b) {
+        return ConicKind::Line;
+    }
+    conic_kind(&a.site(shape), &b.site(shape), [true, true])
+}
+
+/// Whether one of `a`, `b` is an element and the other a vertex at one of
+/// its ends (the edge between them runs along the element's normal there).
+pub(crate) fn own_end_pair(shape: &Shape2d, a: Primitive, b: Primitive) -> bool {
     let own_end = |v: Primitive, e: Primitive| match (v, e) {
         (Primitive::Vertex { loop_index, vertex }, Primitive::Element(r)) if r.loop_index == loop_index => {
             let n = shape.loops()[loop_index].len();
@@ -205,10 +214,7 @@ pub fn edge_kind(shape: &Shape2d, a: Primitive, b: Primitive) -> ConicKind {
         }
         _ => false,
     };
-    if own_end(a, b) || own_end(b, a) {
-        return ConicKind::Line;
-    }
-    conic_kind(&a.site(shape), &b.site(shape), [true, true])
+    own_end(a, b) || own_end(b, a)
 }
 
 impl MedialAxis2d {

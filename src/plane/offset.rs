@@ -161,11 +161,13 @@ pub struct OffsetLayer {
     /// The connected regions the loops bound (for an inner offset, the
     /// components of Ω^ρ; for an outer one, of the grown shape).
     pub regions: Vec<OffsetRegion>,
-    /// For each region, an axis position inside it (trimmer, edge, piece),
-    /// and for each trimmer the region of each kept edge piece: how the CAM
-    /// layer nests the regions of successive layers without geometry.
-    pub(crate) anchors: Vec<(usize, usize)>,
-    pub(crate) piece_region: Vec<Vec<u32>>,
+    /// For each region, a monotonic edge piece of the inner axis inside it
+    /// (`usize::MAX` for a disk's one region and for outer offsets), and the
+    /// region of each edge piece above the distance (`u32::MAX` below): how
+    /// the CAM layer nests the regions of successive layers without
+    /// geometry.
+    pub(crate) anchors: Vec<usize>,
+    pub(crate) piece_region: Vec<u32>,
 }
 
 impl OffsetLayer {
@@ -189,12 +191,12 @@ impl OffsetLayer {
     /// the axis: the piece of axis inside `r` lies above this layer's
     /// distance too, in exactly one of its regions.
     pub fn region_enclosing(&self, deeper: &OffsetLayer, r: usize) -> Option<usize> {
-        let (part, piece) = *deeper.anchors.get(r)?;
+        let piece = *deeper.anchors.get(r)?;
         if piece == usize::MAX {
             // A disk's single region.
             return (self.regions.len() == 1).then_some(0);
         }
-        let found = *self.piece_region.get(part)?.get(piece)?;
+        let found = *self.piece_region.get(piece)?;
         (found != u32::MAX).then_some(found as usize)
     }
 }

@@ -12,12 +12,12 @@ use crate::kernel::Point;
 use crate::shape::{Loop, Shape2d, ShapeOptions, Vertex};
 use rayon::prelude::*;
 
-/// The frame's radius beyond the shape's circumradius: twice the reach,
-/// so that the frame's offset and the shape's stay apart, plus half the
-/// shape's diagonal, so that the frame is never close for a tiny reach.
+/// The frame's radius: the shape's circumradius (half its diagonal), plus
+/// twice the reach, so that the frame's offset and the shape's stay apart,
+/// plus another half diagonal, so that the frame is never close for a tiny
+/// reach.
 fn frame_radius(shape: &Shape2d, reach: f64) -> f64 {
-    let d = shape.bbox().diagonal();
-    0.5 * d + 2.0 * reach + 0.5 * d
+    shape.bbox().diagonal() + 2.0 * reach
 }
 
 /// The trimmers of the complement's parts: the framed shape first, then
@@ -27,8 +27,7 @@ pub(crate) fn complement_trimmers(shape: &Shape2d, opts: &OffsetOptions) -> Resu
     if !reach.is_finite() || reach < 0.0 {
         return Err(OffsetError::BadReach(reach));
     }
-    let bb = shape.bbox();
-    let c = Point::new(0.5 * (bb.min.x + bb.max.x), 0.5 * (bb.min.y + bb.max.y));
+    let c = shape.bbox().center();
     let r = frame_radius(shape, reach);
     // Two half circles, counter-clockwise.
     let frame =
@@ -80,7 +79,7 @@ pub(crate) fn outer_layer(offsets: &Offsets, distance: f64) -> Result<OffsetLaye
     let mut loops = vec![outer];
     loops.extend(holes);
     let regions = vec![OffsetRegion { outer: 0, holes: (1..loops.len()).collect() }];
-    Ok(OffsetLayer { distance: -distance, loops, regions, anchors: vec![(1, usize::MAX)], piece_region: Vec::new() })
+    Ok(OffsetLayer { distance: -distance, loops, regions, anchors: vec![usize::MAX], piece_region: Vec::new() })
 }
 
 /// The loop the other way round, in region 0.

@@ -7,9 +7,10 @@
 use super::axis::Primitive;
 use crate::kernel::apollonius::Site;
 use crate::kernel::bisector::footpoint;
+use crate::kernel::construct::unwrap_near;
 use crate::kernel::Point;
-use crate::shape::{Element, Shape2d};
-use std::f64::consts::{PI, TAU};
+use crate::shape::{turning_angle, Element, Shape2d};
+use std::f64::consts::TAU;
 
 /// One primitive with what the offset needs of it. Parameters are those of
 /// [`footpoint`]: distance along a segment from its start, or the angle
@@ -46,15 +47,21 @@ impl OffsetPrim {
                 OffsetPrim { site, loop_index: r.loop_index as u32, pos: 2 * r.element as u32 + 1, sigma, bound }
             }
             Primitive::Vertex { loop_index, vertex } => {
-                let lp = &shape.loops()[loop_index];
-                let n = lp.len();
-                let t_in = lp.element((vertex + n - 1) % n).end_tangent();
-                let t_out = lp.element(vertex).start_tangent();
                 // The fan turns clockwise from the incoming normal to the
                 // outgoing one by the angle the boundary turns right.
-                let width = (-t_in.cross(t_out)).atan2(t_in.dot(t_out)).abs();
+                let width = turning_angle(&shape.loops()[loop_index], vertex).abs();
                 OffsetPrim { site, loop_index: loop_index as u32, pos: 2 * vertex as u32, sigma: -1.0, bound: width }
             }
+        }
+    }
+
+    /// Parameter `u` next to `near`: an angle shifted by whole turns to
+    /// within π of it, a length as it is.
+    pub fn unwrap(&self, u: f64, near: f64) -> f64 {
+        if self.sigma == 0.0 {
+            u
+        } else {
+            unwrap_near(u, near)
         }
     }
 
@@ -150,9 +157,4 @@ pub(crate) enum Curve {
     Line(Point, Point),
     /// Centre and radius (may be ≤ 0: no such offset).
     Circle(Point, f64),
-}
-
-/// The angle `x` shifted by whole turns next to `near` (within π).
-pub(crate) fn near_angle(x: f64, near: f64) -> f64 {
-    near + (x - near + PI).rem_euclid(TAU) - PI
 }

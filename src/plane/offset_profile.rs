@@ -34,7 +34,7 @@ pub(crate) struct EdgeProfile {
     /// its own end vertex): crossings are interpolated.
     pub linear: bool,
     /// The side whose footpoint moves furthest (the better-conditioned
-    /// parametrisation).
+    /// parametrisation, as the axis samples it).
     pub driver: usize,
 }
 
@@ -46,21 +46,17 @@ impl EdgeProfile {
     /// The profile of `edge` between `nodes`.
     /// `own_end` says the edge lies between an element and one of its own
     /// end vertices (along the element's normal there).
-    pub fn new(edge: &AxisEdge, nodes: &[AxisNode], prims: [OffsetPrim; 2], own_end: bool) -> EdgeProfile {
+    /// `driver` is [`AxisEdge::driver`].
+    pub fn new(
+        edge: &AxisEdge,
+        nodes: &[AxisNode],
+        prims: [OffsetPrim; 2],
+        own_end: bool,
+        driver: usize,
+    ) -> EdgeProfile {
         let (a, b) = (nodes[edge.from], nodes[edge.to]);
         let lines = matches!(prims[0].site, Site::Line { .. }) && matches!(prims[1].site, Site::Line { .. });
         let linear = own_end || lines;
-        let r_max = a.radius.max(b.radius);
-        let reach = |k: usize| {
-            let (u0, u1) = edge.params[k];
-            (u1 - u0).abs()
-                * match prims[k].site {
-                    Site::Line { .. } => 1.0,
-                    Site::Circle { r, .. } => r,
-                    Site::Point(_) => r_max,
-                }
-        };
-        let driver = usize::from(reach(1) > reach(0));
         let first = Break { point: a.point, radius: a.radius, u: [edge.params[0].0, edge.params[1].0] };
         let last = Break { point: b.point, radius: b.radius, u: [edge.params[0].1, edge.params[1].1] };
         let mut breaks = vec![first];
@@ -113,12 +109,7 @@ impl EdgeProfile {
 
     /// The parameter of centre `c` on side `k`, next to the range `u0..u1`.
     fn param_near(&self, k: usize, c: Point, u0: f64, u1: f64) -> f64 {
-        let u = self.prims[k].param_of(c);
-        if self.prims[k].sigma == 0.0 {
-            u
-        } else {
-            super::offset_prim::near_angle(u, 0.5 * (u0 + u1))
-        }
+        self.prims[k].unwrap(self.prims[k].param_of(c), 0.5 * (u0 + u1))
     }
 
     /// The disk of radius `rho` on the piece from break `j`, by bisection
@@ -155,7 +146,7 @@ fn position(p: &OffsetPrim, u: f64, ua: f64, ub: f64) -> f64 {
     if d == 0.0 {
         return 0.5;
     }
-    let u = if p.sigma == 0.0 { u } else { super::offset_prim::near_angle(u, 0.5 * (ua + ub)) };
+    let u = p.unwrap(u, 0.5 * (ua + ub));
     (u - ua) / d
 }
 
@@ -190,11 +181,10 @@ fn extrema(prims: &[OffsetPrim; 2], k: usize, edge: &AxisEdge) -> Vec<Break> {
         if !p.strictly_between(u, u0, u1, END_MARGIN) {
             continue;
         }
-        let u = if p.sigma == 0.0 { u } else { super::offset_prim::near_angle(u, 0.5 * (u0 + u1)) };
+        let u = p.unwrap(u, 0.5 * (u0 + u1));
         let Some((c, r)) = bisector_point(&p.site, &q.site, u) else { continue };
-        let uq = q.param_of(c);
         let (q0, q1) = edge.params[1 - k];
-        let uq = if q.sigma == 0.0 { uq } else { super::offset_prim::near_angle(uq, 0.5 * (q0 + q1)) };
+        let uq = q.unwrap(q.param_of(c), 0.5 * (q0 + q1));
         let mut us = [0.0; 2];
         us[k] = u;
         us[1 - k] = uq;

@@ -10,7 +10,7 @@
 //! loops. The components of Ω^ρ are those of the axis where the radius
 //! exceeds ρ (Ω^ρ retracts onto it), found by union–find.
 
-use super::axis::{MedialAxis2d, Primitive};
+use super::axis::{own_end_pair, MedialAxis2d, Primitive};
 use super::offset::{OffsetError, OffsetLayer, OffsetLoop, OffsetRegion};
 use super::offset_prim::OffsetPrim;
 use super::offset_profile::EdgeProfile;
@@ -86,20 +86,14 @@ fn in_band(r0: f64, r1: f64, lo: f64, hi: f64) -> bool {
 impl Trimmer {
     /// The trimmer of `axis`, the medial axis of `shape`.
     pub(crate) fn new(shape: &Shape2d, axis: &MedialAxis2d) -> Trimmer {
-        let own_end = |v: Primitive, e: Primitive| match (v, e) {
-            (Primitive::Vertex { loop_index, vertex }, Primitive::Element(r)) if r.loop_index == loop_index => {
-                let n = shape.loops()[loop_index].len();
-                vertex == r.element || vertex == (r.element + 1) % n
-            }
-            _ => false,
-        };
         let profiles: Vec<EdgeProfile> = axis
             .edges
             .iter()
             .map(|e| {
                 let prims = [OffsetPrim::new(shape, e.sites[0]), OffsetPrim::new(shape, e.sites[1])];
-                let own = own_end(e.sites[0], e.sites[1]) || own_end(e.sites[1], e.sites[0]);
-                EdgeProfile::new(e, &axis.nodes, prims, own)
+                let own_end = own_end_pair(shape, e.sites[0], e.sites[1]);
+                let r_max = axis.nodes[e.from].radius.max(axis.nodes[e.to].radius);
+                EdgeProfile::new(e, &axis.nodes, prims, own_end, e.driver(shape, r_max))
             })
             .collect();
         let mut sub_base = Vec::with_capacity(profiles.len() + 1);
@@ -353,7 +347,7 @@ impl Trimmer {
         for (li, (mut lp, root, piece)) in loops.into_iter().enumerate() {
             let r = *index.entry(root).or_insert_with(|| {
                 regions.push(OffsetRegion { outer: usize::MAX, holes: Vec::new() });
-                anchors.push((0, piece));
+                anchors.push(piece);
                 regions.len() - 1
             });
             lp.region = r;
@@ -380,7 +374,7 @@ impl Trimmer {
                 }
             }
         }
-        Ok(OffsetLayer { distance: rho, loops: out, regions, anchors, piece_region: vec![piece_region] })
+        Ok(OffsetLayer { distance: rho, loops: out, regions, anchors, piece_region })
     }
 }
 
@@ -392,7 +386,7 @@ fn disk_layer(lp: &Loop, centre: Point, radius: f64, rho: f64) -> OffsetLayer {
         loops: Vec::new(),
         regions: Vec::new(),
         anchors: Vec::new(),
-        piece_region: vec![Vec::new()],
+        piece_region: Vec::new(),
     };
     if rho < radius {
         let s = (radius - rho) / radius;
@@ -401,7 +395,7 @@ fn disk_layer(lp: &Loop, centre: Point, radius: f64, rho: f64) -> OffsetLayer {
         let area = Loop::new(vertices.clone()).signed_area();
         layer.loops.push(OffsetLoop { vertices, area, region: 0 });
         layer.regions.push(OffsetRegion { outer: 0, holes: Vec::new() });
-        layer.anchors.push((0, usize::MAX));
+        layer.anchors.push(usize::MAX);
     }
     layer
 }
@@ -422,12 +416,10 @@ fn close_runs(mut runs: Vec<Run>, rho: f64, tol: f64) -> Option<Vec<Vertex>> {
         merged[0].start = last.start;
         merged[0].advance += last.advance;
     }
-    let keep: Vec<bool> = merged.iter().map(|r| r.prim.length(r.advance, rho) > tol).collect();
     let vertices: Vec<Vertex> = merged
         .iter()
-        .zip(&keep)
-        .filter(|(_, &k)| k)
-        .map(|(r, _)| Vertex { p: r.start, bulge: r.prim.bulge(r.advance) })
+        .filter(|r| r.prim.length(r.advance, rho) > tol)
+        .map(|r| Vertex { p: r.start, bulge: r.prim.bulge(r.advance) })
         .collect();
     (vertices.len() >= 2).then_some(vertices)
 }
