@@ -172,13 +172,10 @@ struct Context<'a> {
 
 fn offsets(ctx: &Context, distances: &[f64]) -> Result<Computed, String> {
     let reach = distances.iter().map(|d| -d).fold(0.0, f64::max);
-    // Outer offsets need the complement's axes too; inner ones reuse the axis.
-    let offsets = if reach > 0.0 {
-        Offsets::new(ctx.shape, &OffsetOptions { axis: ctx.axis_opts, outer_reach: reach })
-    } else {
-        Offsets::from_axis(ctx.shape, ctx.axis)
-    }
-    .map_err(|e| e.to_string())?;
+    // Outer offsets need the complement's axes too; the shape's is reused.
+    let offsets = Offsets::from_axis(ctx.shape, ctx.axis)
+        .and_then(|o| o.with_outer(ctx.shape, &OffsetOptions { axis: ctx.axis_opts, outer_reach: reach }))
+        .map_err(|e| e.to_string())?;
     let layers = offsets.layers(distances).map_err(|e| e.to_string())?;
     out!("offsets: {} distance(s)", layers.len());
     for l in &layers {

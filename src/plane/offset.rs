@@ -219,12 +219,18 @@ impl Offsets {
     pub fn new(shape: &Shape2d, opts: &OffsetOptions) -> Result<Offsets, OffsetError> {
         check_regions(shape)?;
         let axis = medial_axis(shape, &opts.axis)?;
-        let mut out = Offsets::from_axis(shape, &axis)?;
+        Offsets::from_axis(shape, &axis)?.with_outer(shape, opts)
+    }
+
+    /// Adds outer offsets up to `opts.outer_reach` (nothing for 0): the
+    /// axes of `shape`'s complement, computed with `opts.axis`. `shape` is
+    /// the shape these offsets were prepared from.
+    pub fn with_outer(mut self, shape: &Shape2d, opts: &OffsetOptions) -> Result<Offsets, OffsetError> {
         if opts.outer_reach != 0.0 {
-            out.outer = super::offset_outer::complement_trimmers(shape, opts)?;
-            out.outer_reach = opts.outer_reach;
+            self.outer = super::offset_outer::complement_trimmers(shape, opts)?;
+            self.outer_reach = opts.outer_reach;
         }
-        Ok(out)
+        Ok(self)
     }
 
     /// Inner offsets from an axis computed by the caller (of this very
