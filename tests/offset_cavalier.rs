@@ -6,7 +6,9 @@
 //!
 //! Where cavalier's own loops have points off the offset distance (the
 //! oracle's distance to the boundary), it is wrong there and the distance
-//! is skipped (printed); medax's loops are always held to the oracle.
+//! is skipped (printed), but only as many times as the caller expects for
+//! the shape; medax's loop points are always held to the distance (the
+//! full oracle, membership included, is tests/offset.rs).
 //!
 //! Conventions: cavalier's `parallel_offset(d)` offsets to the left of the
 //! direction of travel for d > 0, so a counter-clockwise outer loop shrinks
@@ -72,8 +74,9 @@ impl Disagreements<'_> {
 }
 
 /// Compares medax and cavalier at each distance (fractions of the largest
-/// inscribed radius inwards, of the diagonal outwards).
-fn compare(name: &str, loops: Vec<Vec<Vertex>>, inner: &[f64], outer: &[f64]) {
+/// inscribed radius inwards, of the diagonal outwards); at most `skips`
+/// distances may be skipped because cavalier is wrong there.
+fn compare(name: &str, loops: Vec<Vec<Vertex>>, inner: &[f64], outer: &[f64], skips: usize) {
     let s = shape(loops);
     let diag = s.bbox().diagonal();
     let reach = outer.iter().fold(0.0f64, |m, f| m.max(f * diag));
@@ -81,6 +84,7 @@ fn compare(name: &str, loops: Vec<Vec<Vertex>>, inner: &[f64], outer: &[f64]) {
     let m = off.max_inner_distance();
     let distances = inner.iter().map(|f| f * m).chain(outer.iter().map(|f| -f * diag));
     let mut bad = Vec::new();
+    let mut skipped = 0;
     let truth = oracle::Loops::of_shape(&s);
     // The largest distance defect of the loops' points (the oracle).
     let defect = |loops: &[Vec<Vertex>], d: f64| {
@@ -103,6 +107,7 @@ fn compare(name: &str, loops: Vec<Vec<Vertex>>, inner: &[f64], outer: &[f64]) {
         // distance: a disagreement there is not medax's.
         let cavalier_wrong = dc > 1e-6 * diag;
         if cavalier_wrong {
+            skipped += 1;
             eprintln!("{name} at {d}: cavalier's loops have points {dc:e} off the offset distance (medax {dm:e})");
         }
         let mut found = Disagreements { list: &mut bad, skip: cavalier_wrong };
@@ -129,6 +134,7 @@ fn compare(name: &str, loops: Vec<Vec<Vertex>>, inner: &[f64], outer: &[f64]) {
         }
     }
     assert!(bad.is_empty(), "{} disagreements:\n  {}", bad.len(), bad.join("\n  "));
+    assert!(skipped <= skips, "{name}: {skipped} distances skipped (cavalier wrong), {skips} expected");
 }
 
 // Fractions away from the critical distances of the test shapes (the disk
@@ -139,19 +145,25 @@ const OUTER: [f64; 3] = [0.005, 0.03, 0.1];
 #[test]
 fn stars_agree_with_cavalier() {
     for seed in 0..4 {
-        compare(&format!("star 120 seed {seed}"), samples::star_polygon(120, seed), &INNER, &OUTER);
+        // Seeds 1 and 2: cavalier leaves points 8e-5 and 1.4e-5 of the
+        // diagonal off the distance at one distance each.
+        let skips = usize::from(seed == 1 || seed == 2);
+        compare(&format!("star 120 seed {seed}"), samples::star_polygon(120, seed), &INNER, &OUTER, skips);
     }
     for seed in 0..3 {
-        compare(&format!("test star 50 seed {seed}"), vec![common::star(50, seed)], &INNER, &OUTER);
+        compare(&format!("test star 50 seed {seed}"), vec![common::star(50, seed)], &INNER, &OUTER, 0);
     }
 }
 
 #[test]
 fn arc_shapes_agree_with_cavalier() {
-    compare("flower 300", samples::flower_arcs(300), &INNER, &OUTER);
+    compare("flower 300", samples::flower_arcs(300), &INNER, &OUTER, 0);
     let stadium = vec![v(0.0, 0.0, 0.0), v(4.0, 0.0, 1.0), v(4.0, 2.0, 0.0), v(0.0, 2.0, 1.0)];
-    compare("stadium", vec![stadium], &INNER, &OUTER);
-    // Two disks joined by a neck of half-width ½ (split at ρ = ½).
+    compare("stadium", vec![stadium], &INNER, &OUTER, 0);
+    // Two disks joined by a neck of half-width ½ (split at ρ = ½). Outwards
+    // cavalier joins the neck's offset segment to the disks' offset arcs by
+    // a straight line instead of trimming them: its 3 outer distances are
+    // skipped.
     let (r, w) = (2.0f64, 0.5f64);
     let x1 = (r * r - w * w).sqrt();
     let b = 1.0 / ((w / r).asin() / 2.0).tan();
@@ -160,16 +172,17 @@ fn arc_shapes_agree_with_cavalier() {
         vec![vec![v(x1, -w, 0.0), v(6.0 - x1, -w, b), v(6.0 - x1, w, 0.0), v(x1, w, b)]],
         &INNER,
         &OUTER,
+        OUTER.len(),
     );
 }
 
 #[test]
 fn shapes_with_islands_agree_with_cavalier() {
-    compare("perforated plate 3", samples::perforated_plate(3), &INNER, &OUTER);
+    compare("perforated plate 3", samples::perforated_plate(3), &INNER, &OUTER, 0);
     for seed in 0..3 {
-        compare(&format!("random holes 3 seed {seed}"), samples::random_holes(3, seed), &INNER, &OUTER);
+        compare(&format!("random holes 3 seed {seed}"), samples::random_holes(3, seed), &INNER, &OUTER, 0);
     }
     let demo = include_str!("../src/cli/demo_shape.json");
     let s = Shape2d::from_json_str(demo, &medax::shape::ShapeOptions::default()).expect("demo");
-    compare("demo shape", s.loops().iter().map(|l| l.vertices().to_vec()).collect(), &INNER, &OUTER);
+    compare("demo shape", s.loops().iter().map(|l| l.vertices().to_vec()).collect(), &INNER, &OUTER, 0);
 }
