@@ -58,6 +58,8 @@ fuzz_target!(|input: Input| {
         let Ok(layer) = off.layer(d) else { continue };
         assert_eq!(layer.distance, d);
         assert!(d <= m + tol || layer.is_empty(), "loops at {d} beyond the largest inscribed radius {m}");
+        // And something at every distance short of it, and outwards.
+        assert!(d >= m - 1e-6 * diag || !layer.is_empty(), "nothing at {d}, below the largest inscribed radius {m}");
         let mut owner = vec![usize::MAX; layer.loops.len()];
         for (r, reg) in layer.regions.iter().enumerate() {
             for &i in std::iter::once(&reg.outer).chain(&reg.holes) {
