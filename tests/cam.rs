@@ -11,7 +11,7 @@ use common::{rect, shape, v};
 use medax::cam::{pocket, vcarve, CamError, PocketOptions, PocketOrder, UncutKind, VCarveOptions};
 use medax::kernel::Point;
 use medax::plane::{medial_axis, AxisOptions, OffsetLoop, OffsetOptions, Offsets};
-use medax::shape::{Element, Shape2d, ShapeOptions, Vertex};
+use medax::shape::{Element, Shape2d, Vertex};
 use rand::{Rng, SeedableRng};
 
 fn winding(loops: &[Vec<Vertex>], p: Point) -> i32 {
@@ -25,23 +25,10 @@ fn loops_of<'a>(ls: impl IntoIterator<Item = &'a OffsetLoop>) -> Loops {
     Loops::new(&vs)
 }
 
+/// Two 4 × 4 bulbs joined by a neck 0.8 wide: narrower than a tool of
+/// radius 1.
 fn dumbbell() -> Shape2d {
-    // Two 4 × 4 bulbs joined by a neck 0.8 wide: narrower than a tool of
-    // radius 1.
-    shape(vec![common::poly(&[
-        (0.0, 0.0),
-        (4.0, 0.0),
-        (4.0, 1.6),
-        (6.0, 1.6),
-        (6.0, 0.0),
-        (10.0, 0.0),
-        (10.0, 4.0),
-        (6.0, 4.0),
-        (6.0, 2.4),
-        (4.0, 2.4),
-        (4.0, 4.0),
-        (0.0, 4.0),
-    ])])
+    shape(vec![common::square_dumbbell(0.4)])
 }
 
 fn plate() -> Shape2d {
@@ -49,7 +36,7 @@ fn plate() -> Shape2d {
 }
 
 fn demo() -> Shape2d {
-    Shape2d::from_file("src/cli/demo_shape.json", &ShapeOptions::default()).unwrap()
+    shape(common::demo_shape())
 }
 
 fn cases() -> Vec<(&'static str, Shape2d, f64, f64)> {

@@ -25,12 +25,12 @@
 mod common;
 
 use common::offset_oracle::{self as oracle, Elem, Loops};
-use common::{circle, poly, rect, shape, v};
+use common::{circle, demo_shape, disk_dumbbell, poly, rect, shape, square_dumbbell, stadium, v};
 use medax::kernel::Point;
 use medax::plane::{
     medial_axis, AxisOptions, OffsetError, OffsetLayer, OffsetLoop, OffsetOptions, OffsetRegion, Offsets,
 };
-use medax::shape::{samples, Shape2d, ShapeOptions, Vertex};
+use medax::shape::{samples, Shape2d, Vertex};
 use rand::{Rng, SeedableRng};
 use std::f64::consts::{FRAC_PI_8, PI};
 
@@ -539,33 +539,6 @@ fn from_axis_and_layers_agree_with_new_and_layer() {
 
 // ---------------------------------------------------------------- topology events
 
-/// Two 4 × 4 squares joined by a neck of half-width `w` and length 2.
-fn square_dumbbell(w: f64) -> Vec<Vertex> {
-    poly(&[
-        (0.0, 0.0),
-        (4.0, 0.0),
-        (4.0, 2.0 - w),
-        (6.0, 2.0 - w),
-        (6.0, 0.0),
-        (10.0, 0.0),
-        (10.0, 4.0),
-        (6.0, 4.0),
-        (6.0, 2.0 + w),
-        (4.0, 2.0 + w),
-        (4.0, 4.0),
-        (0.0, 4.0),
-    ])
-}
-
-/// Two disks of radius `r` with centres 6 apart joined by a neck of
-/// half-width `w`: two segments and two major arcs.
-fn disk_dumbbell(r: f64, w: f64) -> Vec<Vertex> {
-    let x1 = (r * r - w * w).sqrt();
-    let beta = (w / r).asin();
-    let bulge = 1.0 / (beta / 2.0).tan();
-    vec![v(x1, -w, 0.0), v(6.0 - x1, -w, bulge), v(6.0 - x1, w, 0.0), v(x1, w, bulge)]
-}
-
 /// The neck of a dumbbell is `x_lo < x < x_hi`.
 fn check_split(c: &Case, w: f64, (x_lo, x_hi): (f64, f64)) {
     let tol = c.tol();
@@ -714,11 +687,6 @@ fn d_shape_of_a_major_arc_and_its_chord() {
 
 // ---------------------------------------------------------------- shapes with arcs
 
-/// A 6 × 2 stadium: two half circles and two segments.
-fn stadium() -> Vec<Vertex> {
-    vec![v(0.0, 0.0, 0.0), v(4.0, 0.0, 1.0), v(4.0, 2.0, 0.0), v(0.0, 2.0, 1.0)]
-}
-
 /// A plate with nearly full circle holes: arcs of 340° closed by a chord,
 /// and a round-ended slot.
 fn plate_with_round_holes() -> Vec<Vec<Vertex>> {
@@ -734,13 +702,6 @@ fn plate_with_round_holes() -> Vec<Vec<Vertex>> {
         almost(8.0, 4.2, 0.8, 20f64.to_radians()),
         vec![v(7.0, 1.0, 0.0), v(10.0, 1.0, 1.0), v(10.0, 2.0, 0.0), v(7.0, 2.0, 1.0)],
     ]
-}
-
-fn demo_shape() -> Vec<Vec<Vertex>> {
-    let text =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/src/cli/demo_shape.json")).expect("demo shape");
-    let s = Shape2d::from_json_str(&text, &ShapeOptions::default()).expect("demo shape valid");
-    s.loops().iter().map(|l| l.vertices().to_vec()).collect()
 }
 
 /// Offsets at fractions of the largest inscribed radius, each checked.

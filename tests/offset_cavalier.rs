@@ -158,22 +158,12 @@ fn stars_agree_with_cavalier() {
 #[test]
 fn arc_shapes_agree_with_cavalier() {
     compare("flower 300", samples::flower_arcs(300), &INNER, &OUTER, 0);
-    let stadium = vec![v(0.0, 0.0, 0.0), v(4.0, 0.0, 1.0), v(4.0, 2.0, 0.0), v(0.0, 2.0, 1.0)];
-    compare("stadium", vec![stadium], &INNER, &OUTER, 0);
+    compare("stadium", vec![common::stadium()], &INNER, &OUTER, 0);
     // Two disks joined by a neck of half-width ½ (split at ρ = ½). Outwards
     // cavalier joins the neck's offset segment to the disks' offset arcs by
     // a straight line instead of trimming them: its 3 outer distances are
     // skipped.
-    let (r, w) = (2.0f64, 0.5f64);
-    let x1 = (r * r - w * w).sqrt();
-    let b = 1.0 / ((w / r).asin() / 2.0).tan();
-    compare(
-        "disk dumbbell",
-        vec![vec![v(x1, -w, 0.0), v(6.0 - x1, -w, b), v(6.0 - x1, w, 0.0), v(x1, w, b)]],
-        &INNER,
-        &OUTER,
-        OUTER.len(),
-    );
+    compare("disk dumbbell", vec![common::disk_dumbbell(2.0, 0.5)], &INNER, &OUTER, OUTER.len());
 }
 
 #[test]
@@ -182,7 +172,5 @@ fn shapes_with_islands_agree_with_cavalier() {
     for seed in 0..3 {
         compare(&format!("random holes 3 seed {seed}"), samples::random_holes(3, seed), &INNER, &OUTER, 0);
     }
-    let demo = include_str!("../src/cli/demo_shape.json");
-    let s = Shape2d::from_json_str(demo, &medax::shape::ShapeOptions::default()).expect("demo");
-    compare("demo shape", s.loops().iter().map(|l| l.vertices().to_vec()).collect(), &INNER, &OUTER, 0);
+    compare("demo shape", common::demo_shape(), &INNER, &OUTER, 0);
 }

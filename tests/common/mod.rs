@@ -160,3 +160,44 @@ pub fn same_axis_moved(
     let moved = pairs(got.edges.iter().map(|e| (taken[e.from], taken[e.to])).collect());
     assert_eq!(moved, pairs(want.edges.iter().map(|e| (e.from, e.to)).collect()), "{what}: edges");
 }
+
+/// Two 4 × 4 squares joined by a neck of half-width `w` and length 2.
+pub fn square_dumbbell(w: f64) -> Vec<Vertex> {
+    poly(&[
+        (0.0, 0.0),
+        (4.0, 0.0),
+        (4.0, 2.0 - w),
+        (6.0, 2.0 - w),
+        (6.0, 0.0),
+        (10.0, 0.0),
+        (10.0, 4.0),
+        (6.0, 4.0),
+        (6.0, 2.0 + w),
+        (4.0, 2.0 + w),
+        (4.0, 4.0),
+        (0.0, 4.0),
+    ])
+}
+
+/// Two disks of radius `r` with centres 6 apart joined by a neck of
+/// half-width `w`: two segments and two major arcs.
+pub fn disk_dumbbell(r: f64, w: f64) -> Vec<Vertex> {
+    let x1 = (r * r - w * w).sqrt();
+    let beta = (w / r).asin();
+    let bulge = 1.0 / (beta / 2.0).tan();
+    vec![v(x1, -w, 0.0), v(6.0 - x1, -w, bulge), v(6.0 - x1, w, 0.0), v(x1, w, bulge)]
+}
+
+/// A 6 × 2 stadium: two half circles and two segments.
+pub fn stadium() -> Vec<Vertex> {
+    vec![v(0.0, 0.0, 0.0), v(4.0, 0.0, 1.0), v(4.0, 2.0, 0.0), v(0.0, 2.0, 1.0)]
+}
+
+/// The loops of the CLI's embedded demo shape.
+pub fn demo_shape() -> Vec<Vec<Vertex>> {
+    let text =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/src/cli/demo_shape.json")).expect("demo shape");
+    let s =
+        medax::shape::Shape2d::from_json_str(&text, &medax::shape::ShapeOptions::default()).expect("demo shape valid");
+    s.loops().iter().map(|l| l.vertices().to_vec()).collect()
+}
