@@ -380,7 +380,7 @@ fn vcarves_agree_with_the_rust_api() {
             vcarve(&rust_shape, &axis, &VCarveOptions { angle_deg: angle, max_depth: depth, tolerance: 0.0 }).unwrap();
         let mut info = mx_vcarve_info { path_count: 0, flat_radius: 0.0, flat_loop_count: 9 };
         assert_eq!(unsafe { mx_vcarve_get_info(v, &mut info) }, mx_status::MX_OK);
-        assert_eq!((info.path_count, info.flat_radius), (rust.paths.len(), rust.flat_radius));
+        assert_eq!((info.path_count, info.flat_radius), (rust.paths.len(), rust.flat_radius()));
         assert_eq!(info.flat_loop_count, rust.flat.loops.len());
         assert!(info.path_count > 0);
         for (i, path) in rust.paths.iter().enumerate() {

@@ -110,9 +110,9 @@ fn vcarve_json_and_dxf_carry_depths_exactly() {
     let opts = VCarveOptions { angle_deg: 60.0, max_depth: 0.4, tolerance: 0.0 };
     let v = vcarve(&shape, &axis, &opts).unwrap();
     assert!(!v.paths.is_empty() && !v.flat.is_empty());
-    let doc: Value = serde_json::from_str(&v.to_json(&opts)).unwrap();
+    let doc: Value = serde_json::from_str(&v.to_json()).unwrap();
     assert_eq!(doc["max_depth"].as_f64(), Some(0.4));
-    assert_eq!(doc["flat_radius"].as_f64(), Some(v.flat_radius));
+    assert_eq!(doc["flat_radius"].as_f64(), Some(v.flat_radius()));
     let paths: Vec<Vec<[f64; 3]>> = serde_json::from_value(doc["paths"].clone()).unwrap();
     assert_eq!(paths, v.paths.iter().map(|p| p.points.clone()).collect::<Vec<_>>());
     let flat: Vec<Vec<[f64; 3]>> = v.flat.loops.iter().map(|l| triples(&l.vertices)).collect();
@@ -120,11 +120,11 @@ fn vcarve_json_and_dxf_carry_depths_exactly() {
     // Without a cap, max_depth is null.
     let uncapped = VCarveOptions { max_depth: f64::INFINITY, ..opts };
     let free = vcarve(&shape, &axis, &uncapped).unwrap();
-    let doc: Value = serde_json::from_str(&free.to_json(&uncapped)).unwrap();
+    let doc: Value = serde_json::from_str(&free.to_json()).unwrap();
     assert!(doc["max_depth"].is_null());
     // DXF: a 3D polyline per path at z = -depth (the 2D reader skips them),
     // the flat rings as closed LWPOLYLINEs at elevation -max_depth.
-    let text = v.to_dxf(&opts);
+    let text = v.to_dxf();
     assert_eq!(text.matches("\nPOLYLINE\n").count(), v.paths.len());
     assert_eq!(text.matches("\n 38\n-0.4\n").count(), v.flat.loops.len());
     let deepest = v.paths.iter().flat_map(|p| &p.points).map(|p| p[2]).fold(0.0, f64::max);

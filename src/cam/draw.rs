@@ -74,7 +74,7 @@ impl VCarve {
         if let Some(axis) = axis {
             draw_axis_thin(&mut doc, shape, axis, tol);
         }
-        let deepest = self.paths.iter().flat_map(|p| &p.points).map(|p| p[2]).fold(f64::MIN_POSITIVE, f64::max);
+        let deepest = self.deepest().max(f64::MIN_POSITIVE);
         // Runs of segments in one tenth of the depth range share a stroke.
         let bin = |d: f64| ((d / deepest) * 10.0).floor().min(9.0);
         for p in &self.paths {
@@ -95,7 +95,7 @@ impl VCarve {
                 "v-carve: {} paths (dark = deep, deepest {deepest:.4}), {} flat rings at radius {:.4}",
                 self.paths.len(),
                 self.flat.loops.len(),
-                self.flat_radius
+                self.flat_radius()
             ),
         );
         doc.finish()

@@ -19,7 +19,7 @@
 //! rings (see [`crate::plane::offset_json`]), cut at `max_depth`.
 
 use super::pocket::{Pocket, UncutKind};
-use super::vcarve::{VCarve, VCarveOptions};
+use super::vcarve::VCarve;
 use crate::plane::offset_json::loops_json;
 use serde_json::{json, Value};
 
@@ -61,14 +61,13 @@ impl Pocket {
 }
 
 impl VCarve {
-    /// The V-carve paths as JSON (see the module docs); `opts` are the
-    /// options they were computed with.
-    pub fn to_json(&self, opts: &VCarveOptions) -> String {
+    /// The V-carve paths as JSON (see the module docs).
+    pub fn to_json(&self) -> String {
         let paths: Vec<&[[f64; 3]]> = self.paths.iter().map(|p| p.points.as_slice()).collect();
         finish(&json!({
-            "angle_deg": opts.angle_deg,
-            "max_depth": opts.max_depth,
-            "flat_radius": self.flat_radius,
+            "angle_deg": self.opts.angle_deg,
+            "max_depth": self.opts.max_depth,
+            "flat_radius": self.flat_radius(),
             "paths": paths,
             "flat": self.flat.to_json_value(),
         }))

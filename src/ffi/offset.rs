@@ -39,7 +39,7 @@ pub struct mx_offsets {
 /// from `mx_vcarve_flat`. Immutable.
 #[allow(non_camel_case_types)]
 pub struct mx_offset_layer {
-    layer: OffsetLayer,
+    pub(crate) layer: OffsetLayer,
     loops: FlatLoops,
 }
 

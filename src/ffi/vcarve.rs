@@ -14,7 +14,8 @@ use crate::cam::{vcarve, VCarveOptions, VCarvePath};
 #[allow(non_camel_case_types)]
 pub struct mx_vcarve {
     paths: Vec<VCarvePath>,
-    flat_radius: f64,
+    /// The flat bottom (at the flat radius), in the form `mx_vcarve_flat`
+    /// lends.
     flat: mx_offset_layer,
 }
 
@@ -112,11 +113,7 @@ pub unsafe extern "C" fn mx_vcarve_compute(
             .unwrap_or_else(default_options);
         let opts = VCarveOptions { angle_deg: o.angle_deg, max_depth: o.max_depth, tolerance: o.tolerance };
         let v = vcarve(&a.shape, &a.axis, &opts).map_err(cam_error)?;
-        let h = Box::into_raw(Box::new(mx_vcarve {
-            paths: v.paths,
-            flat_radius: v.flat_radius,
-            flat: mx_offset_layer::new(v.flat),
-        }));
+        let h = Box::into_raw(Box::new(mx_vcarve { paths: v.paths, flat: mx_offset_layer::new(v.flat) }));
         // SAFETY: checked non-NULL above.
         unsafe { write_out(out, h) };
         Ok(())
@@ -146,7 +143,7 @@ pub unsafe extern "C" fn mx_vcarve_get_info(vcarve: *const mx_vcarve, out: *mut 
         boundary::query(vcarve, "vcarve", out, |v| {
             Ok(mx_vcarve_info {
                 path_count: v.paths.len(),
-                flat_radius: v.flat_radius,
+                flat_radius: v.flat.layer.distance,
                 flat_loop_count: v.flat.loop_count(),
             })
         })
