@@ -24,11 +24,11 @@ fn picture(shape: &Shape2d, axis: Option<&MedialAxis2d>, width_px: f64, tol: f64
 /// `doc`: in `ring_colour`, or one colour per level when `None`.
 pub fn draw_pocket(doc: &mut SvgDocument, pocket: &Pocket, ring_colour: Option<&str>) {
     for u in &pocket.uncut {
-        draw_loops(doc, u.loops.iter().map(Vec::as_slice), &Style::filled(UNCUT_FILL, UNCUT_FILL, 0.5, 0.75));
+        draw_loops(doc, &u.loops, &Style::filled(UNCUT_FILL, UNCUT_FILL, 0.5, 0.75));
     }
     for r in &pocket.rings {
         let style = Style::stroke(ring_colour.unwrap_or(layer_colour(r.level)), 1.2);
-        draw_loops(doc, r.loops.iter().map(|l| l.vertices.as_slice()), &style);
+        draw_loops(doc, &r.loops, &style);
     }
 }
 
@@ -69,8 +69,7 @@ impl VCarve {
     pub fn to_svg(&self, shape: &Shape2d, axis: Option<&MedialAxis2d>, width_px: f64, tol: f64) -> String {
         // The flat bottom under the axis, so that the axis shows through.
         let mut doc = shape_document(shape, 0.0, width_px);
-        let flat = self.flat.loops.iter().map(|l| l.vertices.as_slice());
-        draw_loops(&mut doc, flat, &Style::filled("#34495e", "#b0bec5", 1.0, 0.8));
+        draw_loops(&mut doc, &self.flat.loops, &Style::filled("#34495e", "#b0bec5", 1.0, 0.8));
         if let Some(axis) = axis {
             draw_axis_thin(&mut doc, shape, axis, tol);
         }

@@ -15,10 +15,10 @@ impl Pocket {
         let mut w = DxfWriter::new();
         for &i in &self.order {
             let r = &self.rings[i];
-            add_loops(&mut w, &format!("RING_{}", r.level), r.loops.iter().map(|l| l.vertices.as_slice()), 0.0);
+            add_loops(&mut w, &format!("RING_{}", r.level), &r.loops, 0.0);
         }
         for u in &self.uncut {
-            add_loops(&mut w, "UNCUT", u.loops.iter().map(Vec::as_slice), 0.0);
+            add_loops(&mut w, "UNCUT", &u.loops, 0.0);
         }
         w.finish()
     }
@@ -35,7 +35,7 @@ impl VCarve {
             w.polyline_3d("VCARVE", &pts);
         }
         let z = if self.opts.max_depth.is_finite() { -self.opts.max_depth } else { 0.0 };
-        add_loops(&mut w, "FLAT", self.flat.loops.iter().map(|l| l.vertices.as_slice()), z);
+        add_loops(&mut w, "FLAT", &self.flat.loops, z);
         w.finish()
     }
 }

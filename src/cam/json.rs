@@ -20,14 +20,8 @@
 
 use super::pocket::{Pocket, UncutKind};
 use super::vcarve::VCarve;
-use crate::plane::offset_json::loops_json;
+use crate::io::json::{loops_json, to_line};
 use serde_json::{json, Value};
-
-fn finish(doc: &Value) -> String {
-    let mut out = serde_json::to_string(doc).unwrap_or_default();
-    out.push('\n');
-    out
-}
 
 impl Pocket {
     /// The pocket as JSON (see the module docs).
@@ -39,7 +33,7 @@ impl Pocket {
                 json!({
                     "level": r.level,
                     "distance": r.distance,
-                    "loops": loops_json(r.loops.iter().map(|l| l.vertices.as_slice())),
+                    "loops": loops_json(&r.loops),
                     "parent": r.parent,
                     "children": r.children,
                 })
@@ -53,10 +47,10 @@ impl Pocket {
                     UncutKind::Scallop => "scallop",
                     UncutKind::Wall => "wall",
                 };
-                json!({"kind": kind, "area": u.area, "loops": loops_json(u.loops.iter().map(Vec::as_slice))})
+                json!({"kind": kind, "area": u.area, "loops": loops_json(&u.loops)})
             })
             .collect();
-        finish(&json!({"rings": rings, "order": self.order, "truncated": self.truncated, "uncut": uncut}))
+        to_line(&json!({"rings": rings, "order": self.order, "truncated": self.truncated, "uncut": uncut}))
     }
 }
 
@@ -64,7 +58,7 @@ impl VCarve {
     /// The V-carve paths as JSON (see the module docs).
     pub fn to_json(&self) -> String {
         let paths: Vec<&[[f64; 3]]> = self.paths.iter().map(|p| p.points.as_slice()).collect();
-        finish(&json!({
+        to_line(&json!({
             "angle_deg": self.opts.angle_deg,
             "max_depth": self.opts.max_depth,
             "flat_radius": self.flat_radius(),

@@ -145,9 +145,8 @@ pub fn pocket(offsets: &Offsets, opts: &PocketOptions) -> Result<Pocket, CamErro
     let mut level_start = Vec::with_capacity(layers.len());
     for (k, layer) in layers.iter().enumerate() {
         level_start.push(rings.len());
-        for (r, region) in layer.regions.iter().enumerate() {
-            let mut loops = vec![layer.loops[region.outer].clone()];
-            loops.extend(region.holes.iter().map(|&h| layer.loops[h].clone()));
+        for r in 0..layer.regions.len() {
+            let loops = layer.region_loops(r);
             let parent = if k == 0 {
                 None
             } else {
@@ -191,11 +190,10 @@ fn uncut_regions(
     if let Some(&last) = distances.last() {
         if last + r < deepest {
             let layer = offsets.layer(last + r)?;
-            for region in &layer.regions {
-                let mut loops = vec![layer.loops[region.outer].vertices.clone()];
-                loops.extend(region.holes.iter().map(|&h| layer.loops[h].vertices.clone()));
-                let area =
-                    layer.loops[region.outer].area + region.holes.iter().map(|&h| layer.loops[h].area).sum::<f64>();
+            for r in 0..layer.regions.len() {
+                let loops = layer.region_loops(r);
+                let area = loops.iter().map(|l| l.area).sum();
+                let loops = loops.into_iter().map(|l| l.vertices).collect();
                 out.push(UncutRegion { kind: UncutKind::Scallop, loops, area });
             }
         }

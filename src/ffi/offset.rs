@@ -159,9 +159,10 @@ pub(crate) struct FlatLoops {
 }
 
 impl FlatLoops {
-    pub(crate) fn new<'a>(loops: impl IntoIterator<Item = &'a [Vertex]>) -> FlatLoops {
+    pub(crate) fn new(loops: impl IntoIterator<Item = impl AsRef<[Vertex]>>) -> FlatLoops {
         let mut out = FlatLoops::default();
         for l in loops {
+            let l = l.as_ref();
             out.lengths.push(l.len());
             out.xyb.extend(l.iter().flat_map(|v| [v.p.x, v.p.y, v.bulge]));
         }
@@ -186,7 +187,7 @@ impl FlatLoops {
 
 impl mx_offset_layer {
     pub(crate) fn new(layer: OffsetLayer) -> mx_offset_layer {
-        let loops = FlatLoops::new(layer.loops.iter().map(|l| l.vertices.as_slice()));
+        let loops = FlatLoops::new(&layer.loops);
         mx_offset_layer { layer, loops }
     }
 

@@ -175,8 +175,8 @@ pub unsafe extern "C" fn mx_pocket_compute(
         };
         let opts = PocketOptions { tool_radius: c.tool_radius, stepover: c.stepover, order, max_levels: c.max_levels };
         let p = in_pool(o.threads, || pocket(&o.offsets, &opts))?.map_err(cam_error)?;
-        let rings = p.rings.iter().map(|r| FlatLoops::new(r.loops.iter().map(|l| l.vertices.as_slice()))).collect();
-        let uncut = p.uncut.iter().map(|u| FlatLoops::new(u.loops.iter().map(Vec::as_slice))).collect();
+        let rings = p.rings.iter().map(|r| FlatLoops::new(&r.loops)).collect();
+        let uncut = p.uncut.iter().map(|u| FlatLoops::new(&u.loops)).collect();
         let h = Box::into_raw(Box::new(mx_pocket { pocket: p, rings, uncut }));
         // SAFETY: checked non-NULL above.
         unsafe { write_out(out, h) };
