@@ -115,7 +115,7 @@ impl Computed {
     }
 
     fn svg(&self, ctx: &Context) -> String {
-        let (shape, axis) = (ctx.shape, Some(ctx.axis));
+        let (shape, axis) = (ctx.shape, ctx.axis);
         match self {
             Computed::Offsets(layers) => offsets_to_svg(shape, axis, layers, 900.0, ctx.tol),
             Computed::Pocket(p) => p.to_svg(shape, axis, 900.0, ctx.tol),
