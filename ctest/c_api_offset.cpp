@@ -5,7 +5,9 @@
 // within 1e-9 of the diagonal, the layer's area equal to the area of its
 // bulge loops, regions that partition the loops (outer counter-clockwise,
 // holes clockwise); pocket rings at r + k·s with a consistent tree and a
-// machining order that visits children first (inside-out) or last; V-carve
+// machining order that visits children first (inside-out) or last, each
+// ring's points at its distance; layer areas decreasing with the distance,
+// the shape's own between the outer and inner ones; V-carve
 // depths equal to the distance to the boundary over tan(α/2), capped
 // (within the paths' chordal tolerance);
 // errors leave out-params alone.
@@ -19,6 +21,7 @@
 #include <cstdlib>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -128,6 +131,25 @@ Scene plate(std::mt19937_64& rng) {
     return s;
 }
 
+// Counts the points of a loop (vertices and points along each element)
+// that are not at distance |d| from the scene's boundary.
+void check_distance(const Scene& s, const double* xyb, size_t n, double d, mt::Failures& far) {
+    for (const Element& e : elements(xyb, n))
+        for (double t : {0.0, 0.25, 0.5, 0.75}) {
+            const P p = e.at(t);
+            const double off = std::fabs(s.distance(p) - std::fabs(d));
+            if (off > 1e-9 * s.diagonal)
+                far.add("d " + mt::show(d) + " at (" + mt::show(p.x) + ", " + mt::show(p.y) + "): " + mt::show(off));
+        }
+}
+
+// The area of the scene's shape: its outer loop less its holes.
+double shape_area(const Scene& s) {
+    double a = std::fabs(loop_area(s.loops[0].data(), s.loops[0].size() / 3));
+    for (size_t i = 1; i < s.loops.size(); ++i) a -= std::fabs(loop_area(s.loops[i].data(), s.loops[i].size() / 3));
+    return a;
+}
+
 // One layer against the scene: distances, area, regions.
 void check_layer(const Scene& s, const mx_offset_layer* layer, double d) {
     mx_offset_layer_info info{};
@@ -143,13 +165,7 @@ void check_layer(const Scene& s, const mx_offset_layer* layer, double d) {
         MT_CHECK_NEAR(a, l.area, 1e-9);
         MT_CHECK_EQ(l.is_hole, a < 0 ? 1 : 0);
         area += a;
-        for (const Element& e : elements(l.xyb, l.vertex_count))
-            for (double t : {0.0, 0.25, 0.5, 0.75}) {
-                const P p = e.at(t);
-                const double off = std::fabs(s.distance(p) - std::fabs(d));
-                if (off > 1e-9 * s.diagonal)
-                    far.add("d " + mt::show(d) + " at (" + mt::show(p.x) + ", " + mt::show(p.y) + "): " + mt::show(off));
-            }
+        check_distance(s, l.xyb, l.vertex_count, d, far);
     }
     MT_CHECK_EQ(far.count, size_t{0});
     MT_CHECK(std::fabs(area - info.area) <= 1e-9 * std::max(1.0, std::fabs(area)));
@@ -179,7 +195,21 @@ void check_layer(const Scene& s, const mx_offset_layer* layer, double d) {
     MT_CHECK_EQ(all.xyb_len, 3 * sum);
 }
 
-void check_pocket(const mx_offsets* offsets, double r, double step, uint32_t order) {
+// The sides of the offsets: the layers' areas strictly decrease as the
+// distance grows (outer loops outside the shape, inner ones inside), with
+// the shape's own area between the outer and the inner ones.
+void check_sides(const Scene& s, std::vector<std::pair<double, double>> distance_area) {
+    std::sort(distance_area.begin(), distance_area.end());
+    for (size_t k = 1; k < distance_area.size(); ++k) {
+        const auto [d0, a0] = distance_area[k - 1];
+        const auto [d1, a1] = distance_area[k];
+        if (a0 > 0.0) MT_CHECK(a1 < a0);
+        const double shape = shape_area(s);
+        if (d0 < 0.0 && d1 > 0.0) MT_CHECK(a1 < shape && shape < a0);
+    }
+}
+
+void check_pocket(const Scene& s, const mx_offsets* offsets, double r, double step, uint32_t order) {
     mx_pocket_options o{};
     MT_CHECK_OK(mx_pocket_options_default(&o));
     o.tool_radius = r;
@@ -200,6 +230,13 @@ void check_pocket(const mx_offsets* offsets, double r, double step, uint32_t ord
         if (!MT_CHECK_OK(mx_pocket_get_ring(p, i, &ring))) continue;
         MT_CHECK_NEAR(ring.distance, r + step * static_cast<double>(ring.level), 1e-12);
         MT_CHECK(ring.loops.count >= 1);
+        mt::Failures far{"ring point off the ring's distance"};
+        const double* xyb = ring.loops.xyb;
+        for (size_t l = 0; l < ring.loops.count; ++l) {
+            check_distance(s, xyb, ring.loops.lengths[l], ring.distance, far);
+            xyb += 3 * ring.loops.lengths[l];
+        }
+        MT_CHECK_EQ(far.count, size_t{0});
         MT_CHECK_EQ(ring.has_parent, ring.level > 0 ? 1 : 0);
         for (size_t c = 0; c < ring.child_count; ++c) {
             mx_pocket_ring child{};
@@ -222,7 +259,7 @@ void check_pocket(const mx_offsets* offsets, double r, double step, uint32_t ord
     mx_pocket_free(p);
 }
 
-void check_vcarve(const mx_shape2d* shape, const Scene& s, double angle, double max_depth) {
+void check_vcarve(const mx_axis* axis, const Scene& s, double angle, double max_depth) {
     mx_vcarve_options o{};
     MT_CHECK_OK(mx_vcarve_options_default(&o));
     o.angle_deg = angle;
@@ -231,7 +268,7 @@ void check_vcarve(const mx_shape2d* shape, const Scene& s, double angle, double 
     // the flat radius the cut lies on a chord, off the curve by at most it.
     o.tolerance = 1e-6 * s.diagonal;
     mx_vcarve* v = nullptr;
-    if (!MT_CHECK_OK(mx_vcarve_compute(shape, &o, &v))) return;
+    if (!MT_CHECK_OK(mx_vcarve_compute(axis, &o, &v))) return;
     mx_vcarve_info info{};
     MT_CHECK_OK(mx_vcarve_get_info(v, &info));
     MT_CHECK(info.path_count > 0);
@@ -264,25 +301,35 @@ void scene(std::mt19937_64& rng) {
     mx_shape2d* raw = nullptr;
     if (!MT_CHECK_OK(mt::from_loops(s.loops, &raw))) return;
     mt::ShapePtr shape(raw);
+    // One axis serves the offsets (inner and outer) and the V-carves.
+    mx_axis* axis = nullptr;
+    if (!MT_CHECK_OK(mx_axis_compute(shape.get(), nullptr, &axis))) return;
     mx_offset_options o{};
     MT_CHECK_OK(mx_offset_options_default(&o));
     o.outer_reach = 1.0;
     mx_offsets* offsets = nullptr;
-    if (!MT_CHECK_OK(mx_offsets_compute(shape.get(), &o, &offsets))) return;
-    double max_inner = 0.0;
-    MT_CHECK_OK(mx_offsets_max_inner_distance(offsets, &max_inner));
-    const std::vector<double> ds = {0.1, 0.35, 0.7, 0.99 * max_inner, -0.3, -1.0};
-    std::vector<mx_offset_layer*> layers(ds.size(), nullptr);
-    if (MT_CHECK_OK(mx_offsets_layers(offsets, ds.data(), ds.size(), layers.data())))
-        for (size_t k = 0; k < ds.size(); ++k) {
-            check_layer(s, layers[k], ds[k]);
-            mx_offset_layer_free(layers[k]);
-        }
-    check_pocket(offsets, 0.1, 0.15, MX_POCKET_INSIDE_OUT);
-    check_pocket(offsets, 0.2, 0.3, MX_POCKET_OUTSIDE_IN);
-    mx_offsets_free(offsets);
-    check_vcarve(shape.get(), s, 90.0, 0.3);
-    check_vcarve(shape.get(), s, 60.0, 0.2);
+    if (MT_CHECK_OK(mx_offsets_from_axis(axis, &o, &offsets))) {
+        double max_inner = 0.0;
+        MT_CHECK_OK(mx_offsets_max_inner_distance(offsets, &max_inner));
+        const std::vector<double> ds = {0.1, 0.35, 0.7, 0.99 * max_inner, -0.3, -1.0};
+        std::vector<mx_offset_layer*> layers(ds.size(), nullptr);
+        std::vector<std::pair<double, double>> distance_area;
+        if (MT_CHECK_OK(mx_offsets_layers(offsets, ds.data(), ds.size(), layers.data())))
+            for (size_t k = 0; k < ds.size(); ++k) {
+                check_layer(s, layers[k], ds[k]);
+                mx_offset_layer_info info{};
+                MT_CHECK_OK(mx_offset_layer_get_info(layers[k], &info));
+                distance_area.push_back({ds[k], info.area});
+                mx_offset_layer_free(layers[k]);
+            }
+        check_sides(s, distance_area);
+        check_pocket(s, offsets, 0.1, 0.15, MX_POCKET_INSIDE_OUT);
+        check_pocket(s, offsets, 0.2, 0.3, MX_POCKET_OUTSIDE_IN);
+        mx_offsets_free(offsets);
+    }
+    check_vcarve(axis, s, 90.0, 0.3);
+    check_vcarve(axis, s, 60.0, 0.2);
+    mx_axis_free(axis);
 }
 
 void errors() {
@@ -316,8 +363,15 @@ void errors() {
     mx_vcarve_options vo{};
     MT_CHECK_OK(mx_vcarve_options_default(&vo));
     vo.angle_deg = 200.0;
-    MT_CHECK_STATUS(mx_vcarve_compute(shape.get(), &vo, &v), MX_ERR_INVALID_ARGUMENT);
+    mx_axis* axis = nullptr;
+    MT_CHECK_OK(mx_axis_compute(shape.get(), nullptr, &axis));
+    MT_CHECK_STATUS(mx_vcarve_compute(axis, &vo, &v), MX_ERR_INVALID_ARGUMENT);
+    MT_CHECK_STATUS(mx_vcarve_compute(nullptr, nullptr, &v), MX_ERR_NULL_ARGUMENT);
     MT_CHECK(v == no_vcarve);
+    o.outer_reach = -1.0;
+    MT_CHECK_STATUS(mx_offsets_from_axis(axis, &o, &offsets), MX_ERR_INVALID_ARGUMENT);
+    MT_CHECK_STATUS(mx_offsets_from_axis(nullptr, nullptr, &offsets), MX_ERR_NULL_ARGUMENT);
+    mx_axis_free(axis);
     mx_offsets_free(offsets);
     mx_offsets_free(nullptr);
     mx_offset_layer_free(nullptr);

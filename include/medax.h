@@ -335,8 +335,9 @@ typedef struct mx_offset_layer mx_offset_layer;
 /**
  * A shape prepared for offsets at any distance: its medial axis and, for
  * outer offsets, the axes of its complement. Opaque; create with
- * `mx_offsets_compute`, release with `mx_offsets_free`. Immutable: a
- * `const mx_offsets*` may be used from several threads at once.
+ * `mx_offsets_compute` or `mx_offsets_from_axis`, release with
+ * `mx_offsets_free`. Immutable: a `const mx_offsets*` may be used from
+ * several threads at once.
  */
 typedef struct mx_offsets mx_offsets;
 
@@ -523,8 +524,8 @@ typedef struct mx_error_info {
 } mx_error_info;
 
 /**
- * Options for `mx_offsets_compute`. Initialise with
- * `mx_offset_options_default` (which sets `struct_size`).
+ * Options for `mx_offsets_compute` and `mx_offsets_from_axis`.
+ * Initialise with `mx_offset_options_default` (which sets `struct_size`).
  */
 typedef struct mx_offset_options {
   /**
@@ -892,14 +893,6 @@ typedef struct mx_vcarve_options {
    */
   size_t struct_size;
   /**
-   * Seed of the divide step's random choices (as `mx_axis_options.seed`).
-   */
-  uint64_t seed;
-  /**
-   * Worker threads, as `mx_axis_options.threads`.
-   */
-  size_t threads;
-  /**
    * Included angle of the V-bit, degrees, in (0, 180); default 90.
    */
   double angle_deg;
@@ -912,15 +905,6 @@ typedef struct mx_vcarve_options {
    * 0 (default) = 1000 × the shape's tolerance.
    */
   double tolerance;
-  /**
-   * Optional progress callback, as `mx_axis_options.progress` (called
-   * with 0 before and 1 after; nonzero at 0 cancels).
-   */
-  mx_progress_fn progress;
-  /**
-   * Passed unchanged to `progress`.
-   */
-  void *user;
 } mx_vcarve_options;
 
 /**
@@ -1304,8 +1288,9 @@ enum mx_status mx_offset_options_default(struct mx_offset_options *out);
  * Prepares `shape` for offsets (thesis 2.4: its medial axis, and for
  * `outer_reach` > 0 the axes of its complement) and writes a new handle
  * to `*out`. `options` may be NULL. The handle does not borrow the shape.
- * Fails with `MX_ERR_INVALID_ARGUMENT` for bad options (a negative or
- * non-finite `outer_reach`, too many threads), `MX_ERR_NUMERICAL` or
+ * The convenience form of `mx_offsets_from_axis` for a caller without an
+ * axis. Fails with `MX_ERR_INVALID_ARGUMENT` for bad options (a negative
+ * or non-finite `outer_reach`, too many threads), `MX_ERR_NUMERICAL` or
  * `MX_ERR_CANCELLED` as `mx_axis_compute`; `*out` is then untouched.
  *
  * # Safety
@@ -1315,6 +1300,21 @@ enum mx_status mx_offset_options_default(struct mx_offset_options *out);
 enum mx_status mx_offsets_compute(const struct mx_shape2d *shape,
                                   const struct mx_offset_options *options,
                                   struct mx_offsets **out);
+
+/**
+ * Prepares offsets from an axis the caller already has (of `axis`'s own
+ * copy of the shape): only the complement's axes are computed, for
+ * `outer_reach` > 0 (with the options' seed, threads and progress). The
+ * handle does not borrow the axis. Fails as `mx_offsets_compute`; `*out`
+ * is then untouched.
+ *
+ * # Safety
+ * `axis` NULL or a live handle; `options` NULL or valid; `out` NULL or
+ * writable.
+ */
+enum mx_status mx_offsets_from_axis(const struct mx_axis *axis,
+                                    const struct mx_offset_options *options,
+                                    struct mx_offsets **out);
 
 /**
  * Releases prepared offsets (layers taken from them stay valid). NULL is
@@ -1665,19 +1665,19 @@ const char *mx_status_str(int32_t status);
 enum mx_status mx_vcarve_options_default(struct mx_vcarve_options *out);
 
 /**
- * Computes the medial axis of `shape` and the V-carve paths along it for
- * the options' V-bit, and writes a new handle to `*out`. `options` may be
- * NULL (a 90° bit, no depth cap). Fails with `MX_ERR_INVALID_ARGUMENT`
- * (the option named in the message) for an angle outside (0, 180), a
- * maximum depth ≤ 0 or NaN, a negative tolerance or too many threads,
- * `MX_ERR_NUMERICAL` or `MX_ERR_CANCELLED` as `mx_axis_compute`; `*out`
- * is then untouched.
+ * Computes the V-carve paths along the medial axis `axis` (of the
+ * axis's own copy of the shape) for the options' V-bit, and writes a new
+ * handle to `*out`. `options` may be NULL (a 90° bit, no depth cap).
+ * Fails with `MX_ERR_INVALID_ARGUMENT` (the option named in the message)
+ * for an angle outside (0, 180), a maximum depth ≤ 0 or NaN or a negative
+ * tolerance, `MX_ERR_NUMERICAL` when the flat bottom's offset breaks
+ * down; `*out` is then untouched. The handle does not borrow the axis.
  *
  * # Safety
- * `shape` NULL or a live handle; `options` NULL or valid; `out` NULL or
+ * `axis` NULL or a live handle; `options` NULL or valid; `out` NULL or
  * writable.
  */
-enum mx_status mx_vcarve_compute(const struct mx_shape2d *shape,
+enum mx_status mx_vcarve_compute(const struct mx_axis *axis,
                                  const struct mx_vcarve_options *options,
                                  struct mx_vcarve **out);
 

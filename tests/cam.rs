@@ -247,7 +247,7 @@ fn vcarve_depth_is_the_wall_distance_over_the_half_angle_tangent() {
             let tol = 1e-4 * diag;
             let opts = VCarveOptions { angle_deg: angle, max_depth, tolerance: tol };
             let vc = vcarve(&s, &axis, &opts).unwrap();
-            assert!((vc.flat_radius - max_depth * slope).abs() <= 1e-12 * diag);
+            assert!((vc.flat_radius() - max_depth * slope).abs() <= 1e-12 * diag);
             let mut deepest: f64 = 0.0;
             for path in &vc.paths {
                 assert!(path.points.len() >= 2);
@@ -267,7 +267,7 @@ fn vcarve_depth_is_the_wall_distance_over_the_half_angle_tangent() {
                 for lp in &vc.flat.loops {
                     for (q, _) in loop_samples(&lp.vertices, 3) {
                         let d = wall.dist(q);
-                        assert!((d - vc.flat_radius).abs() <= 1e-9 * diag, "{name}: flat ring at {d}");
+                        assert!((d - vc.flat_radius()).abs() <= 1e-9 * diag, "{name}: flat ring at {d}");
                     }
                 }
             } else {
@@ -275,7 +275,7 @@ fn vcarve_depth_is_the_wall_distance_over_the_half_angle_tangent() {
             }
             // Every axis sample shallower than the cap lies on some path.
             for samples in axis.sampled(&s, tol) {
-                for (c, r) in samples.into_iter().filter(|&(_, r)| r < vc.flat_radius * (1.0 - 1e-9)) {
+                for (c, r) in samples.into_iter().filter(|&(_, r)| r < vc.flat_radius() * (1.0 - 1e-9)) {
                     let near = vc.paths.iter().any(|p| {
                         p.points.windows(2).any(|w| {
                             let (a, b) = (Point::new(w[0][0], w[0][1]), Point::new(w[1][0], w[1][1]));

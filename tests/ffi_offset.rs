@@ -151,6 +151,55 @@ fn offsets_agree_with_the_rust_api() {
     unsafe { mx_offsets_free(offsets) };
 }
 
+/// A C axis computed with `mx_axis_options`' defaults, for the shape of
+/// [`c_shape`].
+fn c_axis() -> *mut mx_axis {
+    let shape = c_shape();
+    let mut axis = null_mut();
+    assert_eq!(unsafe { mx_axis_compute(shape, null(), &mut axis) }, mx_status::MX_OK, "{}", last_message());
+    unsafe { mx_shape2d_free(shape) };
+    axis
+}
+
+#[test]
+fn offsets_from_an_axis_agree_with_the_rust_api() {
+    let axis = c_axis();
+    let mut o = offset_options();
+    o.outer_reach = 1.0;
+    let mut offsets = null_mut();
+    assert_eq!(unsafe { mx_offsets_from_axis(axis, &o, &mut offsets) }, mx_status::MX_OK, "{}", last_message());
+    // The handle owns what it needs: the axis may go first.
+    unsafe { mx_axis_free(axis) };
+    let shape = rust_shape();
+    let rust_axis = medial_axis(&shape, &AxisOptions::default()).unwrap();
+    let opts = OffsetOptions { axis: AxisOptions { seed: o.seed, ..AxisOptions::default() }, outer_reach: 1.0 };
+    let rust = Offsets::from_axis(&shape, &rust_axis).unwrap().with_outer(&shape, &opts).unwrap();
+    for d in [0.25, -0.5, 0.0, 5.0] {
+        let mut one = null_mut();
+        assert_eq!(unsafe { mx_offsets_layer(offsets, d, &mut one) }, mx_status::MX_OK, "{}", last_message());
+        check_layer(one, &rust.layer(d).unwrap());
+        unsafe { mx_offset_layer_free(one) };
+    }
+    unsafe { mx_offsets_free(offsets) };
+
+    let sentinel = 0x5EE7 as *mut mx_offsets;
+    let mut out = sentinel;
+    let axis = c_axis();
+    o.outer_reach = -1.0;
+    assert_eq!(unsafe { mx_offsets_from_axis(axis, &o, &mut out) }, mx_status::MX_ERR_INVALID_ARGUMENT);
+    assert!(last_message().contains("outer_reach"), "{}", last_message());
+    o.outer_reach = 1.0;
+    let mut calls = 0usize;
+    o.progress = Some(cancel);
+    o.user = &mut calls as *mut usize as *mut c_void;
+    assert_eq!(unsafe { mx_offsets_from_axis(axis, &o, &mut out) }, mx_status::MX_ERR_CANCELLED);
+    assert_eq!(calls, 1);
+    assert_eq!(unsafe { mx_offsets_from_axis(null(), null(), &mut out) }, mx_status::MX_ERR_NULL_ARGUMENT);
+    assert_eq!(out, sentinel);
+    assert_eq!(unsafe { mx_offsets_from_axis(axis, null(), null_mut()) }, mx_status::MX_ERR_NULL_ARGUMENT);
+    unsafe { mx_axis_free(axis) };
+}
+
 unsafe extern "C" fn cancel(_fraction: f64, calls: *mut c_void) -> c_int {
     unsafe { *(calls as *mut usize) += 1 };
     1
@@ -170,6 +219,7 @@ fn offsets_refuse_bad_values_and_leave_out_params_alone() {
     o.outer_reach = 0.0;
     o.threads = 1 << 20;
     assert_eq!(unsafe { mx_offsets_compute(shape, &o, &mut out) }, mx_status::MX_ERR_INVALID_ARGUMENT);
+    assert!(last_message().contains("threads") && !last_message().contains("outer_reach"), "{}", last_message());
     o.threads = 0;
     o.struct_size = 4;
     assert_eq!(unsafe { mx_offsets_compute(shape, &o, &mut out) }, mx_status::MX_ERR_INVALID_ARGUMENT);
@@ -237,7 +287,7 @@ fn pockets_agree_with_the_rust_api() {
         assert_eq!(unsafe { mx_pocket_get_info(p, &mut info) }, mx_status::MX_OK);
         assert_eq!((info.ring_count, info.uncut_count), (rust.rings.len(), rust.uncut.len()));
         assert_eq!(info.truncated, i32::from(rust.truncated));
-        assert_eq!(info.level_count, rust.rings.iter().map(|r| r.level + 1).max().unwrap_or(0));
+        assert_eq!(info.level_count, rust.level_count());
         assert!(info.ring_count >= 3);
         assert_eq!(unsafe { array(info.order, info.ring_count) }, rust.order.as_slice());
         for (i, r) in rust.rings.iter().enumerate() {
@@ -319,18 +369,18 @@ fn vcarve_options(angle_deg: f64, max_depth: f64) -> mx_vcarve_options {
 
 #[test]
 fn vcarves_agree_with_the_rust_api() {
-    let shape = c_shape();
+    let c_axis = c_axis();
     let rust_shape = rust_shape();
     let axis = medial_axis(&rust_shape, &AxisOptions::default()).unwrap();
     for (angle, depth) in [(90.0, 0.3), (60.0, f64::INFINITY)] {
         let o = vcarve_options(angle, depth);
         let mut v = null_mut();
-        assert_eq!(unsafe { mx_vcarve_compute(shape, &o, &mut v) }, mx_status::MX_OK, "{}", last_message());
+        assert_eq!(unsafe { mx_vcarve_compute(c_axis, &o, &mut v) }, mx_status::MX_OK, "{}", last_message());
         let rust =
             vcarve(&rust_shape, &axis, &VCarveOptions { angle_deg: angle, max_depth: depth, tolerance: 0.0 }).unwrap();
         let mut info = mx_vcarve_info { path_count: 0, flat_radius: 0.0, flat_loop_count: 9 };
         assert_eq!(unsafe { mx_vcarve_get_info(v, &mut info) }, mx_status::MX_OK);
-        assert_eq!((info.path_count, info.flat_radius), (rust.paths.len(), rust.flat_radius));
+        assert_eq!((info.path_count, info.flat_radius), (rust.paths.len(), rust.flat_radius()));
         assert_eq!(info.flat_loop_count, rust.flat.loops.len());
         assert!(info.path_count > 0);
         for (i, path) in rust.paths.iter().enumerate() {
@@ -355,12 +405,12 @@ fn vcarves_agree_with_the_rust_api() {
         }
         unsafe { mx_vcarve_free(v) };
     }
-    unsafe { mx_shape2d_free(shape) };
+    unsafe { mx_axis_free(c_axis) };
 }
 
 #[test]
 fn vcarves_refuse_bad_options_by_name() {
-    let shape = c_shape();
+    let axis = c_axis();
     let sentinel = 0x5EE7 as *mut mx_vcarve;
     let mut v = sentinel;
     let cases = [
@@ -370,26 +420,20 @@ fn vcarves_refuse_bad_options_by_name() {
         (vcarve_options(90.0, 0.0), "max_depth"),
         (vcarve_options(90.0, f64::NAN), "max_depth"),
         (mx_vcarve_options { tolerance: -1.0, ..vcarve_options(90.0, 1.0) }, "tolerance"),
-        (mx_vcarve_options { threads: 1 << 20, ..vcarve_options(90.0, 1.0) }, "threads"),
+        (mx_vcarve_options { struct_size: 1, ..vcarve_options(90.0, 1.0) }, "struct_size"),
     ];
     for (o, named) in cases {
-        assert_eq!(unsafe { mx_vcarve_compute(shape, &o, &mut v) }, mx_status::MX_ERR_INVALID_ARGUMENT, "{named}");
+        assert_eq!(unsafe { mx_vcarve_compute(axis, &o, &mut v) }, mx_status::MX_ERR_INVALID_ARGUMENT, "{named}");
         assert!(last_message().contains(named), "{named}: {}", last_message());
     }
-    let mut calls = 0usize;
-    let o = mx_vcarve_options {
-        progress: Some(cancel),
-        user: &mut calls as *mut usize as *mut c_void,
-        ..vcarve_options(90.0, 1.0)
-    };
-    assert_eq!(unsafe { mx_vcarve_compute(shape, &o, &mut v) }, mx_status::MX_ERR_CANCELLED);
     assert_eq!(unsafe { mx_vcarve_compute(null(), null(), &mut v) }, mx_status::MX_ERR_NULL_ARGUMENT);
+    assert_eq!(unsafe { mx_vcarve_compute(axis, null(), null_mut()) }, mx_status::MX_ERR_NULL_ARGUMENT);
     assert_eq!(v, sentinel);
     let mut flat: *const mx_offset_layer = null();
     assert_eq!(unsafe { mx_vcarve_flat(null(), &mut flat) }, mx_status::MX_ERR_NULL_ARGUMENT);
     assert!(flat.is_null());
     unsafe {
         mx_vcarve_free(null_mut());
-        mx_shape2d_free(shape);
+        mx_axis_free(axis);
     }
 }

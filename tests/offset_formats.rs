@@ -5,7 +5,7 @@
 use medax::cam::{pocket, vcarve, PocketOptions, VCarveOptions};
 use medax::io::dxf::read_dxf;
 use medax::io::RawVertex;
-use medax::plane::offset_draw::offsets_to_svg;
+use medax::plane::offset_draw::{layer_colour, offsets_to_svg};
 use medax::plane::offset_dxf::offsets_to_dxf;
 use medax::plane::offset_json::offsets_to_json;
 use medax::plane::{medial_axis, AxisOptions, OffsetOptions, Offsets};
@@ -62,10 +62,34 @@ fn offsets_json_and_dxf_read_back_exactly() {
     let want: Vec<Vec<RawVertex>> = layers.iter().flat_map(|l| &l.loops).map(|l| raw(&l.vertices)).collect();
     assert_eq!(drawing.polylines.iter().map(|p| p.vertices.clone()).collect::<Vec<_>>(), want);
     assert!(drawing.polylines.iter().all(|p| p.closed));
-    // SVG: the round hole's offsets are arcs, the axis is drawn.
+    // SVG: the grey axis, and each layer one path in its own colour with a
+    // move per loop; the round hole (radius 1/2) grows into an arc of radius
+    // 1/2 + 1/3 at distance 1/3, the outer offset at -1/3 rounds the
+    // corners with arcs of radius 1/3.
     let axis = medial_axis(&shape, &AxisOptions::default()).unwrap();
-    let svg = offsets_to_svg(&shape, Some(&axis), &layers, 600.0, 1e-3);
-    assert!(svg.contains(" A") && svg.contains("#9aa5b1"), "arcs and the grey axis");
+    let svg = offsets_to_svg(&shape, &axis, &layers, 600.0, 1e-3);
+    assert!(svg.contains("#9aa5b1"), "the grey axis");
+    let layer_path = |k: usize| {
+        let paths: Vec<&str> = svg
+            .lines()
+            .filter(|l| l.starts_with("<path") && l.contains(&format!("stroke=\"{}\"", layer_colour(k))))
+            .collect();
+        assert_eq!(paths.len(), 1, "layer {k}: one path in its colour");
+        paths[0].to_string()
+    };
+    let arc_radii = |path: &str| -> Vec<f64> {
+        path.split('A').skip(1).map(|t| t.split(' ').next().unwrap().parse().unwrap()).collect()
+    };
+    for (k, radius) in [(0, 0.5 + 1.0 / 3.0), (2, 1.0 / 3.0)] {
+        let path = layer_path(k);
+        assert_eq!(path.matches('M').count(), layers[k].loops.len(), "layer {k}: a move per loop");
+        let radii = arc_radii(&path);
+        assert!(radii.iter().any(|r| (r - radius).abs() < 1e-6), "layer {k}: no arc of radius {radius} in {radii:?}");
+    }
+    assert!(
+        svg.lines().all(|l| !l.contains(&format!("stroke=\"{}\"", layer_colour(3)))),
+        "the empty layer draws nothing"
+    );
 }
 
 #[test]
@@ -110,9 +134,9 @@ fn vcarve_json_and_dxf_carry_depths_exactly() {
     let opts = VCarveOptions { angle_deg: 60.0, max_depth: 0.4, tolerance: 0.0 };
     let v = vcarve(&shape, &axis, &opts).unwrap();
     assert!(!v.paths.is_empty() && !v.flat.is_empty());
-    let doc: Value = serde_json::from_str(&v.to_json(&opts)).unwrap();
+    let doc: Value = serde_json::from_str(&v.to_json()).unwrap();
     assert_eq!(doc["max_depth"].as_f64(), Some(0.4));
-    assert_eq!(doc["flat_radius"].as_f64(), Some(v.flat_radius));
+    assert_eq!(doc["flat_radius"].as_f64(), Some(v.flat_radius()));
     let paths: Vec<Vec<[f64; 3]>> = serde_json::from_value(doc["paths"].clone()).unwrap();
     assert_eq!(paths, v.paths.iter().map(|p| p.points.clone()).collect::<Vec<_>>());
     let flat: Vec<Vec<[f64; 3]>> = v.flat.loops.iter().map(|l| triples(&l.vertices)).collect();
@@ -120,11 +144,11 @@ fn vcarve_json_and_dxf_carry_depths_exactly() {
     // Without a cap, max_depth is null.
     let uncapped = VCarveOptions { max_depth: f64::INFINITY, ..opts };
     let free = vcarve(&shape, &axis, &uncapped).unwrap();
-    let doc: Value = serde_json::from_str(&free.to_json(&uncapped)).unwrap();
+    let doc: Value = serde_json::from_str(&free.to_json()).unwrap();
     assert!(doc["max_depth"].is_null());
     // DXF: a 3D polyline per path at z = -depth (the 2D reader skips them),
     // the flat rings as closed LWPOLYLINEs at elevation -max_depth.
-    let text = v.to_dxf(&opts);
+    let text = v.to_dxf();
     assert_eq!(text.matches("\nPOLYLINE\n").count(), v.paths.len());
     assert_eq!(text.matches("\n 38\n-0.4\n").count(), v.flat.loops.len());
     let deepest = v.paths.iter().flat_map(|p| &p.points).map(|p| p[2]).fold(0.0, f64::max);

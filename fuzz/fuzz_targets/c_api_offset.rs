@@ -1,7 +1,7 @@
 //! The C entry points for offsets, pockets and V-carves on arbitrary small
 //! shapes (integer coordinates, bulges in steps of 1/16) with arbitrary
 //! distances and options: statuses only, never a panic (MX_ERR_PANIC) or a
-//! crash; out-params written only on success; borrowed arrays consistent
+//! crash; out-params (offsets, pockets, V-carves) written only on success; borrowed arrays consistent
 //! with their counts; a pocket's order visits every ring once.
 #![no_main]
 
@@ -54,9 +54,18 @@ fuzz_target!(|input: Input| {
     let mut o = unsafe { std::mem::zeroed::<mx_offset_options>() };
     assert_eq!(unsafe { mx_offset_options_default(&mut o) }, mx_status::MX_OK);
     o.outer_reach = input.reach as f64 / 8.0;
+    // Offsets from the shape, or (odd reach) from its axis, which the
+    // V-carve follows.
+    let mut axis = std::ptr::null_mut();
+    let st = unsafe { mx_axis_compute(shape, std::ptr::null(), &mut axis) };
+    assert_ne!(st, mx_status::MX_ERR_PANIC);
     let sentinel = 0x5EE7 as *mut mx_offsets;
     let mut offsets = sentinel;
-    let st = unsafe { mx_offsets_compute(shape, &o, &mut offsets) };
+    let st = if input.reach % 2 == 1 && !axis.is_null() {
+        unsafe { mx_offsets_from_axis(axis, &o, &mut offsets) }
+    } else {
+        unsafe { mx_offsets_compute(shape, &o, &mut offsets) }
+    };
     assert_ne!(st, mx_status::MX_ERR_PANIC);
     if st == mx_status::MX_OK {
         for &d in input.distances.iter().take(4) {
@@ -77,10 +86,13 @@ fuzz_target!(|input: Input| {
         po.stepover = input.pocket.1 as f64 / 16.0;
         po.order = input.pocket.2 as u32;
         po.max_levels = 64;
-        let mut p = std::ptr::null_mut();
+        let no_pocket = 0x5EE7 as *mut mx_pocket;
+        let mut p = no_pocket;
         let st = unsafe { mx_pocket_compute(offsets, &po, &mut p) };
         assert_ne!(st, mx_status::MX_ERR_PANIC);
-        if st == mx_status::MX_OK {
+        if st != mx_status::MX_OK {
+            assert_eq!(p, no_pocket);
+        } else {
             let mut info = unsafe { std::mem::zeroed::<mx_pocket_info>() };
             assert_eq!(unsafe { mx_pocket_get_info(p, &mut info) }, mx_status::MX_OK);
             let order =
@@ -99,14 +111,20 @@ fuzz_target!(|input: Input| {
     assert_eq!(unsafe { mx_vcarve_options_default(&mut vo) }, mx_status::MX_OK);
     vo.angle_deg = input.vcarve.0 as f64;
     vo.max_depth = input.vcarve.1 as f64 / 8.0;
-    let mut v = std::ptr::null_mut();
-    let st = unsafe { mx_vcarve_compute(shape, &vo, &mut v) };
-    assert_ne!(st, mx_status::MX_ERR_PANIC);
-    if st == mx_status::MX_OK {
-        let mut flat: *const mx_offset_layer = std::ptr::null();
-        assert_eq!(unsafe { mx_vcarve_flat(v, &mut flat) }, mx_status::MX_OK);
-        read_layer(flat);
-        unsafe { mx_vcarve_free(v) };
+    if !axis.is_null() {
+        let no_vcarve = 0x5EE7 as *mut mx_vcarve;
+        let mut v = no_vcarve;
+        let st = unsafe { mx_vcarve_compute(axis, &vo, &mut v) };
+        assert_ne!(st, mx_status::MX_ERR_PANIC);
+        if st != mx_status::MX_OK {
+            assert_eq!(v, no_vcarve);
+        } else {
+            let mut flat: *const mx_offset_layer = std::ptr::null();
+            assert_eq!(unsafe { mx_vcarve_flat(v, &mut flat) }, mx_status::MX_OK);
+            read_layer(flat);
+            unsafe { mx_vcarve_free(v) };
+        }
+        unsafe { mx_axis_free(axis) };
     }
     unsafe { mx_shape2d_free(shape) };
 });

@@ -4,40 +4,33 @@
 use super::pocket::Pocket;
 use super::vcarve::VCarve;
 use crate::io::svg_writer::{PathCmd, Style, SvgDocument};
-use crate::plane::offset_draw::{draw_axis_thin, draw_loops, layer_colour, shape_document};
+use crate::plane::offset_draw::{draw_axis_thin, draw_loops, layer_colour};
 use crate::plane::MedialAxis2d;
-use crate::shape::Shape2d;
+use crate::shape::{shape_document, Shape2d};
 
 /// The fill of material left uncut: a warning colour that stands out on
 /// the shape's light blue.
 const UNCUT_FILL: &str = "#ff7f0e";
 
-fn picture(shape: &Shape2d, axis: Option<&MedialAxis2d>, width_px: f64, tol: f64) -> SvgDocument {
-    let mut doc = shape_document(shape, 0.0, width_px);
-    if let Some(axis) = axis {
-        draw_axis_thin(&mut doc, shape, axis, tol);
-    }
-    doc
-}
-
 /// Draws the pocket's uncut regions (filled in orange) and rings into
 /// `doc`: in `ring_colour`, or one colour per level when `None`.
 pub fn draw_pocket(doc: &mut SvgDocument, pocket: &Pocket, ring_colour: Option<&str>) {
     for u in &pocket.uncut {
-        draw_loops(doc, u.loops.iter().map(Vec::as_slice), &Style::filled(UNCUT_FILL, UNCUT_FILL, 0.5, 0.75));
+        draw_loops(doc, &u.loops, &Style::filled(UNCUT_FILL, UNCUT_FILL, 0.5, 0.75));
     }
     for r in &pocket.rings {
         let style = Style::stroke(ring_colour.unwrap_or(layer_colour(r.level)), 1.2);
-        draw_loops(doc, r.loops.iter().map(|l| l.vertices.as_slice()), &style);
+        draw_loops(doc, &r.loops, &style);
     }
 }
 
 impl Pocket {
-    /// An SVG picture `width_px` wide of `shape`, its axis (when given;
-    /// sampled to chordal tolerance `tol`, model units), the rings (one
-    /// colour per level) and the uncut regions filled in orange.
-    pub fn to_svg(&self, shape: &Shape2d, axis: Option<&MedialAxis2d>, width_px: f64, tol: f64) -> String {
-        let mut doc = picture(shape, axis, width_px, tol);
+    /// An SVG picture `width_px` wide of `shape`, its axis (sampled to
+    /// chordal tolerance `tol`, model units), the rings (one colour per
+    /// level) and the uncut regions filled in orange.
+    pub fn to_svg(&self, shape: &Shape2d, axis: &MedialAxis2d, width_px: f64, tol: f64) -> String {
+        let mut doc = shape_document(shape, 0.0, width_px);
+        draw_axis_thin(&mut doc, shape, axis, tol);
         draw_pocket(&mut doc, self, None);
         let levels = self.level_count();
         let uncut = self.uncut_area();
@@ -62,19 +55,16 @@ fn depth_colour(s: f64) -> String {
 }
 
 impl VCarve {
-    /// An SVG picture `width_px` wide of `shape`, its axis (when given;
-    /// sampled to chordal tolerance `tol`, model units), the flat bottom
-    /// filled in grey with its rings, and the paths coloured by depth
-    /// (light shallow, dark deep).
-    pub fn to_svg(&self, shape: &Shape2d, axis: Option<&MedialAxis2d>, width_px: f64, tol: f64) -> String {
+    /// An SVG picture `width_px` wide of `shape`, its axis (sampled to
+    /// chordal tolerance `tol`, model units), the flat bottom filled in grey
+    /// with its rings, and the paths coloured by depth (light shallow, dark
+    /// deep).
+    pub fn to_svg(&self, shape: &Shape2d, axis: &MedialAxis2d, width_px: f64, tol: f64) -> String {
         // The flat bottom under the axis, so that the axis shows through.
         let mut doc = shape_document(shape, 0.0, width_px);
-        let flat = self.flat.loops.iter().map(|l| l.vertices.as_slice());
-        draw_loops(&mut doc, flat, &Style::filled("#34495e", "#b0bec5", 1.0, 0.8));
-        if let Some(axis) = axis {
-            draw_axis_thin(&mut doc, shape, axis, tol);
-        }
-        let deepest = self.paths.iter().flat_map(|p| &p.points).map(|p| p[2]).fold(f64::MIN_POSITIVE, f64::max);
+        draw_loops(&mut doc, &self.flat.loops, &Style::filled("#34495e", "#b0bec5", 1.0, 0.8));
+        draw_axis_thin(&mut doc, shape, axis, tol);
+        let deepest = self.deepest().max(f64::MIN_POSITIVE);
         // Runs of segments in one tenth of the depth range share a stroke.
         let bin = |d: f64| ((d / deepest) * 10.0).floor().min(9.0);
         for p in &self.paths {
@@ -95,7 +85,7 @@ impl VCarve {
                 "v-carve: {} paths (dark = deep, deepest {deepest:.4}), {} flat rings at radius {:.4}",
                 self.paths.len(),
                 self.flat.loops.len(),
-                self.flat_radius
+                self.flat_radius()
             ),
         );
         doc.finish()

@@ -4,7 +4,7 @@
 //! origin on top of the stock.
 
 use super::pocket::Pocket;
-use super::vcarve::{VCarve, VCarveOptions};
+use super::vcarve::VCarve;
 use crate::io::dxf_writer::DxfWriter;
 use crate::plane::offset_dxf::add_loops;
 
@@ -15,10 +15,10 @@ impl Pocket {
         let mut w = DxfWriter::new();
         for &i in &self.order {
             let r = &self.rings[i];
-            add_loops(&mut w, &format!("RING_{}", r.level), r.loops.iter().map(|l| l.vertices.as_slice()), 0.0);
+            add_loops(&mut w, &format!("RING_{}", r.level), &r.loops, 0.0);
         }
         for u in &self.uncut {
-            add_loops(&mut w, "UNCUT", u.loops.iter().map(Vec::as_slice), 0.0);
+            add_loops(&mut w, "UNCUT", &u.loops, 0.0);
         }
         w.finish()
     }
@@ -26,16 +26,16 @@ impl Pocket {
 
 impl VCarve {
     /// The V-carve as DXF: each path a 3D polyline at z = −depth on layer
-    /// `VCARVE`, the flat bottom's rings at z = −`opts.max_depth` on layer
-    /// `FLAT`; `opts` are the options the paths were computed with.
-    pub fn to_dxf(&self, opts: &VCarveOptions) -> String {
+    /// `VCARVE`, the flat bottom's rings at z = −max_depth on layer
+    /// `FLAT`.
+    pub fn to_dxf(&self) -> String {
         let mut w = DxfWriter::new();
         for p in &self.paths {
             let pts: Vec<[f64; 3]> = p.points.iter().map(|&[x, y, d]| [x, y, -d]).collect();
             w.polyline_3d("VCARVE", &pts);
         }
-        let z = if opts.max_depth.is_finite() { -opts.max_depth } else { 0.0 };
-        add_loops(&mut w, "FLAT", self.flat.loops.iter().map(|l| l.vertices.as_slice()), z);
+        let z = if self.opts.max_depth.is_finite() { -self.opts.max_depth } else { 0.0 };
+        add_loops(&mut w, "FLAT", &self.flat.loops, z);
         w.finish()
     }
 }

@@ -9,6 +9,8 @@ pub enum CamError {
         name: &'static str,
         /// The value given.
         value: f64,
+        /// The range it must lie in, in words ("a finite number > 0").
+        expected: &'static str,
     },
     /// The offsets failed.
     Offset(OffsetError),
@@ -17,7 +19,9 @@ pub enum CamError {
 impl std::fmt::Display for CamError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            CamError::BadOption { name, value } => write!(f, "option {name} = {value} is out of range"),
+            CamError::BadOption { name, value, expected } => {
+                write!(f, "option {name} = {value} is out of range: it must be {expected}")
+            }
             CamError::Offset(e) => write!(f, "{e}"),
         }
     }

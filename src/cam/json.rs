@@ -19,15 +19,9 @@
 //! rings (see [`crate::plane::offset_json`]), cut at `max_depth`.
 
 use super::pocket::{Pocket, UncutKind};
-use super::vcarve::{VCarve, VCarveOptions};
-use crate::plane::offset_json::loops_json;
+use super::vcarve::VCarve;
+use crate::io::json::{loops_json, to_line};
 use serde_json::{json, Value};
-
-fn finish(doc: &Value) -> String {
-    let mut out = serde_json::to_string(doc).unwrap_or_default();
-    out.push('\n');
-    out
-}
 
 impl Pocket {
     /// The pocket as JSON (see the module docs).
@@ -39,7 +33,7 @@ impl Pocket {
                 json!({
                     "level": r.level,
                     "distance": r.distance,
-                    "loops": loops_json(r.loops.iter().map(|l| l.vertices.as_slice())),
+                    "loops": loops_json(&r.loops),
                     "parent": r.parent,
                     "children": r.children,
                 })
@@ -53,22 +47,21 @@ impl Pocket {
                     UncutKind::Scallop => "scallop",
                     UncutKind::Wall => "wall",
                 };
-                json!({"kind": kind, "area": u.area, "loops": loops_json(u.loops.iter().map(Vec::as_slice))})
+                json!({"kind": kind, "area": u.area, "loops": loops_json(&u.loops)})
             })
             .collect();
-        finish(&json!({"rings": rings, "order": self.order, "truncated": self.truncated, "uncut": uncut}))
+        to_line(&json!({"rings": rings, "order": self.order, "truncated": self.truncated, "uncut": uncut}))
     }
 }
 
 impl VCarve {
-    /// The V-carve paths as JSON (see the module docs); `opts` are the
-    /// options they were computed with.
-    pub fn to_json(&self, opts: &VCarveOptions) -> String {
+    /// The V-carve paths as JSON (see the module docs).
+    pub fn to_json(&self) -> String {
         let paths: Vec<&[[f64; 3]]> = self.paths.iter().map(|p| p.points.as_slice()).collect();
-        finish(&json!({
-            "angle_deg": opts.angle_deg,
-            "max_depth": opts.max_depth,
-            "flat_radius": self.flat_radius,
+        to_line(&json!({
+            "angle_deg": self.opts.angle_deg,
+            "max_depth": self.opts.max_depth,
+            "flat_radius": self.flat_radius(),
             "paths": paths,
             "flat": self.flat.to_json_value(),
         }))

@@ -38,6 +38,25 @@ impl PocketOptions {
     pub fn new(tool_radius: f64, stepover: f64) -> PocketOptions {
         PocketOptions { tool_radius, stepover, order: PocketOrder::InsideOut, max_levels: 100_000 }
     }
+
+    /// Checks every option's range: the tool radius and the stepover
+    /// finite and > 0, at least one level. [`pocket`] calls it first.
+    pub fn check(&self) -> Result<(), CamError> {
+        const POSITIVE: &str = "a finite number > 0";
+        let positive = |name, value: f64| {
+            if value.is_finite() && value > 0.0 {
+                Ok(())
+            } else {
+                Err(CamError::BadOption { name, value, expected: POSITIVE })
+            }
+        };
+        positive("tool_radius", self.tool_radius)?;
+        positive("stepover", self.stepover)?;
+        if self.max_levels == 0 {
+            return Err(CamError::BadOption { name: "max_levels", value: 0.0, expected: "at least 1" });
+        }
+        Ok(())
+    }
 }
 
 /// One ring: the boundary of one connected region of the offset at one
@@ -109,13 +128,7 @@ impl Pocket {
 /// anchor piece of axis lies in exactly one region of every shallower
 /// level).
 pub fn pocket(offsets: &Offsets, opts: &PocketOptions) -> Result<Pocket, CamError> {
-    let positive =
-        |name, v: f64| if v.is_finite() && v > 0.0 { Ok(()) } else { Err(CamError::BadOption { name, value: v }) };
-    positive("tool_radius", opts.tool_radius)?;
-    positive("stepover", opts.stepover)?;
-    if opts.max_levels == 0 {
-        return Err(CamError::BadOption { name: "max_levels", value: 0.0 });
-    }
+    opts.check()?;
     let deepest = offsets.max_inner_distance();
     let mut distances = Vec::new();
     while distances.len() < opts.max_levels {
@@ -132,9 +145,8 @@ pub fn pocket(offsets: &Offsets, opts: &PocketOptions) -> Result<Pocket, CamErro
     let mut level_start = Vec::with_capacity(layers.len());
     for (k, layer) in layers.iter().enumerate() {
         level_start.push(rings.len());
-        for (r, region) in layer.regions.iter().enumerate() {
-            let mut loops = vec![layer.loops[region.outer].clone()];
-            loops.extend(region.holes.iter().map(|&h| layer.loops[h].clone()));
+        for r in 0..layer.regions.len() {
+            let loops = layer.region_loops(r);
             let parent = if k == 0 {
                 None
             } else {
@@ -178,11 +190,10 @@ fn uncut_regions(
     if let Some(&last) = distances.last() {
         if last + r < deepest {
             let layer = offsets.layer(last + r)?;
-            for region in &layer.regions {
-                let mut loops = vec![layer.loops[region.outer].vertices.clone()];
-                loops.extend(region.holes.iter().map(|&h| layer.loops[h].vertices.clone()));
-                let area =
-                    layer.loops[region.outer].area + region.holes.iter().map(|&h| layer.loops[h].area).sum::<f64>();
+            for r in 0..layer.regions.len() {
+                let loops = layer.region_loops(r);
+                let area = loops.iter().map(|l| l.area).sum();
+                let loops = loops.into_iter().map(|l| l.vertices).collect();
                 out.push(UncutRegion { kind: UncutKind::Scallop, loops, area });
             }
         }

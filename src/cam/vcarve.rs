@@ -20,6 +20,37 @@ pub struct VCarveOptions {
     pub tolerance: f64,
 }
 
+impl VCarveOptions {
+    /// Checks every option's range: the angle in (0, 180), the maximum
+    /// depth > 0 (infinite: no cap), the tolerance finite and ≥ 0.
+    /// [`vcarve`] calls it first.
+    pub fn check(&self) -> Result<(), CamError> {
+        let a = self.angle_deg;
+        if !(a.is_finite() && a > 0.0 && a < 180.0) {
+            return Err(CamError::BadOption {
+                name: "angle_deg",
+                value: a,
+                expected: "between 0 and 180 degrees (exclusive)",
+            });
+        }
+        if self.max_depth.is_nan() || self.max_depth <= 0.0 {
+            return Err(CamError::BadOption {
+                name: "max_depth",
+                value: self.max_depth,
+                expected: "> 0 (infinite: no cap)",
+            });
+        }
+        if !(self.tolerance.is_finite() && self.tolerance >= 0.0) {
+            return Err(CamError::BadOption {
+                name: "tolerance",
+                value: self.tolerance,
+                expected: "a finite number >= 0",
+            });
+        }
+        Ok(())
+    }
+}
+
 /// One tool path along the axis: points (x, y, depth), depth ≥ 0 measured
 /// down from the surface.
 #[derive(Debug, Clone, PartialEq)]
@@ -31,13 +62,26 @@ pub struct VCarvePath {
 /// V-carve paths.
 #[derive(Debug, Clone, PartialEq)]
 pub struct VCarve {
+    /// The options the paths were computed with.
+    pub opts: VCarveOptions,
     /// Paths along the axis, shallower than the maximum depth.
     pub paths: Vec<VCarvePath>,
-    /// The radius where the depth is capped: max_depth · tan(α/2).
-    pub flat_radius: f64,
-    /// The offset rings at the capped radius, cut at the maximum depth
-    /// (empty when the cap is never reached).
+    /// The offset rings at the capped radius (its distance), cut at the
+    /// maximum depth (empty when the cap is never reached).
     pub flat: OffsetLayer,
+}
+
+impl VCarve {
+    /// The radius where the depth is capped: max_depth · tan(α/2)
+    /// (infinite without a cap).
+    pub fn flat_radius(&self) -> f64 {
+        self.flat.distance
+    }
+
+    /// The largest depth along the paths (0 without paths).
+    pub fn deepest(&self) -> f64 {
+        self.paths.iter().flat_map(|p| &p.points).map(|p| p[2]).fold(0.0, f64::max)
+    }
 }
 
 /// V-carve paths of `shape` from its medial axis `axis`: every edge sampled
@@ -46,17 +90,8 @@ pub struct VCarve {
 /// joined into long paths through nodes where only two pieces
 /// meet.
 pub fn vcarve(shape: &Shape2d, axis: &MedialAxis2d, opts: &VCarveOptions) -> Result<VCarve, CamError> {
-    let a = opts.angle_deg;
-    if !(a.is_finite() && a > 0.0 && a < 180.0) {
-        return Err(CamError::BadOption { name: "angle_deg", value: a });
-    }
-    if opts.max_depth.is_nan() || opts.max_depth <= 0.0 {
-        return Err(CamError::BadOption { name: "max_depth", value: opts.max_depth });
-    }
-    if !(opts.tolerance.is_finite() && opts.tolerance >= 0.0) {
-        return Err(CamError::BadOption { name: "tolerance", value: opts.tolerance });
-    }
-    let slope = (0.5 * a.to_radians()).tan();
+    opts.check()?;
+    let slope = (0.5 * opts.angle_deg.to_radians()).tan();
     let flat_radius = opts.max_depth * slope;
     let tol = if opts.tolerance > 0.0 { opts.tolerance } else { 1000.0 * shape.tolerance() };
     let sampled = axis.sampled(shape, tol);
@@ -108,13 +143,13 @@ pub fn vcarve(shape: &Shape2d, axis: &MedialAxis2d, opts: &VCarveOptions) -> Res
         .into_iter()
         .map(|pl| VCarvePath { points: pl.iter().map(|&(p, r)| [p.x, p.y, r / slope]).collect() })
         .collect();
-    let offsets = Offsets::from_axis(shape, axis)?;
-    let flat = if flat_radius < offsets.max_inner_distance() {
-        offsets.layer(flat_radius)?
-    } else {
-        OffsetLayer::empty(flat_radius)
+    // Without a cap there is no flat bottom: no offsets to prepare.
+    let offsets = if flat_radius.is_finite() { Some(Offsets::from_axis(shape, axis)?) } else { None };
+    let flat = match offsets {
+        Some(o) if flat_radius < o.max_inner_distance() => o.layer(flat_radius)?,
+        _ => OffsetLayer::empty(flat_radius),
     };
-    Ok(VCarve { paths, flat_radius, flat })
+    Ok(VCarve { opts: *opts, paths, flat })
 }
 
 /// A polyline of (point, radius) along one edge and the axis nodes at its

@@ -2,9 +2,8 @@
 
 use super::info::report;
 use medax::cam::{draw::draw_pocket, pocket, PocketOptions};
-use medax::io::svg_writer::SvgDocument;
 use medax::plane::{medial_axis, AxisOptions, AxisPicture, Offsets};
-use medax::shape::{draw_shape, Shape2d, ShapeOptions};
+use medax::shape::{draw_joints, shape_document, Shape2d, ShapeOptions};
 use std::path::Path;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -44,9 +43,8 @@ pub fn run(output: &Path) -> Result<(), ExitCode> {
     );
     out!("{pocket_caption}, in {:.1} ms", t.elapsed().as_secs_f64() * 1e3);
     let pic = AxisPicture { width_px: 900.0, tolerance: 1e-4 * shape.bbox().diagonal(), disks: true };
-    let bb = shape.bbox();
-    let mut doc = SvgDocument::new([bb.min.x, bb.min.y, bb.max.x, bb.max.y], pic.width_px);
-    draw_shape(&mut doc, &shape);
+    let mut doc = shape_document(&shape, 0.0, pic.width_px);
+    draw_joints(&mut doc, &shape);
     draw_pocket(&mut doc, &rings, Some("#7f8c8d"));
     axis.draw_axis(&mut doc, &shape, &pic);
     doc.caption(0, &axis.picture_caption());

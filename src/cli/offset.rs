@@ -2,7 +2,7 @@
 //! V-carve paths of a shape, as JSON, DXF and/or SVG.
 
 use super::{fail, write_file, RunArgs, ShapeArgs};
-use medax::cam::{pocket, vcarve, Pocket, PocketOptions, PocketOrder, VCarve, VCarveOptions};
+use medax::cam::{pocket, vcarve, CamError, Pocket, PocketOptions, PocketOrder, VCarve, VCarveOptions};
 use medax::plane::offset_draw::offsets_to_svg;
 use medax::plane::offset_dxf::offsets_to_dxf;
 use medax::plane::offset_json::offsets_to_json;
@@ -62,33 +62,39 @@ fn pair(s: &str, what: &str) -> Result<(f64, f64), String> {
     Ok((num(a)?, num(b)?))
 }
 
+/// A CAM option's range error in the words of the command line.
+fn option_error(e: CamError) -> String {
+    match e {
+        CamError::BadOption { name, value, expected } => {
+            let words = match name {
+                "tool_radius" => "tool radius",
+                "angle_deg" => "angle",
+                "max_depth" => "maximum depth",
+                other => other,
+            };
+            format!("{words} {value} must be {expected}")
+        }
+        other => other.to_string(),
+    }
+}
+
 fn pocket_values(s: &str) -> Result<(f64, f64), String> {
     let (r, step) = pair(s, "TOOL_RADIUS,STEPOVER")?;
-    if !(r.is_finite() && r > 0.0) {
-        return Err(format!("tool radius {r} must be a finite number > 0"));
-    }
-    if !(step.is_finite() && step > 0.0) {
-        return Err(format!("stepover {step} must be a finite number > 0"));
-    }
+    PocketOptions::new(r, step).check().map_err(option_error)?;
     Ok((r, step))
 }
 
 fn vcarve_values(s: &str) -> Result<(f64, f64), String> {
-    let (angle, depth) = pair(s, "ANGLE_DEG,MAX_DEPTH")?;
-    if !(angle > 0.0 && angle < 180.0) {
-        return Err(format!("angle {angle} must be between 0 and 180 degrees (exclusive)"));
-    }
-    if depth.is_nan() || depth <= 0.0 {
-        return Err(format!("maximum depth {depth} must be > 0 (inf for no cap)"));
-    }
-    Ok((angle, depth))
+    let (angle_deg, max_depth) = pair(s, "ANGLE_DEG,MAX_DEPTH")?;
+    VCarveOptions { angle_deg, max_depth, tolerance: 0.0 }.check().map_err(option_error)?;
+    Ok((angle_deg, max_depth))
 }
 
 /// What was computed, written only in the formats asked for.
 enum Computed {
     Offsets(Vec<OffsetLayer>),
     Pocket(Pocket),
-    VCarve(VCarve, VCarveOptions),
+    VCarve(VCarve),
 }
 
 impl Computed {
@@ -96,7 +102,7 @@ impl Computed {
         match self {
             Computed::Offsets(layers) => offsets_to_json(layers),
             Computed::Pocket(p) => p.to_json(),
-            Computed::VCarve(v, opts) => v.to_json(opts),
+            Computed::VCarve(v) => v.to_json(),
         }
     }
 
@@ -104,16 +110,16 @@ impl Computed {
         match self {
             Computed::Offsets(layers) => offsets_to_dxf(layers),
             Computed::Pocket(p) => p.to_dxf(),
-            Computed::VCarve(v, opts) => v.to_dxf(opts),
+            Computed::VCarve(v) => v.to_dxf(),
         }
     }
 
     fn svg(&self, ctx: &Context) -> String {
-        let (shape, axis) = (ctx.shape, Some(ctx.axis));
+        let (shape, axis) = (ctx.shape, ctx.axis);
         match self {
             Computed::Offsets(layers) => offsets_to_svg(shape, axis, layers, 900.0, ctx.tol),
             Computed::Pocket(p) => p.to_svg(shape, axis, 900.0, ctx.tol),
-            Computed::VCarve(v, _) => v.to_svg(shape, axis, 900.0, ctx.tol),
+            Computed::VCarve(v) => v.to_svg(shape, axis, 900.0, ctx.tol),
         }
     }
 }
@@ -197,11 +203,9 @@ fn pocket_rings(ctx: &Context, tool_radius: f64, stepover: f64, outside_in: bool
         if outside_in { "outside-in" } else { "inside-out" },
         if p.truncated { "; cut short at the level limit" } else { "" }
     );
-    for level in 0..levels {
-        let rings: Vec<_> = p.rings.iter().filter(|r| r.level == level).collect();
-        if let Some(first) = rings.first() {
-            out!("  level {level} (distance {}): {} ring(s)", first.distance, rings.len());
-        }
+    // Rings are stored level by level: one run per level.
+    for run in p.rings.chunk_by(|a, b| a.level == b.level) {
+        out!("  level {} (distance {}): {} ring(s)", run[0].level, run[0].distance, run.len());
     }
     out!("uncut: {} region(s), area {uncut}", p.uncut.len());
     Ok(Computed::Pocket(p))
@@ -210,8 +214,7 @@ fn pocket_rings(ctx: &Context, tool_radius: f64, stepover: f64, outside_in: bool
 fn vcarve_paths(ctx: &Context, angle_deg: f64, max_depth: f64) -> Result<Computed, String> {
     let opts = VCarveOptions { angle_deg, max_depth, tolerance: ctx.tol };
     let v = vcarve(ctx.shape, ctx.axis, &opts).map_err(|e| e.to_string())?;
-    let deepest = v.paths.iter().flat_map(|p| &p.points).map(|p| p[2]).fold(0.0, f64::max);
-    out!("v-carve: {} path(s), deepest {deepest}", v.paths.len());
-    out!("flat bottom: {} ring(s) at radius {}", v.flat.loops.len(), v.flat_radius);
-    Ok(Computed::VCarve(v, opts))
+    out!("v-carve: {} path(s), deepest {}", v.paths.len(), v.deepest());
+    out!("flat bottom: {} ring(s) at radius {}", v.flat.loops.len(), v.flat_radius());
+    Ok(Computed::VCarve(v))
 }

@@ -2,7 +2,7 @@
 //! free. Mirrors `crate::plane` (`medial_axis`, `MedialAxis2d`); no geometry
 //! is computed here.
 
-use super::boundary::{self, check_out, deref, guard, index_error, read_options, write_out};
+use super::boundary::{self, check_out, deref, guard, index_error, read_options, run_with_progress, write_out};
 use super::last_error::FfiError;
 use super::shape2d::mx_shape2d;
 use super::status::mx_status;
@@ -181,37 +181,12 @@ pub(crate) fn axis_error(e: AxisError) -> FfiError {
     }
 }
 
-/// Options from C (NULL = defaults), checked.
+/// Options from C (NULL = defaults); `threads` is checked by
+/// `run_with_progress`.
 unsafe fn options(p: *const mx_axis_options) -> Result<mx_axis_options, FfiError> {
     // SAFETY: forwarded contract; `mx_axis_options` starts with `struct_size`.
-    let o = unsafe { read_options(p, default_options(), OPTIONS_V1_SIZE, "mx_axis_options")? }
-        .unwrap_or_else(default_options);
-    if o.threads > MX_AXIS_MAX_THREADS {
-        return Err(FfiError::new(
-            mx_status::MX_ERR_INVALID_ARGUMENT,
-            format!("mx_axis_options.threads = {}: use 0 (all cores) or at most {MX_AXIS_MAX_THREADS}", o.threads),
-        ));
-    }
-    Ok(o)
-}
-
-/// Reports `fraction` to the caller's callback; true when it asks to cancel.
-pub(crate) fn progress(callback: mx_progress_fn, user: *mut c_void, fraction: f64) -> bool {
-    // SAFETY: the caller supplied the callback and its `user` pointer for
-    // this call; the callback's contract is documented on `mx_progress_fn`.
-    callback.is_some_and(|f| unsafe { f(fraction, user) } != 0)
-}
-
-/// Runs `f` on the shared pool (`threads` 0) or on a pool of exactly
-/// `threads` threads.
-pub(crate) fn in_pool<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> Result<T, FfiError> {
-    if threads == 0 {
-        return Ok(f());
-    }
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| {
-        FfiError::new(mx_status::MX_ERR_INVALID_ARGUMENT, format!("cannot start {threads} threads: {e}"))
-    })?;
-    Ok(pool.install(f))
+    Ok(unsafe { read_options(p, default_options(), OPTIONS_V1_SIZE, "mx_axis_options")? }
+        .unwrap_or_else(default_options))
 }
 
 /// Computes the medial axis of `shape` (thesis Algorithm 2) and writes a new
@@ -235,16 +210,11 @@ pub unsafe extern "C" fn mx_axis_compute(
         check_out(out, "out")?;
         // SAFETY: caller contract.
         let (s, o) = unsafe { (deref(shape, "shape")?, self::options(options)?) };
-        if progress(o.progress, o.user, 0.0) {
-            return Err(FfiError::new(
-                mx_status::MX_ERR_CANCELLED,
-                "mx_axis_compute cancelled by the progress callback",
-            ));
-        }
         let opts = AxisOptions { seed: o.seed, ..AxisOptions::default() };
-        let axis = in_pool(o.threads, || medial_axis(&s.inner, &opts))?.map_err(axis_error)?;
+        let axis = run_with_progress("mx_axis_compute", "mx_axis_options", o.threads, o.progress, o.user, || {
+            medial_axis(&s.inner, &opts).map_err(axis_error)
+        })?;
         let h = Box::new(mx_axis { shape: s.inner.clone(), axis });
-        progress(o.progress, o.user, 1.0);
         let h = Box::into_raw(h);
         // SAFETY: checked non-NULL above.
         unsafe { write_out(out, h) };

@@ -1,8 +1,10 @@
 //! The panic boundary and pointer checks every export goes through, so each
 //! exported function reads: check arguments, call the core, convert.
 
+use super::axis::{mx_progress_fn, MX_AXIS_MAX_THREADS};
 use super::last_error::{set_last_error, FfiError};
 use super::status::mx_status;
+use std::ffi::c_void;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
 /// Runs `f`, turning its error or a panic into a status and the thread's
@@ -153,4 +155,59 @@ pub(crate) unsafe fn read_options<T: Copy>(
     // at least n bytes; both are plain old data.
     unsafe { std::ptr::copy_nonoverlapping(p.cast::<u8>(), std::ptr::addr_of_mut!(o).cast::<u8>(), n) };
     Ok(Some(o))
+}
+
+/// NULL for an empty array: C callers never see a dangling pointer.
+pub(crate) fn ptr_or_null<T>(v: &[T]) -> *const T {
+    if v.is_empty() {
+        std::ptr::null()
+    } else {
+        v.as_ptr()
+    }
+}
+
+/// Reports `fraction` to the caller's callback; true when it asks to cancel.
+fn progress(callback: mx_progress_fn, user: *mut c_void, fraction: f64) -> bool {
+    // SAFETY: the caller supplied the callback and its `user` pointer for
+    // this call; the callback's contract is documented on `mx_progress_fn`.
+    callback.is_some_and(|f| unsafe { f(fraction, user) } != 0)
+}
+
+/// Runs `f` on the shared pool (`threads` 0) or on a pool of exactly
+/// `threads` threads.
+pub(crate) fn in_pool<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> Result<T, FfiError> {
+    if threads == 0 {
+        return Ok(f());
+    }
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().map_err(|e| {
+        FfiError::new(mx_status::MX_ERR_INVALID_ARGUMENT, format!("cannot start {threads} threads: {e}"))
+    })?;
+    Ok(pool.install(f))
+}
+
+/// The frame of every long-running export (`export`, whose options struct
+/// is `options`): checks `threads` (0 or at most `MX_AXIS_MAX_THREADS`),
+/// reports 0 to the progress callback (a nonzero answer cancels with
+/// `MX_ERR_CANCELLED`), runs `f` on `threads` threads and reports 1 when it
+/// succeeded.
+pub(crate) fn run_with_progress<T: Send>(
+    export: &str,
+    options: &str,
+    threads: usize,
+    callback: mx_progress_fn,
+    user: *mut c_void,
+    f: impl FnOnce() -> Result<T, FfiError> + Send,
+) -> Result<T, FfiError> {
+    if threads > MX_AXIS_MAX_THREADS {
+        return Err(FfiError::new(
+            mx_status::MX_ERR_INVALID_ARGUMENT,
+            format!("{options}.threads = {threads}: use 0 (all cores) or at most {MX_AXIS_MAX_THREADS}"),
+        ));
+    }
+    if progress(callback, user, 0.0) {
+        return Err(FfiError::new(mx_status::MX_ERR_CANCELLED, format!("{export} cancelled by the progress callback")));
+    }
+    let v = in_pool(threads, f)??;
+    progress(callback, user, 1.0);
+    Ok(v)
 }

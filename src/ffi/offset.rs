@@ -1,4 +1,5 @@
-//! C functions for trimmed offsets: prepare a shape (`mx_offsets`), take
+//! C functions for trimmed offsets: prepare a shape or reuse its axis
+//! (`mx_offsets`), take
 //! the offset at one or many distances (`mx_offset_layer`), read its loops
 //! and regions, free. Mirrors `crate::plane::offset`; no geometry here.
 //!
@@ -8,8 +9,10 @@
 //! owns them is freed: a caller can feed a layer back as a shape without
 //! copying by hand.
 
-use super::axis::{axis_error, in_pool, mx_progress_fn, progress, MX_AXIS_MAX_THREADS};
-use super::boundary::{self, check_out, deref, guard, index_error, read_options, slice, write_out};
+use super::axis::{axis_error, mx_axis, mx_progress_fn};
+use super::boundary::{
+    self, check_out, deref, guard, in_pool, index_error, ptr_or_null, read_options, run_with_progress, slice, write_out,
+};
 use super::last_error::FfiError;
 use super::shape2d::mx_shape2d;
 use super::status::mx_status;
@@ -19,8 +22,9 @@ use std::ffi::c_void;
 
 /// A shape prepared for offsets at any distance: its medial axis and, for
 /// outer offsets, the axes of its complement. Opaque; create with
-/// `mx_offsets_compute`, release with `mx_offsets_free`. Immutable: a
-/// `const mx_offsets*` may be used from several threads at once.
+/// `mx_offsets_compute` or `mx_offsets_from_axis`, release with
+/// `mx_offsets_free`. Immutable: a `const mx_offsets*` may be used from
+/// several threads at once.
 #[allow(non_camel_case_types)]
 pub struct mx_offsets {
     pub(crate) offsets: Offsets,
@@ -35,12 +39,12 @@ pub struct mx_offsets {
 /// from `mx_vcarve_flat`. Immutable.
 #[allow(non_camel_case_types)]
 pub struct mx_offset_layer {
-    layer: OffsetLayer,
+    pub(crate) layer: OffsetLayer,
     loops: FlatLoops,
 }
 
-/// Options for `mx_offsets_compute`. Initialise with
-/// `mx_offset_options_default` (which sets `struct_size`).
+/// Options for `mx_offsets_compute` and `mx_offsets_from_axis`.
+/// Initialise with `mx_offset_options_default` (which sets `struct_size`).
 #[repr(C)]
 #[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy)]
@@ -152,24 +156,13 @@ pub struct mx_offset_region {
 pub(crate) struct FlatLoops {
     xyb: Vec<f64>,
     lengths: Vec<usize>,
-    /// Where each loop starts in `xyb`.
-    starts: Vec<usize>,
-}
-
-/// NULL for an empty array: C callers never see a dangling pointer.
-pub(crate) fn ptr_or_null<T>(v: &[T]) -> *const T {
-    if v.is_empty() {
-        std::ptr::null()
-    } else {
-        v.as_ptr()
-    }
 }
 
 impl FlatLoops {
-    pub(crate) fn new<'a>(loops: impl IntoIterator<Item = &'a [Vertex]>) -> FlatLoops {
+    pub(crate) fn new(loops: impl IntoIterator<Item = impl AsRef<[Vertex]>>) -> FlatLoops {
         let mut out = FlatLoops::default();
         for l in loops {
-            out.starts.push(out.xyb.len());
+            let l = l.as_ref();
             out.lengths.push(l.len());
             out.xyb.extend(l.iter().flat_map(|v| [v.p.x, v.p.y, v.bulge]));
         }
@@ -187,13 +180,14 @@ impl FlatLoops {
 
     /// Loop `i`'s triples (NULL when it has no vertices).
     fn one(&self, i: usize) -> *const f64 {
-        ptr_or_null(&self.xyb[self.starts[i]..self.starts[i] + 3 * self.lengths[i]])
+        let start = 3 * self.lengths[..i].iter().sum::<usize>();
+        ptr_or_null(&self.xyb[start..start + 3 * self.lengths[i]])
     }
 }
 
 impl mx_offset_layer {
     pub(crate) fn new(layer: OffsetLayer) -> mx_offset_layer {
-        let loops = FlatLoops::new(layer.loops.iter().map(|l| l.vertices.as_slice()));
+        let loops = FlatLoops::new(&layer.loops);
         mx_offset_layer { layer, loops }
     }
 
@@ -236,11 +230,46 @@ pub unsafe extern "C" fn mx_offset_options_default(out: *mut mx_offset_options) 
     })
 }
 
+/// Options from C (NULL = defaults) with `outer_reach` checked, and the
+/// Rust options they stand for.
+unsafe fn options(p: *const mx_offset_options) -> Result<(mx_offset_options, OffsetOptions), FfiError> {
+    // SAFETY: forwarded contract; `mx_offset_options` starts with `struct_size`.
+    let o = unsafe { read_options(p, default_options(), OPTIONS_V1_SIZE, "mx_offset_options")? }
+        .unwrap_or_else(default_options);
+    if !(o.outer_reach.is_finite() && o.outer_reach >= 0.0) {
+        return Err(FfiError::new(
+            mx_status::MX_ERR_INVALID_ARGUMENT,
+            format!("mx_offset_options.outer_reach = {}: use a finite value >= 0", o.outer_reach),
+        ));
+    }
+    let opts =
+        OffsetOptions { axis: AxisOptions { seed: o.seed, ..AxisOptions::default() }, outer_reach: o.outer_reach };
+    Ok((o, opts))
+}
+
+/// Runs `prepare` as the export `export` with the options' threads and
+/// progress, and writes the new handle to `out`.
+unsafe fn compute(
+    export: &str,
+    o: &mx_offset_options,
+    out: *mut *mut mx_offsets,
+    prepare: impl FnOnce() -> Result<Offsets, OffsetError> + Send,
+) -> Result<(), FfiError> {
+    let offsets = run_with_progress(export, "mx_offset_options", o.threads, o.progress, o.user, || {
+        prepare().map_err(offset_error)
+    })?;
+    let h = Box::into_raw(Box::new(mx_offsets { offsets, threads: o.threads }));
+    // SAFETY: the caller checked `out` non-NULL.
+    unsafe { write_out(out, h) };
+    Ok(())
+}
+
 /// Prepares `shape` for offsets (thesis 2.4: its medial axis, and for
 /// `outer_reach` > 0 the axes of its complement) and writes a new handle
 /// to `*out`. `options` may be NULL. The handle does not borrow the shape.
-/// Fails with `MX_ERR_INVALID_ARGUMENT` for bad options (a negative or
-/// non-finite `outer_reach`, too many threads), `MX_ERR_NUMERICAL` or
+/// The convenience form of `mx_offsets_from_axis` for a caller without an
+/// axis. Fails with `MX_ERR_INVALID_ARGUMENT` for bad options (a negative
+/// or non-finite `outer_reach`, too many threads), `MX_ERR_NUMERICAL` or
 /// `MX_ERR_CANCELLED` as `mx_axis_compute`; `*out` is then untouched.
 ///
 /// # Safety
@@ -255,33 +284,37 @@ pub unsafe extern "C" fn mx_offsets_compute(
     guard(|| {
         check_out(out, "out")?;
         // SAFETY: caller contract.
-        let s = unsafe { deref(shape, "shape")? };
-        // SAFETY: `mx_offset_options` starts with `struct_size`.
-        let o = unsafe { read_options(options, default_options(), OPTIONS_V1_SIZE, "mx_offset_options")? }
-            .unwrap_or_else(default_options);
-        if o.threads > MX_AXIS_MAX_THREADS || !(o.outer_reach.is_finite() && o.outer_reach >= 0.0) {
-            return Err(FfiError::new(
-                mx_status::MX_ERR_INVALID_ARGUMENT,
-                format!(
-                    "mx_offset_options: threads = {} (at most {MX_AXIS_MAX_THREADS}), outer_reach = {} (finite, >= 0)",
-                    o.threads, o.outer_reach
-                ),
-            ));
+        let (s, (o, opts)) = unsafe { (deref(shape, "shape")?, self::options(options)?) };
+        // SAFETY: `out` checked non-NULL above.
+        unsafe { compute("mx_offsets_compute", &o, out, || Offsets::new(&s.inner, &opts)) }
+    })
+}
+
+/// Prepares offsets from an axis the caller already has (of `axis`'s own
+/// copy of the shape): only the complement's axes are computed, for
+/// `outer_reach` > 0 (with the options' seed, threads and progress). The
+/// handle does not borrow the axis. Fails as `mx_offsets_compute`; `*out`
+/// is then untouched.
+///
+/// # Safety
+/// `axis` NULL or a live handle; `options` NULL or valid; `out` NULL or
+/// writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_offsets_from_axis(
+    axis: *const mx_axis,
+    options: *const mx_offset_options,
+    out: *mut *mut mx_offsets,
+) -> mx_status {
+    guard(|| {
+        check_out(out, "out")?;
+        // SAFETY: caller contract.
+        let (a, (o, opts)) = unsafe { (deref(axis, "axis")?, self::options(options)?) };
+        // SAFETY: `out` checked non-NULL above.
+        unsafe {
+            compute("mx_offsets_from_axis", &o, out, || {
+                Offsets::from_axis(&a.shape, &a.axis)?.with_outer(&a.shape, &opts)
+            })
         }
-        if progress(o.progress, o.user, 0.0) {
-            return Err(FfiError::new(
-                mx_status::MX_ERR_CANCELLED,
-                "mx_offsets_compute cancelled by the progress callback",
-            ));
-        }
-        let opts =
-            OffsetOptions { axis: AxisOptions { seed: o.seed, ..AxisOptions::default() }, outer_reach: o.outer_reach };
-        let offsets = in_pool(o.threads, || Offsets::new(&s.inner, &opts))?.map_err(offset_error)?;
-        let h = Box::into_raw(Box::new(mx_offsets { offsets, threads: o.threads }));
-        progress(o.progress, o.user, 1.0);
-        // SAFETY: checked non-NULL above.
-        unsafe { write_out(out, h) };
-        Ok(())
     })
 }
 
@@ -293,7 +326,7 @@ pub unsafe extern "C" fn mx_offsets_compute(
 #[no_mangle]
 pub unsafe extern "C" fn mx_offsets_free(offsets: *mut mx_offsets) {
     if !offsets.is_null() {
-        // SAFETY: per the contract, it came from Box::into_raw in `mx_offsets_compute`.
+        // SAFETY: per the contract, it came from Box::into_raw in `mx_offsets_compute` or `mx_offsets_from_axis`.
         drop(unsafe { Box::from_raw(offsets) });
     }
 }

@@ -2,9 +2,9 @@
 //! prepared offsets, their tree and machining order, the area left uncut.
 //! Mirrors `crate::cam::pocket`; no geometry here.
 
-use super::boundary::{self, check_out, guard, index_error, read_options, write_out};
+use super::boundary::{self, check_out, guard, in_pool, index_error, ptr_or_null, read_options, write_out};
 use super::last_error::FfiError;
-use super::offset::{mx_bulge_loops, mx_offsets, offset_error, ptr_or_null, FlatLoops};
+use super::offset::{mx_bulge_loops, mx_offsets, offset_error, FlatLoops};
 use super::status::mx_status;
 use crate::cam::{pocket, CamError, Pocket, PocketOptions, PocketOrder, UncutKind};
 
@@ -174,9 +174,9 @@ pub unsafe extern "C" fn mx_pocket_compute(
             }
         };
         let opts = PocketOptions { tool_radius: c.tool_radius, stepover: c.stepover, order, max_levels: c.max_levels };
-        let p = super::axis::in_pool(o.threads, || pocket(&o.offsets, &opts))?.map_err(cam_error)?;
-        let rings = p.rings.iter().map(|r| FlatLoops::new(r.loops.iter().map(|l| l.vertices.as_slice()))).collect();
-        let uncut = p.uncut.iter().map(|u| FlatLoops::new(u.loops.iter().map(Vec::as_slice))).collect();
+        let p = in_pool(o.threads, || pocket(&o.offsets, &opts))?.map_err(cam_error)?;
+        let rings = p.rings.iter().map(|r| FlatLoops::new(&r.loops)).collect();
+        let uncut = p.uncut.iter().map(|u| FlatLoops::new(&u.loops)).collect();
         let h = Box::into_raw(Box::new(mx_pocket { pocket: p, rings, uncut }));
         // SAFETY: checked non-NULL above.
         unsafe { write_out(out, h) };

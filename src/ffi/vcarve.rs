@@ -2,24 +2,20 @@
 //! V-bit, and the flat-bottom rings where the depth is capped. Mirrors
 //! `crate::cam::vcarve`; no geometry here.
 
-use super::axis::{axis_error, in_pool, mx_progress_fn, progress, MX_AXIS_MAX_THREADS};
-use super::boundary::{self, check_out, deref, guard, index_error, read_options, write_out};
-use super::last_error::FfiError;
-use super::offset::{mx_offset_layer, ptr_or_null};
+use super::axis::mx_axis;
+use super::boundary::{self, check_out, deref, guard, index_error, ptr_or_null, read_options, write_out};
+use super::offset::mx_offset_layer;
 use super::pocket::cam_error;
-use super::shape2d::mx_shape2d;
 use super::status::mx_status;
-use crate::cam::{vcarve, VCarveOptions};
-use crate::plane::{medial_axis, AxisOptions};
-use std::ffi::c_void;
+use crate::cam::{vcarve, VCarveOptions, VCarvePath};
 
 /// V-carve paths and the flat bottom. Opaque; create with
 /// `mx_vcarve_compute`, release with `mx_vcarve_free`. Immutable.
 #[allow(non_camel_case_types)]
 pub struct mx_vcarve {
-    /// Each path's `x, y, depth` triples.
-    paths: Vec<Vec<f64>>,
-    flat_radius: f64,
+    paths: Vec<VCarvePath>,
+    /// The flat bottom (at the flat radius), in the form `mx_vcarve_flat`
+    /// lends.
     flat: mx_offset_layer,
 }
 
@@ -31,10 +27,6 @@ pub struct mx_vcarve {
 pub struct mx_vcarve_options {
     /// `sizeof(mx_vcarve_options)` as the caller was compiled.
     pub struct_size: usize,
-    /// Seed of the divide step's random choices (as `mx_axis_options.seed`).
-    pub seed: u64,
-    /// Worker threads, as `mx_axis_options.threads`.
-    pub threads: usize,
     /// Included angle of the V-bit, degrees, in (0, 180); default 90.
     pub angle_deg: f64,
     /// Maximum depth, model units, > 0; default `INFINITY` (no cap).
@@ -42,23 +34,14 @@ pub struct mx_vcarve_options {
     /// Chordal tolerance of the paths along the axis's curves, model units;
     /// 0 (default) = 1000 × the shape's tolerance.
     pub tolerance: f64,
-    /// Optional progress callback, as `mx_axis_options.progress` (called
-    /// with 0 before and 1 after; nonzero at 0 cancels).
-    pub progress: mx_progress_fn,
-    /// Passed unchanged to `progress`.
-    pub user: *mut c_void,
 }
 
 fn default_options() -> mx_vcarve_options {
     mx_vcarve_options {
         struct_size: std::mem::size_of::<mx_vcarve_options>(),
-        seed: AxisOptions::default().seed,
-        threads: 0,
         angle_deg: 90.0,
         max_depth: f64::INFINITY,
         tolerance: 0.0,
-        progress: None,
-        user: std::ptr::null_mut(),
     }
 }
 
@@ -104,58 +87,33 @@ pub unsafe extern "C" fn mx_vcarve_options_default(out: *mut mx_vcarve_options) 
     })
 }
 
-/// Computes the medial axis of `shape` and the V-carve paths along it for
-/// the options' V-bit, and writes a new handle to `*out`. `options` may be
-/// NULL (a 90° bit, no depth cap). Fails with `MX_ERR_INVALID_ARGUMENT`
-/// (the option named in the message) for an angle outside (0, 180), a
-/// maximum depth ≤ 0 or NaN, a negative tolerance or too many threads,
-/// `MX_ERR_NUMERICAL` or `MX_ERR_CANCELLED` as `mx_axis_compute`; `*out`
-/// is then untouched.
+/// Computes the V-carve paths along the medial axis `axis` (of the
+/// axis's own copy of the shape) for the options' V-bit, and writes a new
+/// handle to `*out`. `options` may be NULL (a 90° bit, no depth cap).
+/// Fails with `MX_ERR_INVALID_ARGUMENT` (the option named in the message)
+/// for an angle outside (0, 180), a maximum depth ≤ 0 or NaN or a negative
+/// tolerance, `MX_ERR_NUMERICAL` when the flat bottom's offset breaks
+/// down; `*out` is then untouched. The handle does not borrow the axis.
 ///
 /// # Safety
-/// `shape` NULL or a live handle; `options` NULL or valid; `out` NULL or
+/// `axis` NULL or a live handle; `options` NULL or valid; `out` NULL or
 /// writable.
 #[no_mangle]
 pub unsafe extern "C" fn mx_vcarve_compute(
-    shape: *const mx_shape2d,
+    axis: *const mx_axis,
     options: *const mx_vcarve_options,
     out: *mut *mut mx_vcarve,
 ) -> mx_status {
     guard(|| {
         check_out(out, "out")?;
         // SAFETY: caller contract.
-        let s = unsafe { deref(shape, "shape")? };
+        let a = unsafe { deref(axis, "axis")? };
         // SAFETY: `mx_vcarve_options` starts with `struct_size`.
         let o = unsafe { read_options(options, default_options(), OPTIONS_V1_SIZE, "mx_vcarve_options")? }
             .unwrap_or_else(default_options);
-        if o.threads > MX_AXIS_MAX_THREADS {
-            return Err(FfiError::new(
-                mx_status::MX_ERR_INVALID_ARGUMENT,
-                format!(
-                    "mx_vcarve_options.threads = {}: use 0 (all cores) or at most {MX_AXIS_MAX_THREADS}",
-                    o.threads
-                ),
-            ));
-        }
-        if progress(o.progress, o.user, 0.0) {
-            return Err(FfiError::new(
-                mx_status::MX_ERR_CANCELLED,
-                "mx_vcarve_compute cancelled by the progress callback",
-            ));
-        }
         let opts = VCarveOptions { angle_deg: o.angle_deg, max_depth: o.max_depth, tolerance: o.tolerance };
-        let axis_opts = AxisOptions { seed: o.seed, ..AxisOptions::default() };
-        let v = in_pool(o.threads, || {
-            let axis = medial_axis(&s.inner, &axis_opts).map_err(axis_error)?;
-            vcarve(&s.inner, &axis, &opts).map_err(cam_error)
-        })??;
-        let paths = v.paths.iter().map(|p| p.points.iter().flatten().copied().collect()).collect();
-        let h = Box::into_raw(Box::new(mx_vcarve {
-            paths,
-            flat_radius: v.flat_radius,
-            flat: mx_offset_layer::new(v.flat),
-        }));
-        progress(o.progress, o.user, 1.0);
+        let v = vcarve(&a.shape, &a.axis, &opts).map_err(cam_error)?;
+        let h = Box::into_raw(Box::new(mx_vcarve { paths: v.paths, flat: mx_offset_layer::new(v.flat) }));
         // SAFETY: checked non-NULL above.
         unsafe { write_out(out, h) };
         Ok(())
@@ -185,7 +143,7 @@ pub unsafe extern "C" fn mx_vcarve_get_info(vcarve: *const mx_vcarve, out: *mut 
         boundary::query(vcarve, "vcarve", out, |v| {
             Ok(mx_vcarve_info {
                 path_count: v.paths.len(),
-                flat_radius: v.flat_radius,
+                flat_radius: v.flat.layer.distance,
                 flat_loop_count: v.flat.loop_count(),
             })
         })
@@ -207,7 +165,7 @@ pub unsafe extern "C" fn mx_vcarve_get_path(
     unsafe {
         boundary::query(vcarve, "vcarve", out, |v| {
             let p = v.paths.get(index).ok_or_else(|| index_error("path", index, v.paths.len()))?;
-            Ok(mx_vcarve_path { xyd: ptr_or_null(p), point_count: p.len() / 3 })
+            Ok(mx_vcarve_path { xyd: ptr_or_null(&p.points).cast(), point_count: p.points.len() })
         })
     }
 }

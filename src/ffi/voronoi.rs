@@ -3,8 +3,8 @@
 //! nodes and edges is read through the diagram's `mx_axis`
 //! (`mx_voronoi_axis`), whose node and edge indices these functions use.
 
-use super::axis::{axis_error, in_pool, mx_axis, mx_progress_fn, progress, MX_AXIS_MAX_THREADS};
-use super::boundary::{check_out, deref, guard, index_error, read_options, slice, write_out};
+use super::axis::{axis_error, mx_axis, mx_progress_fn};
+use super::boundary::{check_out, deref, guard, index_error, read_options, run_with_progress, slice, write_out};
 use super::last_error::FfiError;
 use super::shape2d::split_bulges;
 use super::status::mx_status;
@@ -301,32 +301,25 @@ pub unsafe extern "C" fn mx_voronoi_compute(
         // SAFETY: `mx_voronoi_options` starts with `struct_size`.
         let o = unsafe { read_options(options, default_options(), OPTIONS_V1_SIZE, "mx_voronoi_options")? }
             .unwrap_or_else(default_options);
-        if o.threads > MX_AXIS_MAX_THREADS || !(o.tolerance.is_finite() && o.tolerance >= 0.0) {
+        if !(o.tolerance.is_finite() && o.tolerance >= 0.0) {
             return Err(FfiError::new(
                 mx_status::MX_ERR_INVALID_ARGUMENT,
-                format!(
-                    "mx_voronoi_options: threads = {} (at most {MX_AXIS_MAX_THREADS}), tolerance = {} (finite, >= 0)",
-                    o.threads, o.tolerance
-                ),
+                format!("mx_voronoi_options.tolerance = {}: use a finite value >= 0", o.tolerance),
             ));
         }
         // SAFETY: caller contract.
         let (sites, boundary) = unsafe { read_sites(s)? };
-        if progress(o.progress, o.user, 0.0) {
-            return Err(FfiError::new(
-                mx_status::MX_ERR_CANCELLED,
-                "mx_voronoi_compute cancelled by the progress callback",
-            ));
-        }
         let opts = VoronoiOptions {
             axis: AxisOptions { seed: o.seed, ..AxisOptions::default() },
             shape: ShapeOptions { tolerance: (o.tolerance > 0.0).then_some(o.tolerance), ..ShapeOptions::default() },
             boundary,
         };
-        let mut diagram = in_pool(o.threads, || voronoi(&sites, &opts))?.map_err(voronoi_error)?;
+        let mut diagram =
+            run_with_progress("mx_voronoi_compute", "mx_voronoi_options", o.threads, o.progress, o.user, || {
+                voronoi(&sites, &opts).map_err(voronoi_error)
+            })?;
         let axis = mx_axis { shape: diagram.shape().clone(), axis: std::mem::take(&mut diagram.axis) };
         let h = Box::into_raw(Box::new(mx_voronoi { axis, diagram }));
-        progress(o.progress, o.user, 1.0);
         // SAFETY: checked non-NULL above.
         unsafe { write_out(out, h) };
         Ok(())

@@ -9,6 +9,7 @@
 use super::{Format, ParseError, RawPolyline, RawVertex};
 use serde::de::{Deserializer, Error as _, SeqAccess, Visitor};
 use serde::Deserialize;
+use serde_json::Value;
 use std::fmt;
 
 #[derive(Deserialize)]
@@ -151,6 +152,24 @@ pub fn write_loops(loops: &[Vec<RawVertex>]) -> String {
     }
     s.push_str("]}\n");
     s
+}
+
+/// Closed bulge loops as the JSON value `[[[x, y, bulge], ..], ..]`, the
+/// loops of `write_loops` (numbers in shortest round-trip form once
+/// written).
+pub fn loops_json<V: Copy + Into<RawVertex>>(loops: impl IntoIterator<Item = impl AsRef<[V]>>) -> Value {
+    let triple = |v: V| {
+        let v: RawVertex = v.into();
+        [v.x, v.y, v.bulge]
+    };
+    loops.into_iter().map(|l| l.as_ref().iter().map(|&v| triple(v)).collect::<Vec<_>>()).collect()
+}
+
+/// A JSON document on one line, ending with a newline.
+pub fn to_line(doc: &Value) -> String {
+    let mut out = serde_json::to_string(doc).unwrap_or_default();
+    out.push('\n');
+    out
 }
 
 #[cfg(test)]

@@ -75,8 +75,6 @@ impl MedialAxis2d {
                 })
             })
             .collect();
-        let mut out = serde_json::to_string(&json!({"nodes": nodes, "edges": edges})).unwrap_or_default();
-        out.push('\n');
-        out
+        crate::io::json::to_line(&json!({"nodes": nodes, "edges": edges}))
     }
 }

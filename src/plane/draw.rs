@@ -3,7 +3,7 @@
 
 use super::axis::{MedialAxis2d, NodeKind};
 use crate::io::svg_writer::{PathCmd, Style, SvgDocument};
-use crate::shape::{draw_shape, Shape2d};
+use crate::shape::{draw_joints, shape_document, Shape2d};
 
 /// What to draw besides the shape and the axis.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -32,9 +32,8 @@ fn ramp(s: f64) -> String {
 impl MedialAxis2d {
     /// An SVG picture of `shape` with this axis.
     pub fn to_svg(&self, shape: &Shape2d, pic: &AxisPicture) -> String {
-        let bb = shape.bbox();
-        let mut doc = SvgDocument::new([bb.min.x, bb.min.y, bb.max.x, bb.max.y], pic.width_px);
-        draw_shape(&mut doc, shape);
+        let mut doc = shape_document(shape, 0.0, pic.width_px);
+        draw_joints(&mut doc, shape);
         self.draw_axis(&mut doc, shape, pic);
         doc.caption(0, &self.picture_caption());
         doc.finish()

@@ -142,6 +142,14 @@ impl OffsetLoop {
     }
 }
 
+/// Its vertices: the writers take offset loops and plain vertex loops
+/// alike.
+impl AsRef<[Vertex]> for OffsetLoop {
+    fn as_ref(&self) -> &[Vertex] {
+        &self.vertices
+    }
+}
+
 /// A connected part of the offset region: one outer loop and its holes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct OffsetRegion {
@@ -184,6 +192,12 @@ impl OffsetLayer {
     /// Whether nothing is left at this distance.
     pub fn is_empty(&self) -> bool {
         self.loops.is_empty()
+    }
+
+    /// The loops of region `r`: its outer loop first, then its holes.
+    pub fn region_loops(&self, r: usize) -> Vec<OffsetLoop> {
+        let region = &self.regions[r];
+        std::iter::once(region.outer).chain(region.holes.iter().copied()).map(|i| self.loops[i].clone()).collect()
     }
 
     /// The region of this layer that encloses region `r` of `deeper`, an

@@ -5,8 +5,7 @@
 use super::axis::MedialAxis2d;
 use super::offset::OffsetLayer;
 use crate::io::svg_writer::{PathCmd, Style, SvgDocument};
-use crate::kernel::BBox;
-use crate::shape::{push_loop_path, shape_path, Shape2d, Vertex};
+use crate::shape::{push_loop_path, shape_document, Shape2d, Vertex};
 
 /// Colours of successive offset layers: dark enough on the shape's light
 /// fill, and far apart so neighbouring layers are told apart.
@@ -15,16 +14,6 @@ const LAYER_COLOURS: [&str; 6] = ["#c0392b", "#16a085", "#8e44ad", "#d35400", "#
 /// The colour of layer `k` in pictures with several layers.
 pub fn layer_colour(k: usize) -> &'static str {
     LAYER_COLOURS[k % LAYER_COLOURS.len()]
-}
-
-/// A document showing `shape` grown by `margin` (model units) on every
-/// side, so outer offsets fit, with the shape filled and outlined.
-pub fn shape_document(shape: &Shape2d, margin: f64, width_px: f64) -> SvgDocument {
-    let bb = shape.bbox();
-    let m = margin.max(0.0);
-    let mut doc = SvgDocument::new([bb.min.x - m, bb.min.y - m, bb.max.x + m, bb.max.y + m], width_px);
-    doc.path(&shape_path(shape), &Style::filled("#1f3b73", "#dfe8f6", 1.2, 1.0));
-    doc
 }
 
 /// Draws the medial axis as thin grey polylines sampled to chordal
@@ -40,48 +29,31 @@ pub fn draw_axis_thin(doc: &mut SvgDocument, shape: &Shape2d, axis: &MedialAxis2
 }
 
 /// Draws closed bulge loops as one path (even-odd fill, so holes show).
-pub fn draw_loops<'a>(doc: &mut SvgDocument, loops: impl IntoIterator<Item = &'a [Vertex]>, style: &Style) {
+pub fn draw_loops(doc: &mut SvgDocument, loops: impl IntoIterator<Item = impl AsRef<[Vertex]>>, style: &Style) {
     let mut cmds = Vec::new();
     for l in loops {
-        push_loop_path(&mut cmds, l);
+        push_loop_path(&mut cmds, l.as_ref());
     }
     if !cmds.is_empty() {
         doc.path(&cmds, style);
     }
 }
 
-/// How far the loops of `layers` reach beyond the shape's box (outer
-/// offsets): the margin to give [`shape_document`].
-fn margin(shape: &Shape2d, layers: &[OffsetLayer]) -> f64 {
-    let bb = shape.bbox();
-    let reach = layers.iter().map(|l| -l.distance).fold(0.0, f64::max);
-    let all = layers
-        .iter()
-        .flat_map(|l| &l.loops)
-        .fold(BBox::EMPTY, |b, l| b.union(&crate::shape::Loop::new(l.vertices.clone()).bbox()));
-    if all.is_empty() {
-        return reach;
-    }
-    let out = [bb.min.x - all.min.x, bb.min.y - all.min.y, all.max.x - bb.max.x, all.max.y - bb.max.y];
-    out.into_iter().fold(reach, f64::max)
+/// How far the loops of `layers` reach beyond the shape's box: an outer
+/// offset at distance −d lies within d of the shape, so the margin to give
+/// [`shape_document`] is the largest outer distance (0 for inner ones).
+fn margin(layers: &[OffsetLayer]) -> f64 {
+    layers.iter().map(|l| -l.distance).fold(0.0, f64::max)
 }
 
-/// An SVG picture `width_px` wide of `shape`, its axis (when given; thin
-/// grey, sampled to chordal tolerance `tol`, model units) and the loops of
-/// every layer, one colour per layer, with a caption.
-pub fn offsets_to_svg(
-    shape: &Shape2d,
-    axis: Option<&MedialAxis2d>,
-    layers: &[OffsetLayer],
-    width_px: f64,
-    tol: f64,
-) -> String {
-    let mut doc = shape_document(shape, margin(shape, layers), width_px);
-    if let Some(axis) = axis {
-        draw_axis_thin(&mut doc, shape, axis, tol);
-    }
+/// An SVG picture `width_px` wide of `shape`, its axis (thin grey, sampled
+/// to chordal tolerance `tol`, model units) and the loops of every layer,
+/// one colour per layer, with a caption.
+pub fn offsets_to_svg(shape: &Shape2d, axis: &MedialAxis2d, layers: &[OffsetLayer], width_px: f64, tol: f64) -> String {
+    let mut doc = shape_document(shape, margin(layers), width_px);
+    draw_axis_thin(&mut doc, shape, axis, tol);
     for (k, layer) in layers.iter().enumerate() {
-        draw_loops(&mut doc, layer.loops.iter().map(|l| l.vertices.as_slice()), &Style::stroke(layer_colour(k), 1.4));
+        draw_loops(&mut doc, &layer.loops, &Style::stroke(layer_colour(k), 1.4));
     }
     let loops: usize = layers.iter().map(|l| l.loops.len()).sum();
     doc.caption(0, &format!("offsets: {} distance(s), {loops} loop(s); medial axis in grey", layers.len()));

@@ -7,9 +7,9 @@ use crate::io::RawVertex;
 use crate::shape::Vertex;
 
 /// Adds closed bulge loops to `w` on `layer`, at height `z` (model units).
-pub fn add_loops<'a>(w: &mut DxfWriter, layer: &str, loops: impl IntoIterator<Item = &'a [Vertex]>, z: f64) {
+pub fn add_loops(w: &mut DxfWriter, layer: &str, loops: impl IntoIterator<Item = impl AsRef<[Vertex]>>, z: f64) {
     for l in loops {
-        let raw: Vec<RawVertex> = l.iter().map(|&v| RawVertex::from(v)).collect();
+        let raw: Vec<RawVertex> = l.as_ref().iter().map(|&v| RawVertex::from(v)).collect();
         w.lwpolyline_at(layer, &raw, true, z);
     }
 }
@@ -19,7 +19,7 @@ pub fn add_loops<'a>(w: &mut DxfWriter, layer: &str, loops: impl IntoIterator<It
 pub fn offsets_to_dxf(layers: &[OffsetLayer]) -> String {
     let mut w = DxfWriter::new();
     for (k, layer) in layers.iter().enumerate() {
-        add_loops(&mut w, &format!("OFFSET_{k}"), layer.loops.iter().map(|l| l.vertices.as_slice()), 0.0);
+        add_loops(&mut w, &format!("OFFSET_{k}"), &layer.loops, 0.0);
     }
     w.finish()
 }

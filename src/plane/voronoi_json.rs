@@ -130,8 +130,6 @@ impl VoronoiDiagram {
         let frame = if self.auto_frame { "auto" } else { "given" };
         let doc =
             json!({"frame": frame, "complete": self.complete, "nodes": nodes, "edges": edges, "regions": regions});
-        let mut out = serde_json::to_string(&doc).unwrap_or_default();
-        out.push('\n');
-        out
+        crate::io::json::to_line(&doc)
     }
 }

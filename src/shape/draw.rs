@@ -32,10 +32,20 @@ pub fn push_loop_path(cmds: &mut Vec<PathCmd>, vertices: &[Vertex]) {
     cmds.push(PathCmd::Close);
 }
 
-/// Adds the shape (filled, outlined, corners marked: convex red, reflex blue)
-/// to a document.
-pub fn draw_shape(doc: &mut SvgDocument, shape: &Shape2d) {
+/// A document showing `shape` grown by `margin` (model units) on every
+/// side (room for outer offsets), with the shape filled and outlined: the
+/// ground of every picture of a shape and what was computed from it.
+pub fn shape_document(shape: &Shape2d, margin: f64, width_px: f64) -> SvgDocument {
+    let bb = shape.bbox();
+    let m = margin.max(0.0);
+    let mut doc = SvgDocument::new([bb.min.x - m, bb.min.y - m, bb.max.x + m, bb.max.y + m], width_px);
     doc.path(&shape_path(shape), &Style::filled("#1f3b73", "#dfe8f6", 1.5, 1.0));
+    doc
+}
+
+/// Marks the shape's corners in a document (convex red, reflex blue,
+/// smooth grey); nothing for shapes of more than 20,000 elements.
+pub fn draw_joints(doc: &mut SvgDocument, shape: &Shape2d) {
     if shape.element_count() <= 20_000 {
         for (li, l) in shape.loops().iter().enumerate() {
             for (i, v) in l.vertices().iter().enumerate() {
@@ -53,9 +63,8 @@ pub fn draw_shape(doc: &mut SvgDocument, shape: &Shape2d) {
 impl Shape2d {
     /// A picture of the shape, `width_px` wide, with a caption.
     pub fn to_svg(&self, width_px: f64) -> String {
-        let bb = self.bbox();
-        let mut doc = SvgDocument::new([bb.min.x, bb.min.y, bb.max.x, bb.max.y], width_px);
-        draw_shape(&mut doc, self);
+        let mut doc = shape_document(self, 0.0, width_px);
+        draw_joints(&mut doc, self);
         let (segs, arcs) = self.element_counts();
         let [smooth, convex, reflex] = self.joint_counts();
         doc.caption(

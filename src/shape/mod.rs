@@ -28,7 +28,7 @@ pub use box_tree::BoxTree;
 pub use bulge_loop::{winding_contribution, Loop, LoopKind, Vertex};
 pub use chain::{chain_loops, LooseElement};
 pub use chain_tree::ChainTree;
-pub use draw::{draw_shape, push_loop_path, shape_path};
+pub use draw::{draw_joints, push_loop_path, shape_document, shape_path};
 pub use element::{Arc, Element, Segment};
 pub use error::{Degeneracy, ElementRef, ShapeError};
 pub use import::sniff;
