@@ -156,6 +156,10 @@ pub struct mx_offset_region {
 pub(crate) struct FlatLoops {
     xyb: Vec<f64>,
     lengths: Vec<usize>,
+    /// Where each loop starts in `xyb` (triples): kept, though the prefix
+    /// sums of `lengths`, so that fetching loop i is O(1) and fetching every
+    /// loop is linear.
+    starts: Vec<usize>,
 }
 
 impl FlatLoops {
@@ -163,6 +167,7 @@ impl FlatLoops {
         let mut out = FlatLoops::default();
         for l in loops {
             let l = l.as_ref();
+            out.starts.push(out.xyb.len());
             out.lengths.push(l.len());
             out.xyb.extend(l.iter().flat_map(|v| [v.p.x, v.p.y, v.bulge]));
         }
@@ -180,7 +185,7 @@ impl FlatLoops {
 
     /// Loop `i`'s triples (NULL when it has no vertices).
     fn one(&self, i: usize) -> *const f64 {
-        let start = 3 * self.lengths[..i].iter().sum::<usize>();
+        let start = self.starts[i];
         ptr_or_null(&self.xyb[start..start + 3 * self.lengths[i]])
     }
 }
