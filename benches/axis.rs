@@ -5,7 +5,7 @@
 //! `cargo bench --bench axis`; figures go to docs/PERFORMANCE.md.
 //! `MEDAX_BENCH_MAX_N` caps the sizes (default 10^6).
 
-use medax::plane::divide::decompose_with;
+use medax::plane::internals::decompose_with;
 use medax::plane::{medial_axis, AxisOptions};
 use medax::shape::{samples, Shape2d, ShapeOptions, Vertex};
 use std::time::Instant;

@@ -3,7 +3,7 @@
 //! then the divide step (all cuts down to leaves) per element.
 //! `cargo bench --bench maxdisk`. Figures go to docs/PERFORMANCE.md.
 
-use medax::plane::divide::decompose;
+use medax::plane::internals::decompose;
 use medax::plane::DiskFinder;
 use medax::shape::{samples, ElementRef, Shape2d, ShapeOptions, Vertex};
 use std::time::Instant;

@@ -6,12 +6,12 @@
 //! `-- plate K [SEED]` or `-- SHAPE.json 0 [SEED]` (a shape file, or a Voronoi sites file: the
 //! shape its diagram is computed on first, frame or boundary with the sites as holes); `MEDAX_NEAR=x,y` lists the dividing disks near a point;
 //! `MEDAX_DUMP=DIR` writes each failing leaf for `examples/leaf_replay`.
-use medax::plane::augment::augment;
-use medax::plane::base_case;
-use medax::plane::divide::decompose_in;
-use medax::plane::maxdisk::DiskFinder;
-use medax::plane::subshape::Piece;
+use medax::plane::internals::augment;
+use medax::plane::internals::base_case;
+use medax::plane::internals::decompose_in;
 use medax::plane::AxisOptions;
+use medax::plane::DiskFinder;
+use medax::plane::Piece;
 use medax::shape::{samples, Shape2d, ShapeOptions};
 
 fn main() {
@@ -20,7 +20,7 @@ fn main() {
     let shape = match args.get(1).map(String::as_str) {
         Some(path) if path.ends_with(".json") => {
             let text = std::fs::read_to_string(path).expect("readable shape file");
-            medax::plane::voronoi_json::shape_or_sites(&text).expect("a valid shape or sites file")
+            medax::plane::shape_or_sites(&text).expect("a valid shape or sites file")
         }
         kind => {
             let loops = match kind {
@@ -67,9 +67,9 @@ fn main() {
         if let (Err(_), true) = (&solved, std::env::var("MEDAX_REFINE").is_ok()) {
             // Divide the failed leaf again as `solve_leaves` does and check
             // the corners of the new leaves.
-            let mut more = medax::plane::divide::Decomposition { cuts: d.cuts.clone(), ..Default::default() };
-            let size = medax::plane::divide::leaf_size(&shape, s);
-            medax::plane::divide::divide_into(
+            let mut more = medax::plane::internals::Decomposition { cuts: d.cuts.clone(), ..Default::default() };
+            let size = medax::plane::internals::leaf_size(&shape, s);
+            medax::plane::internals::divide_into(
                 &finder,
                 &mut more,
                 vec![s.clone()],
@@ -92,7 +92,7 @@ fn main() {
         if let Err(e) = solved {
             println!("leaf {i} ({} pieces): {e:?}", s.pieces.len());
             if let Ok(dir) = std::env::var("MEDAX_DUMP") {
-                let text = medax::plane::leaf_text::write_leaf(s, &d.cuts);
+                let text = medax::plane::internals::write_leaf(s, &d.cuts);
                 std::fs::write(format!("{dir}/leaf_{i}.txt"), text).expect("writable dump directory");
             }
             if let (true, Some(Piece::Chain { from, to }), Some(Piece::Aux { disk })) =
@@ -114,10 +114,10 @@ fn main() {
 
 /// Prints the elements of a chain with their circles, against a disk.
 /// Convex vertices strictly inside the chains of a subshape.
-fn convex_inside(shape: &Shape2d, s: &medax::plane::subshape::Subshape) -> usize {
+fn convex_inside(shape: &Shape2d, s: &medax::plane::Subshape) -> usize {
     let mut convex = 0;
     for (from, to) in s.chains() {
-        let parts: Vec<_> = medax::plane::subshape::ChainParts::new(shape, from, to).iter().collect();
+        let parts: Vec<_> = medax::plane::internals::ChainParts::new(shape, from, to).iter().collect();
         convex += parts
             .windows(2)
             .filter(|w| shape.joint(from.loop_index, w[1].0) == medax::shape::JointKind::Convex)
@@ -132,7 +132,7 @@ fn glued_corners(shape: &Shape2d, finder: &DiskFinder, seed: u64) {
     let aug = augment(finder).expect("augmenting disks");
     let mut d = decompose_in(finder, &aug, seed, AxisOptions::default().leaf_parts);
     let subshapes: Vec<_> = d.leaves.iter().chain(d.stuck.iter()).cloned().collect();
-    let locals = match medax::plane::conquer::solve_leaves(finder, &mut d, seed) {
+    let locals = match medax::plane::internals::solve_leaves(finder, &mut d, seed) {
         Ok(l) => l,
         Err(e) => return println!("solve_leaves: {e}"),
     };
@@ -143,7 +143,7 @@ fn glued_corners(shape: &Shape2d, finder: &DiskFinder, seed: u64) {
             }
         }
     }
-    let axis = match medax::plane::conquer::glue(finder, &d.cuts, &locals) {
+    let axis = match medax::plane::internals::glue(finder, &d.cuts, &locals) {
         Ok(a) => a,
         Err(e) => return println!("glue: {e}"),
     };
@@ -182,7 +182,7 @@ fn glued_corners(shape: &Shape2d, finder: &DiskFinder, seed: u64) {
                         println!("   from leaf {k} ({} nodes)", local.nodes.len());
                         if let Ok(dir) = std::env::var("MEDAX_DUMP") {
                             if let Some(sub) = subshapes.get(k) {
-                                let text = medax::plane::leaf_text::write_leaf(sub, &d.cuts);
+                                let text = medax::plane::internals::write_leaf(sub, &d.cuts);
                                 std::fs::write(format!("{dir}/glued_{k}.txt"), text).expect("writable dump directory");
                             }
                         }

@@ -3,8 +3,8 @@
 //! Rebuilds the sample shape (or the shape of a shape or Voronoi sites file), reads the leaf's pieces and dividing disks
 //! (exact bits, `plane::leaf_text`) and prints the base case's result, so a
 //! breakdown found in a large decomposition can be traced in seconds.
-use medax::plane::maxdisk::DiskFinder;
-use medax::plane::{base_case, leaf_text};
+use medax::plane::internals::{base_case, leaf_text};
+use medax::plane::DiskFinder;
 use medax::shape::{samples, Shape2d, ShapeOptions};
 
 fn main() {
@@ -17,7 +17,7 @@ fn main() {
     let seed: u64 = args[3].parse().expect("star seed");
     let shape = if args[1].ends_with(".json") {
         let text = std::fs::read_to_string(&args[1]).expect("readable shape file");
-        medax::plane::voronoi_json::shape_or_sites(&text).expect("a valid shape or sites file")
+        medax::plane::shape_or_sites(&text).expect("a valid shape or sites file")
     } else {
         let loops = match args[1].as_str() {
             "flower" => samples::flower_arcs(n),

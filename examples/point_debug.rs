@@ -1,8 +1,8 @@
 //! Design-study probe: a jittered grid of point sites (and optionally
 //! segment sites) in a square; decomposition counts and axis time.
 use medax::kernel::Point;
-use medax::plane::augment::augment;
-use medax::plane::divide::decompose_in;
+use medax::plane::internals::augment;
+use medax::plane::internals::decompose_in;
 use medax::plane::{medial_axis, AxisOptions, DiskFinder};
 use medax::shape::{Shape2d, ShapeOptions, Vertex};
 

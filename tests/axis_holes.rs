@@ -9,7 +9,7 @@ mod common;
 use common::oracle::check;
 use common::{circle, poly, rect, same_axis_moved, shape, v};
 use medax::kernel::Point;
-use medax::plane::augment::augment;
+use medax::plane::internals::augment;
 use medax::plane::{medial_axis, AxisOptions, DiskFinder, MedialAxis2d, NodeKind};
 use medax::shape::{samples, Vertex};
 use rand::{Rng, SeedableRng};

@@ -6,8 +6,8 @@
 mod common;
 
 use common::boundary_distance;
-use medax::plane::maxdisk::DiskFinder;
-use medax::plane::{base_case, leaf_text};
+use medax::plane::internals::{base_case, leaf_text};
+use medax::plane::DiskFinder;
 use medax::shape::{samples, Shape2d, ShapeOptions};
 
 fn replay(shape: &Shape2d, finder: &DiskFinder, file: &str) -> base_case::LocalAxis {

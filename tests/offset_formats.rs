@@ -5,9 +5,9 @@
 use medax::cam::{pocket, vcarve, PocketOptions, VCarveOptions};
 use medax::io::dxf::read_dxf;
 use medax::io::RawVertex;
-use medax::plane::offset_draw::{layer_colour, offsets_to_svg};
-use medax::plane::offset_dxf::offsets_to_dxf;
-use medax::plane::offset_json::offsets_to_json;
+use medax::plane::offsets_to_dxf;
+use medax::plane::offsets_to_json;
+use medax::plane::{layer_colour, offsets_to_svg};
 use medax::plane::{medial_axis, AxisOptions, OffsetOptions, Offsets};
 use medax::shape::{Shape2d, ShapeOptions, Vertex};
 use serde_json::Value;

@@ -9,7 +9,7 @@ mod common;
 use common::oracle::check;
 use common::{circle, poly, rect};
 use medax::kernel::{FilteredKernel, Point};
-use medax::plane::voronoi::{voronoi, SiteId, Sites, VoronoiDiagram, VoronoiError, VoronoiOptions};
+use medax::plane::{voronoi, SiteId, Sites, VoronoiDiagram, VoronoiError, VoronoiOptions};
 use medax::shape::{Element, Loop, ShapeError, Vertex};
 use rand::{Rng, SeedableRng};
 
@@ -684,7 +684,7 @@ fn degenerate_scenes_from_the_cgal_cross_check() {
     for (name, seed) in [("collinear_points", 70), ("collinear_segments", 71), ("brick_wall", 72)] {
         let text =
             std::fs::read_to_string(format!("{}/tests/data/voronoi_{name}.json", env!("CARGO_MANIFEST_DIR"))).unwrap();
-        let (sites, boundary) = medax::plane::voronoi_json::read_sites(&text).unwrap();
+        let (sites, boundary) = medax::plane::read_sites(&text).unwrap();
         assert!(boundary.is_none());
         let vd = voronoi(&sites, &VoronoiOptions::default()).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert!(vd.complete, "{name}");
@@ -694,14 +694,14 @@ fn degenerate_scenes_from_the_cgal_cross_check() {
 
 #[test]
 fn the_diagnosis_tools_read_a_sites_file_as_the_diagram_s_first_shape() {
-    use medax::plane::voronoi_json::shape_or_sites;
+    use medax::plane::shape_or_sites;
     use medax::shape::LoopKind;
     let text = r#"{"curves": [[[0, 0], [1, 0.2]]], "points": [[0.5, 2]], "regions": [[[3, 0], [4, 0], [4, 1]]]}"#;
     let shape = shape_or_sites(text).unwrap();
     let kinds: Vec<LoopKind> = (0..shape.loops().len()).map(|l| shape.kind(l)).collect();
     assert_eq!(kinds, [LoopKind::Region, LoopKind::Region, LoopKind::Curve, LoopKind::Point]);
     // The same shape, frame included, as the diagram computes on.
-    let (sites, _) = medax::plane::voronoi_json::read_sites(text).unwrap();
+    let (sites, _) = medax::plane::read_sites(text).unwrap();
     assert_eq!(shape.to_json(), vd_of(&sites).shape().to_json());
     // A given boundary is loop 0; a shape file reads as itself.
     let bounded = shape_or_sites(r#"{"points": [[1, 1]], "boundary": [[0, 0], [3, 0], [3, 3], [0, 3]]}"#).unwrap();
@@ -719,7 +719,7 @@ fn many_random_segments() {
     for name in ["random_segments_1500", "random_segments_1000_square_4_diagonals"] {
         let text =
             std::fs::read_to_string(format!("{}/tests/data/voronoi_{name}.json", env!("CARGO_MANIFEST_DIR"))).unwrap();
-        let (sites, boundary) = medax::plane::voronoi_json::read_sites(&text).unwrap();
+        let (sites, boundary) = medax::plane::read_sites(&text).unwrap();
         let opts = VoronoiOptions { boundary, ..VoronoiOptions::default() };
         let vd = voronoi(&sites, &opts).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert!(vd.complete, "{name}");

@@ -3,7 +3,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use medax::plane::leaf_text::{read_leaf, write_leaf};
+use medax::plane::internals::{read_leaf, write_leaf};
 use medax::shape::{samples, Shape2d, ShapeOptions};
 use std::sync::OnceLock;
 

@@ -9,8 +9,8 @@
 use arbitrary::Arbitrary;
 use libfuzzer_sys::fuzz_target;
 use medax::kernel::Point;
-use medax::plane::voronoi::{voronoi, SiteId, Sites, VoronoiOptions};
-use medax::plane::voronoi_json::read_sites;
+use medax::plane::{voronoi, SiteId, Sites, VoronoiOptions};
+use medax::plane::read_sites;
 use medax::shape::{Element, Loop, Vertex};
 
 #[derive(Arbitrary, Debug)]

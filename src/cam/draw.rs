@@ -4,7 +4,7 @@
 use super::pocket::Pocket;
 use super::vcarve::VCarve;
 use crate::io::svg_writer::{PathCmd, Style, SvgDocument};
-use crate::plane::offset_draw::{draw_axis_thin, draw_loops, layer_colour};
+use crate::plane::offset::draw::{draw_axis_thin, draw_loops, layer_colour};
 use crate::plane::MedialAxis2d;
 use crate::shape::{shape_document, Shape2d};
 

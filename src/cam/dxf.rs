@@ -6,7 +6,7 @@
 use super::pocket::Pocket;
 use super::vcarve::VCarve;
 use crate::io::dxf_writer::DxfWriter;
-use crate::plane::offset_dxf::add_loops;
+use crate::plane::offset::dxf::add_loops;
 
 impl Pocket {
     /// The pocket as DXF: rings in machining order, the rings of level k on

@@ -22,7 +22,7 @@
 use super::{CamError, UncutKind, UncutRegion};
 use crate::kernel::construct::{circle_circle, line_circle};
 use crate::kernel::{BBox, FilteredKernel, Point};
-use crate::plane::offset_trim::{BandPiece, Trimmer};
+use crate::plane::offset::trim::{BandPiece, Trimmer};
 use crate::shape::{Element, Loop, Vertex};
 use std::f64::consts::TAU;
 

@@ -3,9 +3,9 @@
 
 use super::{fail, write_file, RunArgs, ShapeArgs};
 use medax::cam::{pocket, vcarve, CamError, Pocket, PocketOptions, PocketOrder, VCarve, VCarveOptions};
-use medax::plane::offset_draw::offsets_to_svg;
-use medax::plane::offset_dxf::offsets_to_dxf;
-use medax::plane::offset_json::offsets_to_json;
+use medax::plane::offsets_to_dxf;
+use medax::plane::offsets_to_json;
+use medax::plane::offsets_to_svg;
 use medax::plane::{medial_axis, AxisOptions, MedialAxis2d, OffsetLayer, OffsetOptions, Offsets};
 use medax::shape::Shape2d;
 use std::path::PathBuf;

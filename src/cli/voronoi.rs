@@ -1,9 +1,9 @@
 //! `medax voronoi`: the Voronoi diagram of sites as JSON and/or SVG.
 
 use super::{write_file, RunArgs};
-use medax::plane::voronoi::{voronoi, VoronoiOptions};
-use medax::plane::voronoi_json::read_sites;
+use medax::plane::read_sites;
 use medax::plane::AxisOptions;
+use medax::plane::{voronoi, VoronoiOptions};
 use medax::shape::ShapeOptions;
 use std::path::PathBuf;
 use std::process::ExitCode;

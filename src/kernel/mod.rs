@@ -26,6 +26,7 @@ mod bbox;
 pub mod bisector;
 pub mod construct;
 mod exact;
+pub mod fan;
 pub mod growing_disk;
 mod point;
 

@@ -1,45 +1,60 @@
-//! Medial axes of shapes bounded by segments and circular arcs, in the
-//! Euclidean plane (thesis chapter 2).
+//! Medial axes, Voronoi diagrams and trimmed offsets of shapes bounded by
+//! segments and circular arcs, in the Euclidean plane (thesis chapter 2).
 //!
-//! Built so far: maximal disks ([`maxdisk`], thesis 2.2.1, Algorithm 1),
-//! answered by a branch-and-bound search over the shape's element index
-//! instead of the thesis's scan of all elements, and the subshapes a disk
-//! cuts a shape into ([`subshape`]). The divide loop, the base cases and the
-//! conquer step (2.2.1–2.2.4) build on them.
+//! The folders follow the thesis and depend on each other in one direction
+//! only (`docs/ARCHITECTURE.md` draws the graph):
+//!
+//! * `axis/`: the output graph, [`MedialAxis2d`] (thesis 2.2.3–2.2.4), its
+//!   JSON contract and pictures. It knows nothing of how it was computed.
+//! * `medial/`: the randomized divide-and-conquer that computes it:
+//!   maximal disks (`disk/`, 2.2.1–2.2.2), subshapes and the divide step
+//!   with holes (`decompose/`, 2.2.1, 2.3.1), the base cases
+//!   (`base_case/`, 2.2.2.2–2.2.3) and the conquer step (`conquer/`, 2.2.4).
+//! * `voronoi/`: Voronoi diagrams of sites as the axis of a framed shape
+//!   (2.3).
+//! * `offset/`: trimmed offsets read off the axis (2.4).
+//!
+//! This module re-exports the public API; everything else is crate-private.
+//! Tests, fuzz targets and developer tools reach the algorithm's internals
+//! through [`internals`], compiled only with the `internals` feature.
 
-pub mod augment;
-pub mod axis;
-pub mod axis_json;
-pub mod base_case;
-pub mod conquer;
-pub mod divide;
-pub mod draw;
-mod fan_cut;
-pub mod leaf_text;
-pub mod maxdisk;
-pub mod maxdisk_star;
-pub mod offset;
-pub mod offset_draw;
-pub mod offset_dxf;
-pub mod offset_json;
-mod offset_outer;
-mod offset_prim;
-mod offset_profile;
-mod offset_tour;
-pub(crate) mod offset_trim;
-pub mod subshape;
-mod tour;
-pub mod voronoi;
-mod voronoi_draw;
-mod voronoi_frame;
-pub mod voronoi_json;
-pub mod voronoi_regions;
+pub(crate) mod axis;
+pub(crate) mod medial;
+pub(crate) mod offset;
+pub(crate) mod voronoi;
 
+pub use axis::draw::AxisPicture;
+pub use axis::json::site_json;
 pub use axis::{AxisEdge, AxisNode, MedialAxis2d, NodeKind, Primitive};
-pub use conquer::{medial_axis, medial_axis_with, AxisError, AxisOptions};
-pub use draw::AxisPicture;
-pub use maxdisk::{DiskFinder, Footpoint, MaxDisk};
+pub use medial::conquer::{medial_axis, medial_axis_with, AxisError, AxisOptions};
+pub use medial::decompose::subshape::{BoundaryPos, Cut, Piece, Subshape};
+pub use medial::disk::maximal::{DiskFinder, Footpoint, MaxDisk};
+pub use offset::draw::{layer_colour, offsets_to_svg};
+pub use offset::dxf::offsets_to_dxf;
+pub use offset::json::offsets_to_json;
 pub use offset::{OffsetError, OffsetLayer, OffsetLoop, OffsetOptions, OffsetRegion, Offsets};
-pub use subshape::{BoundaryPos, Cut, Piece, Subshape};
+pub use voronoi::json::{read_sites, shape_or_sites, site_id_json};
+pub use voronoi::regions::SiteRegion;
 pub use voronoi::{voronoi, SiteId, Sites, VoronoiDiagram, VoronoiEdge, VoronoiError, VoronoiOptions};
-pub use voronoi_regions::SiteRegion;
+
+/// The algorithm's internal steps, for the project's own tests, fuzz
+/// targets and developer tools (leaf dumps, replays, profiles). Not a
+/// stable API: compiled only with the `internals` cargo feature.
+#[cfg(feature = "internals")]
+pub mod internals {
+    /// The base-case solver: one leaf's axis, computed directly.
+    pub mod base_case {
+        pub use crate::plane::medial::base_case::{solve, BaseCaseError, EventKind, LocalAxis};
+    }
+    /// Leaf dumps as exact text, to replay a breakdown.
+    pub mod leaf_text {
+        pub use crate::plane::medial::decompose::leaf_text::{read_leaf, write_leaf, LeafTextError};
+    }
+    pub use super::medial::conquer::{glue, solve_leaves};
+    pub use super::medial::decompose::augment::augment;
+    pub use super::medial::decompose::divide::{
+        decompose, decompose_in, decompose_with, divide_into, leaf_size, Decomposition,
+    };
+    pub use super::medial::decompose::leaf_text::{read_leaf, write_leaf};
+    pub use super::medial::decompose::subshape::ChainParts;
+}

@@ -1,0 +1,278 @@
+//! The medial axis as a graph (thesis 2.2.3): nodes are maximal disks where
+//! something happens, edges are conic arcs between two boundary primitives.
+//!
+//! An edge keeps its combinatorics, the two primitives and where its disks
+//! touch each of them at both ends, so its curve is evaluated lazily by the
+//! footpoint parametrisation ([`crate::kernel::bisector`], thesis 2.2.4):
+//! nothing is sampled until a caller asks, at the tolerance it asks for.
+
+pub(crate) mod draw;
+pub(crate) mod json;
+
+use crate::kernel::apollonius::Site;
+use crate::kernel::bisector::{bisector_point, conic_kind, sample_between, ConicKind};
+use crate::kernel::Point;
+use crate::shape::{Element, ElementRef, Shape2d};
+
+/// A boundary primitive the medial axis is equidistant from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Primitive {
+    /// The inside of an element (segment or arc), indexed as in
+    /// [`Shape2d::loops`] (normalised orientation).
+    Element(ElementRef),
+    /// A reflex vertex: vertex `vertex` (the start of element `vertex`) of
+    /// loop `loop_index`.
+    Vertex {
+        /// Loop index.
+        loop_index: usize,
+        /// Vertex index within the loop.
+        vertex: usize,
+    },
+}
+
+impl Primitive {
+    /// Distance (model units) from `p` to the primitive itself: to the
+    /// vertex, or to the closest point of the element (not of its line or
+    /// circle).
+    pub fn distance(&self, shape: &Shape2d, p: Point) -> f64 {
+        match *self {
+            Primitive::Vertex { loop_index, vertex } => p.dist(shape.loops()[loop_index].vertices()[vertex].p),
+            Primitive::Element(r) => shape.loops()[r.loop_index].element(r.element).closest_point(p).0,
+        }
+    }
+
+    /// What a disk touching this primitive sees: a sided line, a circle with
+    /// its kind of tangency, or a point.
+    pub fn site(&self, shape: &Shape2d) -> Site {
+        match *self {
+            Primitive::Vertex { loop_index, vertex } => Site::Point(shape.loops()[loop_index].vertices()[vertex].p),
+            Primitive::Element(r) => match shape.loops()[r.loop_index].element(r.element) {
+                // The interior is left of travel.
+                Element::Segment(s) => Site::Line { a: s.a, n: (s.b - s.a).unit().perp() },
+                // A counter-clockwise arc curves around the interior: the
+                // disks inside touch it from within its circle.
+                Element::Arc(a) => Site::Circle { o: a.center, r: a.radius, outside: !a.is_ccw() },
+            },
+        }
+    }
+}
+
+/// What happens at a node.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum NodeKind {
+    /// Three or more edges meet: the disk touches three or more primitives.
+    Branch,
+    /// A convex vertex of the boundary: radius 0, an end of the axis.
+    Corner,
+    /// The centre of an arc whose whole circle lies inside the shape
+    /// (thesis Observation 5): an end of the axis at a curvature maximum.
+    Leaf,
+    /// Two edges meet and the pair of primitives changes (a contact passes
+    /// a smooth vertex or the end of a reflex vertex's fan of normals).
+    Joint,
+}
+
+/// A node of the medial axis.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AxisNode {
+    /// Centre of the maximal disk, model units.
+    pub point: Point,
+    /// Radius of the maximal disk, model units (0 at a convex corner).
+    pub radius: f64,
+    /// What happens here.
+    pub kind: NodeKind,
+}
+
+/// An edge: a piece of the conic of points equidistant from two primitives.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AxisEdge {
+    /// Node index at the start.
+    pub from: usize,
+    /// Node index at the end.
+    pub to: usize,
+    /// The two primitives, the first on the left when walking from `from`
+    /// to `to`.
+    pub sites: [Primitive; 2],
+    /// Footpoint parameters on each primitive at `from` and at `to`, in the
+    /// parametrisation of [`crate::kernel::bisector::footpoint`]: distance
+    /// along a segment from its start, or an angle in radians around an
+    /// arc's centre or a reflex vertex.
+    pub params: [(f64, f64); 2],
+    /// The kind of conic the edge lies on.
+    pub kind: ConicKind,
+}
+
+/// The medial axis of a shape.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct MedialAxis2d {
+    /// Nodes: every branch point, corner, leaf and joint.
+    pub nodes: Vec<AxisNode>,
+    /// Edges between nodes.
+    pub edges: Vec<AxisEdge>,
+}
+
+/// The finest sampling tolerance [`AxisEdge::sample`] accepts, relative to
+/// the shape's bounding-box diagonal.
+pub const MIN_RELATIVE_SAMPLE_TOLERANCE: f64 = 1e-12;
+
+/// Below this many radians (or this fraction of a length) a footpoint
+/// parameter range is a single point for choosing a parametrisation.
+const TINY: f64 = 1e-12;
+
+impl AxisEdge {
+    /// The footpoint range on primitive `k` scaled to a length: a segment's
+    /// parameter is a length already, an arc's angle times its radius, a
+    /// vertex's angle times the larger radius at the ends.
+    fn reach(&self, shape: &Shape2d, k: usize, r_max: f64) -> f64 {
+        let (u0, u1) = self.params[k];
+        match self.sites[k].site(shape) {
+            Site::Line { .. } => (u1 - u0).abs(),
+            Site::Circle { r, .. } => (u1 - u0).abs() * r,
+            Site::Point(_) => (u1 - u0).abs() * r_max,
+        }
+    }
+
+    /// The primitive whose footpoint moves furthest along the edge: the
+    /// better-conditioned parametrisation.
+    pub(crate) fn driver(&self, shape: &Shape2d, r_max: f64) -> usize {
+        usize::from(self.reach(shape, 1, r_max) > self.reach(shape, 0, r_max) * (1.0 + TINY))
+    }
+
+    /// The maximal disk at fraction `s` ∈ [0, 1] along the edge: of the
+    /// footpoint range of the better-conditioned primitive, or of the
+    /// segment between the nodes for a straight edge (whose footpoint
+    /// parametrisation degenerates between nearly parallel lines). Centre
+    /// and radius, model units. `None` if no disk is tangent there (never
+    /// for an edge of a valid axis).
+    pub fn eval(&self, shape: &Shape2d, nodes: &[AxisNode], s: f64) -> Option<(Point, f64)> {
+        if self.kind == ConicKind::Line {
+            let (a, b) = (nodes[self.from].point, nodes[self.to].point);
+            let c = a + (b - a) * s;
+            return Some((c, site_distance(&self.sites[0].site(shape), c)));
+        }
+        let r_max = nodes[self.from].radius.max(nodes[self.to].radius);
+        let k = self.driver(shape, r_max);
+        let (u0, u1) = self.params[k];
+        bisector_point(&self.sites[k].site(shape), &self.sites[1 - k].site(shape), u0 + (u1 - u0) * s)
+    }
+
+    /// Samples along the edge, from its `from` node to its `to` node, as
+    /// (centre, radius): the polyline through the centres deviates from the
+    /// true conic by at most `tol` model units, raised to at least
+    /// [`MIN_RELATIVE_SAMPLE_TOLERANCE`] × the shape's diagonal (a finer
+    /// or zero tolerance would ask for billions of samples). The first and
+    /// last samples are the nodes themselves.
+    pub fn sample(&self, shape: &Shape2d, nodes: &[AxisNode], tol: f64) -> Vec<(Point, f64)> {
+        let tol = tol.max(MIN_RELATIVE_SAMPLE_TOLERANCE * shape.bbox().diagonal());
+        let (a, b) = (nodes[self.from], nodes[self.to]);
+        let r_max = a.radius.max(b.radius);
+        let k = self.driver(shape, r_max);
+        let (u0, u1) = self.params[k];
+        let (sk, so) = (self.sites[k].site(shape), self.sites[1 - k].site(shape));
+        // The ends are the nodes (computed by their own, better
+        // conditioned constructions); a line needs nothing in between.
+        let ends = [(a.point, a.radius), (b.point, b.radius)];
+        if (u1 - u0).abs() <= TINY * (1.0 + u0.abs()) || self.kind == ConicKind::Line {
+            return ends.to_vec();
+        }
+        let (start, end) = ((a.point, a.radius, u0), (b.point, b.radius, u1));
+        match sample_between(&sk, &so, start, end, tol) {
+            Some(s) => s.into_iter().map(|(c, r, _)| (c, r)).collect(),
+            None => ends.to_vec(),
+        }
+    }
+}
+
+/// The radius of the disk centred `c` tangent to site `s` as its kind says.
+fn site_distance(s: &Site, c: Point) -> f64 {
+    match *s {
+        Site::Point(q) => c.dist(q),
+        Site::Line { a, n } => n.dot(c - a),
+        Site::Circle { o, r, outside: true } => c.dist(o) - r,
+        Site::Circle { o, r, outside: false } => r - c.dist(o),
+    }
+}
+
+/// The conic kind of the edge between primitives `a` and `b` (interior
+/// disks are nested inside counter-clockwise arcs' circles). An element
+/// and one of its own end vertices share only that vertex: the disks
+/// touching both touch the element there, so their centres lie on its
+/// normal at the vertex (a parabola or conic whose focus lies on its
+/// directrix degenerates to that line). Such an edge is the end of a fan
+/// too narrow to hold a footpoint, a few tolerances long.
+pub fn edge_kind(shape: &Shape2d, a: Primitive, b: Primitive) -> ConicKind {
+    if own_end_pair(shape, a, b) {
+        return ConicKind::Line;
+    }
+    conic_kind(&a.site(shape), &b.site(shape), [true, true])
+}
+
+/// Whether one of `a`, `b` is an element and the other a vertex at one of
+/// its ends (the edge between them runs along the element's normal there).
+pub(crate) fn own_end_pair(shape: &Shape2d, a: Primitive, b: Primitive) -> bool {
+    let own_end = |v: Primitive, e: Primitive| match (v, e) {
+        (Primitive::Vertex { loop_index, vertex }, Primitive::Element(r)) if r.loop_index == loop_index => {
+            let n = shape.loops()[loop_index].len();
+            vertex == r.element || vertex == (r.element + 1) % n
+        }
+        _ => false,
+    };
+    own_end(a, b) || own_end(b, a)
+}
+
+impl MedialAxis2d {
+    /// Number of edges at each node.
+    pub fn degrees(&self) -> Vec<usize> {
+        let mut d = vec![0; self.nodes.len()];
+        for e in &self.edges {
+            d[e.from] += 1;
+            d[e.to] += 1;
+        }
+        d
+    }
+
+    /// Every edge sampled to chordal tolerance `tol` (model units), in edge
+    /// order; see [`AxisEdge::sample`].
+    pub fn sampled(&self, shape: &Shape2d, tol: f64) -> Vec<Vec<(Point, f64)>> {
+        use rayon::prelude::*;
+        self.edges.par_iter().map(|e| e.sample(shape, &self.nodes, tol)).collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shape::{ShapeOptions, Vertex};
+
+    #[test]
+    fn an_element_and_its_own_end_vertex_bound_a_straight_edge() {
+        // An L-shaped hexagon: vertex 3 at (1, 1) is reflex, between
+        // element 2 (from (2, 1)) and element 3 (to (1, 2)).
+        let pts = [(0.0, 0.0), (2.0, 0.0), (2.0, 1.0), (1.0, 1.0), (1.0, 2.0), (0.0, 2.0)];
+        let lp = pts.iter().map(|&(x, y)| Vertex { p: Point::new(x, y), bulge: 0.0 }).collect();
+        let shape = Shape2d::from_bulge_loops(vec![lp], &ShapeOptions::default()).unwrap();
+        let v = Primitive::Vertex { loop_index: 0, vertex: 3 };
+        let e = |element| Primitive::Element(ElementRef { loop_index: 0, element });
+        assert_eq!(edge_kind(&shape, v, e(2)), ConicKind::Line);
+        assert_eq!(edge_kind(&shape, e(3), v), ConicKind::Line);
+        // Another element's vertex: the ordinary parabola.
+        assert_eq!(edge_kind(&shape, v, e(0)), ConicKind::Parabola);
+        // Along element 2's normal at the vertex (pointing down, -y), the
+        // disks touch the vertex and the element there: the edge evaluates
+        // between its nodes with the distance to both as radius.
+        let nodes = [
+            AxisNode { point: Point::new(1.0, 0.9), radius: 0.1, kind: NodeKind::Joint },
+            AxisNode { point: Point::new(1.0, 0.8), radius: 0.2, kind: NodeKind::Joint },
+        ];
+        let edge = AxisEdge {
+            from: 0,
+            to: 1,
+            sites: [e(2), v],
+            params: [(1.0, 1.0), (0.0, 0.0)],
+            kind: edge_kind(&shape, e(2), v),
+        };
+        let (c, r) = edge.eval(&shape, &nodes, 0.5).unwrap();
+        assert!(c.dist(Point::new(1.0, 0.85)) < 1e-15 && (r - 0.15).abs() < 1e-15, "{c:?} {r}");
+        assert!((c.dist(Point::new(1.0, 1.0)) - r).abs() < 1e-15);
+    }
+}
