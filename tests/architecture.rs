@@ -1,0 +1,228 @@
+//! The layering of docs/ARCHITECTURE.md, checked on the sources: arrows
+//! point down only, the files of `src/plane` import each other without
+//! cycles, and files stay small. A refactor that breaks one of these rules
+//! fails here rather than in a later reader's head.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+
+fn src() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
+}
+
+fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
+    let mut entries: Vec<_> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().path()).collect();
+    entries.sort();
+    for p in entries {
+        if p.is_dir() {
+            rust_files(&p, out);
+        } else if p.extension().is_some_and(|e| e == "rs") {
+            out.push(p);
+        }
+    }
+}
+
+/// The file's code without its unit tests (a test may reach anywhere) and
+/// without comments (a doc link is no dependency).
+fn code_of(path: &Path) -> String {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut code = String::new();
+    for line in text.lines() {
+        let t = line.trim_start();
+        if t.starts_with("#[cfg(test)]") {
+            break;
+        }
+        if t.starts_with("//") {
+            continue;
+        }
+        code.push_str(line);
+        code.push('\n');
+    }
+    code
+}
+
+/// The module path of a source file: `src/plane/axis/mod.rs` is
+/// `plane::axis`.
+fn module_of(path: &Path) -> String {
+    let rel = path.strip_prefix(src()).unwrap().with_extension("");
+    let mut parts: Vec<String> = rel.iter().map(|s| s.to_string_lossy().into_owned()).collect();
+    if parts.last().is_some_and(|p| p == "mod" || p == "lib") {
+        parts.pop();
+    }
+    parts.join("::")
+}
+
+/// Every `crate::a::b::...` path in `code`, as its segments.
+fn crate_paths(code: &str) -> Vec<Vec<String>> {
+    let mut out = Vec::new();
+    let mut rest = code;
+    while let Some(i) = rest.find("crate::") {
+        rest = &rest[i + "crate::".len()..];
+        let end = rest.find(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':')).unwrap_or(rest.len());
+        let segs: Vec<String> = rest[..end].split("::").filter(|s| !s.is_empty()).map(String::from).collect();
+        // A grouped import `crate::a::{b, c}` names each of b and c.
+        if rest[end..].starts_with('{') {
+            let close = rest[end..].find('}').map_or(rest.len(), |c| end + c);
+            for item in rest[end + 1..close].split(',') {
+                let item: String = item.trim().chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
+                if !item.is_empty() {
+                    let mut s = segs.clone();
+                    s.push(item);
+                    out.push(s);
+                }
+            }
+        }
+        out.push(segs);
+    }
+    out
+}
+
+/// The layers below each top-level module: what it may use.
+fn allowed(top: &str) -> Option<&'static [&'static str]> {
+    Some(match top {
+        "io" => &["io"],
+        "kernel" => &["kernel", "io"],
+        "shape" => &["shape", "kernel", "io"],
+        "plane" => &["plane", "shape", "kernel", "io"],
+        "cam" => &["cam", "plane", "shape", "kernel", "io"],
+        _ => return None,
+    })
+}
+
+#[test]
+fn layers_use_only_the_layers_below() {
+    let mut files = Vec::new();
+    rust_files(&src(), &mut files);
+    let mut wrong = Vec::new();
+    for f in &files {
+        let module = module_of(f);
+        let top = module.split("::").next().unwrap().to_string();
+        let Some(ok) = allowed(&top) else { continue };
+        for p in crate_paths(&code_of(f)) {
+            if let Some(first) = p.first() {
+                if !ok.contains(&first.as_str()) {
+                    wrong.push(format!("{module} uses crate::{}", p.join("::")));
+                }
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "upward dependencies:\n{}", wrong.join("\n"));
+}
+
+/// Inside `plane`: the output graph knows nothing of the algorithm, the
+/// algorithm nothing of its applications, and the applications
+/// (Voronoi diagrams, offsets) nothing of each other.
+#[test]
+fn plane_capabilities_depend_downwards() {
+    let rules: [(&str, &[&str]); 4] = [
+        ("plane::axis", &["medial", "voronoi", "offset"]),
+        ("plane::medial", &["voronoi", "offset"]),
+        ("plane::voronoi", &["offset"]),
+        ("plane::offset", &["voronoi"]),
+    ];
+    let mut files = Vec::new();
+    rust_files(&src().join("plane"), &mut files);
+    let mut wrong = Vec::new();
+    for f in &files {
+        let module = module_of(f);
+        for (prefix, banned) in rules {
+            if module == prefix || module.starts_with(&format!("{prefix}::")) {
+                for p in crate_paths(&code_of(f)) {
+                    if p.len() > 1 && p[0] == "plane" && banned.contains(&p[1].as_str()) {
+                        wrong.push(format!("{module} uses crate::{}", p.join("::")));
+                    }
+                }
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "dependencies against the grain:\n{}", wrong.join("\n"));
+}
+
+#[test]
+fn plane_files_import_each_other_without_cycles() {
+    let mut files = Vec::new();
+    rust_files(&src().join("plane"), &mut files);
+    let modules: BTreeSet<String> = files.iter().map(|f| module_of(f)).collect();
+    // The file a path lands in: its longest prefix that is a module.
+    let file_of = |p: &[String]| -> Option<String> {
+        (1..=p.len()).rev().map(|n| p[..n].join("::")).find(|m| modules.contains(m))
+    };
+    let mut edges: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+    for f in &files {
+        let module = module_of(f);
+        let targets = edges.entry(module.clone()).or_default();
+        for p in crate_paths(&code_of(f)) {
+            if let Some(t) = file_of(&p) {
+                // A module declaring its children is no import; `plane`
+                // itself only re-exports.
+                if t != module && t != "plane" {
+                    targets.insert(t);
+                }
+            }
+        }
+    }
+    // Depth-first search for a back edge.
+    fn visit(
+        m: &str,
+        edges: &BTreeMap<String, BTreeSet<String>>,
+        state: &mut BTreeMap<String, u8>,
+        stack: &mut Vec<String>,
+    ) -> Option<Vec<String>> {
+        state.insert(m.to_string(), 1);
+        stack.push(m.to_string());
+        for t in edges.get(m).into_iter().flatten() {
+            match state.get(t.as_str()).copied().unwrap_or(0) {
+                1 => {
+                    let at = stack.iter().position(|s| s == t).unwrap();
+                    let mut cycle = stack[at..].to_vec();
+                    cycle.push(t.clone());
+                    return Some(cycle);
+                }
+                0 => {
+                    if let Some(c) = visit(t, edges, state, stack) {
+                        return Some(c);
+                    }
+                }
+                _ => {}
+            }
+        }
+        stack.pop();
+        state.insert(m.to_string(), 2);
+        None
+    }
+    let mut state = BTreeMap::new();
+    for m in edges.keys() {
+        if state.get(m.as_str()).copied().unwrap_or(0) == 0 {
+            if let Some(c) = visit(m, &edges, &mut state, &mut Vec::new()) {
+                panic!("import cycle: {}", c.join(" -> "));
+            }
+        }
+    }
+}
+
+/// Files stay small enough to read whole. The ones still over the limit
+/// are named here, each with its size today, so that none grows and a new
+/// one cannot join them unnoticed.
+#[test]
+fn source_files_stay_small() {
+    const LIMIT: usize = 600;
+    let waived: &[(&str, usize)] = &[
+        ("io/dxf.rs", 621),
+        ("io/svg_path.rs", 849),
+        ("plane/medial/base_case/mod.rs", 1272),
+        ("plane/medial/conquer/mod.rs", 673),
+        ("plane/medial/decompose/subshape.rs", 636),
+    ];
+    let mut files = Vec::new();
+    rust_files(&src(), &mut files);
+    let mut wrong = Vec::new();
+    for f in &files {
+        let rel = f.strip_prefix(src()).unwrap().to_string_lossy().replace('\\', "/");
+        let lines = std::fs::read_to_string(f).unwrap().lines().count();
+        let limit = waived.iter().find(|w| w.0 == rel).map_or(LIMIT, |w| w.1);
+        if lines > limit {
+            wrong.push(format!("src/{rel}: {lines} lines (limit {limit})"));
+        }
+    }
+    assert!(wrong.is_empty(), "files too long:\n{}", wrong.join("\n"));
+}
