@@ -1,0 +1,355 @@
+//! Events: the disks known without search (ports, corners, joints, fan
+//! ends, leaf arcs), each with its footpoints on the cycle.
+
+use super::aux_arc::Port;
+use super::{BaseCaseError, Builder, EventKind, Key, SAME_EVENT, TOUCH};
+use crate::kernel::apollonius::Site;
+use crate::kernel::growing_disk::GrowingDisk;
+use crate::kernel::{AxisKernel, Contact, Point};
+use crate::plane::axis::Primitive;
+use crate::plane::medial::decompose::subshape::Cut;
+use crate::shape::{JointKind, Shape2d};
+
+pub(super) struct Event {
+    pub(super) center: Point,
+    pub(super) radius: f64,
+    pub(super) kind: EventKind,
+    /// Footpoints in cycle order, distinct.
+    pub(super) feet: Vec<Key>,
+    /// Primitives the disk touches along their whole range (an arc and its
+    /// own circle): pockets made only of these are empty.
+    pub(super) whole: Vec<usize>,
+}
+
+impl<K: AxisKernel> Builder<'_, K> {
+    pub(super) fn k(&self) -> &K {
+        self.finder.kernel()
+    }
+
+    /// True when the disk (`c`, `r`) is event `e`'s own (centres and radii
+    /// within [`SAME_EVENT`] tolerances): one event, not two.
+    pub(super) fn same_disk(&self, e: &Event, c: Point, r: f64) -> bool {
+        let near = SAME_EVENT * self.tol;
+        e.center.dist(c) <= near && (e.radius - r).abs() <= near
+    }
+
+    /// How the circle (`c`, `r`) meets site `i`'s piece, within `tol`.
+    pub(super) fn contact(&self, i: usize, c: Point, r: f64, tol: f64) -> Contact {
+        self.k().contact(self.distance(i, c).0, r, tol)
+    }
+
+    /// True when the disk (`c`, `r`) crosses one of the auxiliary arcs.
+    pub(super) fn leaves_subshape(&self, c: Point, r: f64) -> bool {
+        self.aux.iter().any(|p| p.arc.crossed_by(c, r, self.tol))
+    }
+
+    /// Every site the circle (`c`, `r`) touches within the tolerance.
+    pub(super) fn touching(&self, c: Point, r: f64) -> (Vec<Key>, Vec<usize>) {
+        let mut feet = Vec::new();
+        let mut whole = Vec::new();
+        for i in 0..self.n() {
+            if let Site::Circle { o, r: rc, outside: false } = self.sites[i].site {
+                if c.dist(o) <= self.tol && (rc - r).abs() <= self.tol {
+                    feet.push((i, self.key(i, self.sites[i].u0, r)));
+                    feet.push((i, self.key(i, self.sites[i].u1, r)));
+                    whole.push(i);
+                    continue;
+                }
+            }
+            let (d, u) = self.distance(i, c);
+            if self.k().contact(d, r, self.touch) == Contact::Touching && self.faces_inside(i, c, u) {
+                if let Site::Point(q) = self.sites[i].site {
+                    // A disk through a reflex vertex from outside its fan
+                    // (in this subshape) touches the element beside it.
+                    let w = self.fraction(i, self.param(i, c, 0.0));
+                    let slack = 4.0 * self.tol / self.length(i, 0.0, 1.0, c.dist(q)).max(f64::MIN_POSITIVE);
+                    if w < -slack || w > 1.0 + slack {
+                        continue;
+                    }
+                }
+                let k = self.key(i, u, r);
+                // A touch at a reflex vertex belongs to the vertex's fan,
+                // at the disk's direction, not to the element's end.
+                if self.fan_owns(i, k) {
+                    continue;
+                }
+                feet.push((i, k));
+            }
+        }
+        // A contact at an element's clamped end, where the joined
+        // neighbour has a contact of its own, is that neighbour's contact
+        // seen within the tolerance (nearly concentric arcs smear one
+        // contact over a range): one footpoint, not two.
+        let n = self.n();
+        let has = |j: usize, feet: &[(usize, Key)]| feet.iter().any(|&(s, k)| s == j && k.w > 0.0 && k.w < 1.0);
+        let keep: Vec<bool> = feet
+            .iter()
+            .map(|&(i, k)| {
+                let at_start = k.site == i && k.w == 0.0;
+                let at_end = k.site != i || k.w == 1.0;
+                let prev = (i + n - 1) % n;
+                let next = (i + 1) % n;
+                let start_taken = at_start && self.sites[prev].joined_next && has(prev, &feet) && !has(i, &feet);
+                let end_taken = at_end && self.sites[i].joined_next && has(next, &feet) && !has(i, &feet);
+                !(start_taken || end_taken)
+            })
+            .collect();
+        let feet = feet.into_iter().zip(keep).filter(|(_, k)| *k).map(|((_, k), _)| k).collect();
+        (feet, whole)
+    }
+
+    /// Contacts of a constructed disk count as footpoints within this
+    /// distance: the disks here come from closed-form constructions
+    /// (residuals of a few ulps), while the shape's tolerance would let a
+    /// disk inside a nearly circular stretch of arcs (a rounded tip) touch
+    /// all of them at once.
+    /// Far from the origin, rounding of the coordinates themselves sets the
+    /// floor.
+    pub(super) fn touch_tol(shape: &Shape2d, tol: f64) -> f64 {
+        let bb = shape.bbox();
+        let magnitude = bb.min.x.abs().max(bb.min.y.abs()).max(bb.max.x.abs()).max(bb.max.y.abs()) + bb.diagonal();
+        (TOUCH * tol).max(256.0 * f64::EPSILON * magnitude).min(tol)
+    }
+
+    /// True when key `k`, found on element site `i`, is an end of `i`
+    /// where a reflex vertex's fan joins it.
+    pub(super) fn fan_owns(&self, i: usize, k: Key) -> bool {
+        let n = self.n();
+        let is_fan = |j: usize| matches!(self.sites[j].prim, Primitive::Vertex { .. });
+        if is_fan(i) {
+            return false;
+        }
+        let prev = (i + n - 1) % n;
+        // `k` may already be the next site's start (a joined end).
+        let at_start = k.site == i && k.w == 0.0 && self.sites[prev].joined_next && is_fan(prev);
+        let at_end = k.site == (i + 1) % n && k.w == 0.0 && k.site != i && is_fan(k.site);
+        at_start || at_end
+    }
+
+    pub(super) fn add_event(
+        &mut self,
+        center: Point,
+        radius: f64,
+        kind: EventKind,
+        mut feet: Vec<Key>,
+        whole: Vec<usize>,
+    ) -> usize {
+        // The same disk found twice (a joint disk that is also a branch
+        // point or a leaf circle) is one event with all its footpoints.
+        // The two auxiliary arcs of one augmenting disk (thesis 2.3.1) are
+        // the two sides of a cycle cut open: two ends of this axis, glued
+        // into one node only with the other subshapes.
+        let twin = |e: &Event| matches!((e.kind, kind), (EventKind::Port(a), EventKind::Port(b)) if a == b);
+        let same = self.events.iter().position(|e| self.same_disk(e, center, radius) && !twin(e));
+        let id = match same {
+            Some(i) => {
+                let e = &mut self.events[i];
+                feet.append(&mut e.feet);
+                e.whole.extend(whole);
+                if matches!(kind, EventKind::Port(_)) {
+                    e.kind = kind;
+                }
+                i
+            }
+            None => {
+                self.events.push(Event { center, radius, kind, feet: Vec::new(), whole });
+                self.events.len() - 1
+            }
+        };
+        feet.sort_by(|a, b| self.pos(*a).total_cmp(&self.pos(*b)));
+        feet.dedup_by(|a, b| a.site == b.site && (a.w - b.w).abs() <= 1e-12);
+        let e = &mut self.events[id];
+        e.feet = feet;
+        e.whole.sort_unstable();
+        e.whole.dedup();
+        id
+    }
+
+    /// The maximal disk grown at the start of site `j` (a joint with the
+    /// previous site), tangent with normal `nrm`; `own` are the sites whose
+    /// supporting curve is tangent there (skipped, but an arc among them
+    /// curving inwards caps the radius at its own).
+    pub(super) fn grow(&self, p: Point, nrm: Point, own: &[usize]) -> Option<(Point, f64)> {
+        let g = GrowingDisk { p, n: nrm };
+        let t_min = 0.25 * self.tol;
+        let mut best = f64::INFINITY;
+        for i in 0..self.n() {
+            let s = &self.sites[i];
+            if own.contains(&i) {
+                if let Site::Circle { o, r, outside: false } = s.site {
+                    if nrm.dot(o - p) > 0.0 {
+                        best = best.min(r);
+                    }
+                }
+                continue;
+            }
+            let (lo, hi) = (s.u0.min(s.u1), s.u0.max(s.u1));
+            // The piece's ends are boundary points: always safe contacts.
+            for q in [self.point_of(i, s.u0), self.point_of(i, s.u1)] {
+                if q.dist(p) > self.tol {
+                    if let Some(t) = self.k().through_point(&g, q).filter(|&t| t > t_min) {
+                        best = best.min(t);
+                    }
+                }
+            }
+            if let Site::Point(_) = s.site {
+                continue;
+            }
+            if let Some(t) = self.k().touch_site(&g, &s.site).filter(|&t| t > t_min) {
+                let c = g.center(t);
+                let u = self.param(i, c, t);
+                let slack = match s.site {
+                    Site::Circle { r, .. } => self.tol / r,
+                    _ => self.tol,
+                };
+                if u >= lo - slack && u <= hi + slack && s.site.contact(c, t).dist(p) > self.tol {
+                    best = best.min(t);
+                }
+            }
+        }
+        // A dividing disk tangent at `p` is the maximal disk there (its
+        // other contacts may lie outside this subshape).
+        for Port { arc, .. } in &self.aux {
+            let v = arc.c - p;
+            if (v.norm() - arc.r).abs() <= self.tol && v.cross(nrm).abs() <= self.tol && v.dot(nrm) > 0.0 {
+                best = best.min(arc.r);
+            }
+        }
+        best.is_finite().then(|| (g.center(best), best))
+    }
+
+    pub(super) fn collect_events(&mut self, cuts: &[Cut]) -> Result<(), BaseCaseError> {
+        let n = self.n();
+        // Ports: the auxiliary arcs, between the site before and after.
+        for &Port { disk, site_after: next, .. } in &self.aux.clone() {
+            let c = cuts[disk];
+            let next = next % n;
+            let feet = vec![Key { site: (next + n - 1) % n, w: 1.0 }, Key { site: next, w: 0.0 }];
+            self.add_event(c.center, c.radius, EventKind::Port(disk), feet, Vec::new());
+        }
+        // Joints between consecutive sites.
+        for i in 0..n {
+            if !self.sites[i].joined_next {
+                continue;
+            }
+            let j = (i + 1) % n;
+            let (a, b) = (self.sites[i], self.sites[j]);
+            let key = Key { site: j, w: 0.0 };
+            let p = self.point_of(j, b.u0);
+            // The element whose normal the joint's disk grows along: the
+            // one after the joint, or before it at the start of a fan.
+            let grow_from = match (a.prim, b.prim) {
+                (Primitive::Element(_), Primitive::Element(eb)) => {
+                    if self.shape.joint(eb.loop_index, eb.element) == JointKind::Convex {
+                        self.add_event(p, 0.0, EventKind::Corner, vec![key], Vec::new());
+                        continue;
+                    }
+                    (eb, false)
+                }
+                (Primitive::Element(ea), Primitive::Vertex { .. }) => (ea, true),
+                (Primitive::Vertex { .. }, Primitive::Element(eb)) => (eb, false),
+                (Primitive::Vertex { .. }, Primitive::Vertex { .. }) => {
+                    // Two pieces of one point site's fan: the maximal disk
+                    // through the point in the direction where they meet.
+                    if a.prim != b.prim {
+                        continue;
+                    }
+                    let Site::Point(q) = b.site else { continue };
+                    let nrm = Point::new(b.u0.cos(), b.u0.sin());
+                    let (c, r) = self.grow(q, nrm, &[i, j]).ok_or(BaseCaseError::NoDisk(q))?;
+                    let (mut feet, whole) = self.touching(c, r);
+                    feet.push(key);
+                    self.add_event(c, r, EventKind::Joint, feet, whole);
+                    continue;
+                }
+            };
+            let (er, at_end) = grow_from;
+            let elements = &self.shape.loops()[er.loop_index];
+            let e = elements.element(er.element);
+            let mut nrm = if at_end { e.end_tangent() } else { e.start_tangent() }.perp();
+            if let (Primitive::Element(ea), Primitive::Element(_)) = (a.prim, b.prim) {
+                // A smooth joint's two normals agree only within the angular
+                // tolerance: grow along their mean, so that a mirror image
+                // grows the mirrored disk and one disk met from two joints
+                // is found twice alike.
+                nrm = (elements.element(ea.element).end_tangent().perp() + nrm).unit();
+            }
+            let (c, r) = self.grow(p, nrm, &[i, j]).ok_or(BaseCaseError::NoDisk(p))?;
+            let (mut feet, whole) = self.touching(c, r);
+            feet.push(key);
+            self.add_event(c, r, EventKind::Joint, feet, whole);
+        }
+        // Arcs whose own circle is the maximal disk at their middle.
+        for i in 0..n {
+            let Site::Circle { o, r, outside: false } = self.sites[i].site else { continue };
+            let um = 0.5 * (self.sites[i].u0 + self.sites[i].u1);
+            let (p, nrm) = crate::kernel::bisector::footpoint(&self.sites[i].site, um);
+            if let Some((_, t)) = self.grow(p, nrm, &[i]) {
+                if (t - r).abs() <= self.tol && !self.leaves_subshape(o, r) {
+                    let (feet, whole) = self.touching(o, r);
+                    self.add_event(o, r, EventKind::Leaf, feet, whole);
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// True when site `i` between fractions `w0` and `w1` stays within the
+    /// tolerance of the circle (`c`, `r`): a footpoint smeared by rounding
+    /// into two (a disk through a vertex just beside its tangency point).
+    pub(super) fn hugs(&self, i: usize, w0: f64, w1: f64, c: Point, r: f64) -> bool {
+        if let Site::Point(_) = self.sites[i].site {
+            // A disk through the vertex touches it in one direction only;
+            // the rest of the fan is real boundary for the axis.
+            return false;
+        }
+        (0..=8).all(|k| {
+            let w = w0 + (w1 - w0) * k as f64 / 8.0;
+            self.k().contact(c.dist(self.point_of(i, self.u_at(i, w))), r, 4.0 * self.tol) == Contact::Touching
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::fixtures::{rectangle, shape, with_events};
+    use super::*;
+
+    #[test]
+    fn a_rectangles_events_are_its_four_corners() {
+        with_events(&rectangle(), |b| {
+            assert_eq!(b.events.len(), 4);
+            assert!(b.events.iter().all(|e| e.kind == EventKind::Corner && e.radius == 0.0 && e.feet.len() == 1));
+        });
+    }
+
+    #[test]
+    fn a_smooth_joint_grows_the_maximal_disk_there() {
+        // A stadium: two half circles of radius 1 joined to two segments.
+        let stadium = shape(&[(0.0, 0.0, 0.0), (2.0, 0.0, 1.0), (2.0, 2.0, 0.0), (0.0, 2.0, 1.0)]);
+        with_events(&stadium, |b| {
+            let joints: Vec<&Event> = b.events.iter().filter(|e| e.kind == EventKind::Joint).collect();
+            // The disk at both joints of a half circle is its circle: one
+            // event with two footpoints at each end.
+            assert_eq!(joints.len(), 2);
+            for e in joints {
+                assert_eq!(e.feet.len(), 2);
+                // The disk of radius 1 centred on the stadium's spine.
+                assert!((e.radius - 1.0).abs() < 1e-12 && (e.center.y - 1.0).abs() < 1e-12, "{:?}", e.center);
+                assert!(e.center.x.abs() < 1e-12 || (e.center.x - 2.0).abs() < 1e-12);
+            }
+        });
+    }
+
+    #[test]
+    fn touching_finds_every_site_a_disk_meets() {
+        with_events(&rectangle(), |b| {
+            // The disk of radius 1 at (1, 1) touches the bottom, top and left.
+            let (feet, whole) = b.touching(Point::new(1.0, 1.0), 1.0);
+            let mut sites: Vec<usize> = feet.iter().map(|k| k.site).collect();
+            sites.sort_unstable();
+            assert_eq!(sites, vec![0, 2, 3]);
+            assert!(whole.is_empty());
+        });
+    }
+}

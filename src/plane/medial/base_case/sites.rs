@@ -1,0 +1,237 @@
+//! Positions on the cycle of sites: footpoint parameters, their keys
+//! (site and fraction), offsets along the cycle, distances and lengths.
+
+use super::{Builder, NUDGE};
+use crate::kernel::apollonius::Site;
+use crate::kernel::construct::unwrap_near;
+use crate::kernel::{AxisKernel, Point};
+use crate::plane::axis::Primitive;
+use crate::shape::Element;
+
+/// A primitive as one subshape sees it: a range of footpoint parameters
+/// (see [`crate::kernel::bisector::footpoint`]) travelled from `u0` to `u1`.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct LocalSite {
+    pub(super) prim: Primitive,
+    pub(super) site: Site,
+    pub(super) u0: f64,
+    pub(super) u1: f64,
+    /// The next primitive in the cycle follows without an auxiliary arc.
+    pub(super) joined_next: bool,
+}
+
+/// A position on the subshape's boundary cycle: primitive index and the
+/// fraction `w` ∈ [0, 1] of its parameter range.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Key {
+    pub(super) site: usize,
+    pub(super) w: f64,
+}
+
+pub(super) fn angle(v: Point) -> f64 {
+    v.y.atan2(v.x)
+}
+
+/// Global footpoint parameter of element fraction `t`.
+pub(super) fn element_param(e: &Element, t: f64) -> f64 {
+    match e {
+        Element::Segment(s) => t * s.a.dist(s.b),
+        Element::Arc(a) => angle(a.a - a.center) + t * a.sweep(),
+    }
+}
+
+impl<K: AxisKernel> Builder<'_, K> {
+    pub(super) fn n(&self) -> usize {
+        self.sites.len()
+    }
+
+    /// Parameter of the disk (`c`, `r`) on site `i`, unwrapped into its range.
+    pub(super) fn param(&self, i: usize, c: Point, r: f64) -> f64 {
+        let s = &self.sites[i];
+        let mid = 0.5 * (s.u0 + s.u1);
+        match s.site {
+            Site::Line { a, n } => (c - n * r - a).dot(-n.perp()),
+            Site::Point(q) => unwrap_near(angle(c - q), mid),
+            Site::Circle { o, .. } => unwrap_near(angle(c - o), mid),
+        }
+    }
+
+    pub(super) fn fraction(&self, i: usize, u: f64) -> f64 {
+        let s = &self.sites[i];
+        (u - s.u0) / (s.u1 - s.u0)
+    }
+
+    /// The boundary point at parameter `u` of site `i`.
+    pub(super) fn point_of(&self, i: usize, u: f64) -> Point {
+        crate::kernel::bisector::footpoint(&self.sites[i].site, u).0
+    }
+
+    /// Distance from `c` to site `i`'s piece and the parameter of the
+    /// closest point (clamped to the range).
+    pub(super) fn distance(&self, i: usize, c: Point) -> (f64, f64) {
+        let s = &self.sites[i];
+        let (lo, hi) = (s.u0.min(s.u1), s.u0.max(s.u1));
+        match s.site {
+            Site::Point(q) => (c.dist(q), self.param(i, c, 0.0).clamp(lo, hi)),
+            Site::Line { a, n } => {
+                let u = (c - a).dot(-n.perp()).clamp(lo, hi);
+                (c.dist(self.point_of(i, u)), u)
+            }
+            Site::Circle { o, r, .. } => {
+                let u = self.param(i, c, 0.0);
+                if (lo..=hi).contains(&u) && c.dist(o) > 0.0 {
+                    ((c.dist(o) - r).abs(), u)
+                } else {
+                    let (pa, pb) = (self.point_of(i, lo), self.point_of(i, hi));
+                    if c.dist(pa) <= c.dist(pb) {
+                        (c.dist(pa), lo)
+                    } else {
+                        (c.dist(pb), hi)
+                    }
+                }
+            }
+        }
+    }
+
+    /// The cycle key of parameter `u` on site `i`: ends snapped when within
+    /// the tolerance (in length, for a disk of radius `r`), and the end of
+    /// a primitive joined to the next stored as the next one's start.
+    pub(super) fn key(&self, i: usize, u: f64, r: f64) -> Key {
+        let s = &self.sites[i];
+        let scale = match s.site {
+            Site::Line { .. } => 1.0,
+            Site::Circle { r: rc, .. } => rc,
+            Site::Point(_) => r,
+        };
+        let mut w = self.fraction(i, u).clamp(0.0, 1.0);
+        if (u - s.u0).abs() * scale <= self.tol {
+            w = 0.0;
+        }
+        if (u - s.u1).abs() * scale <= self.tol {
+            w = 1.0;
+        }
+        if w == 1.0 && s.joined_next {
+            return Key { site: (i + 1) % self.n(), w: 0.0 };
+        }
+        // Where a site meets an auxiliary arc only the dividing disk itself
+        // touches (a maximal disk tangent there lies on the same normal,
+        // so it is that disk or not maximal): any other disk's contact
+        // there is rounding of one just inside the site.
+        let n = self.n();
+        if w == 0.0 && !self.sites[(i + n - 1) % n].joined_next {
+            w = NUDGE;
+        } else if w == 1.0 && !s.joined_next {
+            w = 1.0 - NUDGE;
+        }
+        Key { site: i, w }
+    }
+
+    /// False when a disk centred `c` touches site `i` at parameter `u`
+    /// strictly inside the site's piece from the site's outer side: the
+    /// two sides of a curve site lie on each other, and a disk touching
+    /// one touches the other there from behind.
+    pub(super) fn faces_inside(&self, i: usize, c: Point, u: f64) -> bool {
+        let s = &self.sites[i];
+        let w = self.fraction(i, u);
+        if !(w > 0.0 && w < 1.0) {
+            return true;
+        }
+        let signed = match s.site {
+            Site::Point(_) => return true,
+            Site::Line { a, n } => (c - a).dot(n),
+            Site::Circle { o, r, outside: true } => c.dist(o) - r,
+            Site::Circle { o, r, outside: false } => r - c.dist(o),
+        };
+        signed >= 0.0
+    }
+
+    pub(super) fn pos(&self, k: Key) -> f64 {
+        2.0 * k.site as f64 + k.w
+    }
+
+    /// Offset of `k` after `a` along the cycle, in [0, 2n).
+    pub(super) fn offset(&self, a: Key, k: Key) -> f64 {
+        // Both positions lie in [0, 2n): one wrap, exactly what
+        // `rem_euclid` gives, without its division (this runs for every
+        // footpoint of every event at every pocket walked).
+        let d = self.pos(k) - self.pos(a);
+        if d < 0.0 {
+            d + 2.0 * self.n() as f64
+        } else {
+            d
+        }
+    }
+
+    /// Length (model units) of the part of site `i` between fractions
+    /// `w0` and `w1`, for a disk of radius `r` at a vertex.
+    pub(super) fn length(&self, i: usize, w0: f64, w1: f64, r: f64) -> f64 {
+        let s = &self.sites[i];
+        let du = (s.u1 - s.u0).abs() * (w1 - w0).abs();
+        match s.site {
+            Site::Line { .. } => du,
+            Site::Circle { r: rc, .. } => du * rc,
+            Site::Point(_) => du * r,
+        }
+    }
+
+    /// The site just after `k` and its fraction there.
+    pub(super) fn site_after(&self, k: Key) -> (usize, f64) {
+        if k.w < 1.0 {
+            (k.site, k.w)
+        } else {
+            ((k.site + 1) % self.n(), 0.0)
+        }
+    }
+
+    /// The site just before `k` and its fraction there.
+    pub(super) fn site_before(&self, k: Key) -> (usize, f64) {
+        if k.w > 0.0 {
+            (k.site, k.w)
+        } else {
+            ((k.site + self.n() - 1) % self.n(), 1.0)
+        }
+    }
+
+    pub(super) fn u_at(&self, i: usize, w: f64) -> f64 {
+        let s = &self.sites[i];
+        s.u0 + (s.u1 - s.u0) * w
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::fixtures::{rectangle, with_events};
+    use super::*;
+
+    #[test]
+    fn keys_snap_to_site_ends_and_joined_ends_are_the_next_start() {
+        with_events(&rectangle(), |b| {
+            let tol = b.tol;
+            // Site 0 is the bottom edge, parameters 0..4 along it.
+            assert_eq!(b.key(0, 2.0, 1.0), Key { site: 0, w: 0.5 });
+            assert_eq!(b.key(0, 0.5 * tol, 1.0), Key { site: 0, w: 0.0 });
+            assert_eq!(b.key(0, 4.0 - 0.5 * tol, 1.0), Key { site: 1, w: 0.0 });
+        });
+    }
+
+    #[test]
+    fn offsets_run_forwards_round_the_cycle() {
+        with_events(&rectangle(), |b| {
+            let (a, k) = (Key { site: 3, w: 0.5 }, Key { site: 0, w: 0.25 });
+            // Site i lies at [2i, 2i + 1]: from 6.5 round to 8.25.
+            assert_eq!(b.offset(a, k), 1.75);
+            assert_eq!(b.offset(k, a), 8.0 - 1.75);
+        });
+    }
+
+    #[test]
+    fn distance_and_parameter_of_the_nearest_point() {
+        with_events(&rectangle(), |b| {
+            let (d, u) = b.distance(0, Point::new(1.5, 0.75));
+            assert!((d - 0.75).abs() < 1e-15 && (u - 1.5).abs() < 1e-15);
+            // Beyond the segment's end the end is nearest.
+            let (d, u) = b.distance(0, Point::new(5.0, -1.0));
+            assert!((d - 2f64.sqrt()).abs() < 1e-15 && u == 4.0);
+        });
+    }
+}
