@@ -225,3 +225,74 @@ fn source_files_stay_small() {
     }
     assert!(wrong.is_empty(), "files too long:\n{}", wrong.join("\n"));
 }
+
+/// Non-test code of the files under `dir`, each line with its file and
+/// number.
+fn code_lines(dir: &Path) -> Vec<(String, usize, String)> {
+    let mut files = Vec::new();
+    rust_files(dir, &mut files);
+    let mut out = Vec::new();
+    for f in &files {
+        let rel = f.strip_prefix(src()).unwrap().to_string_lossy().replace('\\', "/");
+        for (i, line) in std::fs::read_to_string(f).unwrap().lines().enumerate() {
+            let t = line.trim_start();
+            if t.starts_with("#[cfg(test)]") {
+                break;
+            }
+            if !t.starts_with("//") {
+                out.push((rel.clone(), i + 1, line.to_string()));
+            }
+        }
+    }
+    out
+}
+
+/// The algorithms ask the kernel which side, which turn and which angle
+/// (`kernel::direction`, `kernel::fan`, predicates): no product of
+/// vectors compared against zero and no `atan2` of their own.
+#[test]
+fn plane_asks_the_kernel_for_signs_and_angles() {
+    let mut wrong = Vec::new();
+    for (file, n, line) in code_lines(&src().join("plane")) {
+        let product = line.contains(".dot(") || line.contains(".cross(");
+        let against_zero = ["< 0.0", "> 0.0", "<= 0.0", ">= 0.0", "== 0.0"].iter().any(|c| line.contains(c));
+        if line.contains("atan2") || (product && against_zero) {
+            wrong.push(format!("src/{file}:{n}: {}", line.trim()));
+        }
+    }
+    assert!(wrong.is_empty(), "sign tests outside the kernel:\n{}", wrong.join("\n"));
+}
+
+/// Tolerances are asked of `kernel::tolerance::Tolerance` by name: no bare
+/// `1e-N` and no `k * tol` in the algorithms.
+#[test]
+fn algorithms_name_their_tolerances() {
+    // The public sampling floor is part of the API (a named constant that
+    // callers read).
+    let allowed = ["pub const MIN_RELATIVE_SAMPLE_TOLERANCE"];
+    let mut wrong = Vec::new();
+    for dir in ["plane", "cam"] {
+        for (file, n, line) in code_lines(&src().join(dir)) {
+            if allowed.iter().any(|a| line.contains(a)) {
+                continue;
+            }
+            let bytes = line.as_bytes();
+            let literal = (1..bytes.len().saturating_sub(2)).any(|i| {
+                bytes[i] == b'e'
+                    && bytes[i - 1].is_ascii_digit()
+                    && bytes[i + 1] == b'-'
+                    && bytes[i + 2].is_ascii_digit()
+            });
+            let multiple = ["* tol", "* self.tol", "* shape.tolerance()", "* tolerance"].iter().any(|m| {
+                line.match_indices(m).any(|(i, _)| {
+                    let before = line[..i].trim_end();
+                    before.ends_with(|c: char| c.is_ascii_digit())
+                })
+            });
+            if literal || multiple {
+                wrong.push(format!("src/{file}:{n}: {}", line.trim()));
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "unnamed tolerances:\n{}", wrong.join("\n"));
+}

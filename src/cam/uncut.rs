@@ -21,6 +21,7 @@
 
 use super::{CamError, UncutKind, UncutRegion};
 use crate::kernel::construct::{circle_circle, line_circle};
+use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{BBox, FilteredKernel, Point};
 use crate::plane::offset::trim::{BandPiece, Trimmer};
 use crate::shape::{Element, Loop, Vertex};
@@ -151,7 +152,7 @@ fn clip(
         c.sort_by(f64::total_cmp);
         let sweep = if p.bulge == 0.0 { 0.0 } else { 4.0 * p.bulge.atan() };
         for w in c.windows(2) {
-            if w[1] - w[0] <= 1e-12 {
+            if w[1] - w[0] <= Tolerance::same_cut() {
                 continue;
             }
             let (a, b) = (el.point_at(w[0]), el.point_at(w[1]));
@@ -198,7 +199,7 @@ fn clip(
 /// search over all of them is the exception (where a circle was inserted).
 fn link(pieces: Vec<Piece>, lo: f64, tol: f64) -> Result<Vec<Vec<Piece>>, CamError> {
     let n = pieces.len();
-    let close = 64.0 * tol.max(f64::MIN_POSITIVE);
+    let close = Tolerance::new(tol).link_ends();
     let mut used = vec![false; n];
     let mut out = Vec::new();
     for s in 0..n {

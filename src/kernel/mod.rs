@@ -25,10 +25,12 @@ pub mod axis_kernel;
 mod bbox;
 pub mod bisector;
 pub mod construct;
+pub mod direction;
 mod exact;
 pub mod fan;
 pub mod growing_disk;
 mod point;
+pub mod tolerance;
 
 pub use axis_kernel::{AxisKernel, Contact};
 pub use bbox::BBox;

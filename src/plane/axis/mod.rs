@@ -11,6 +11,7 @@ pub(crate) mod json;
 
 use crate::kernel::apollonius::Site;
 use crate::kernel::bisector::{bisector_point, conic_kind, sample_between, ConicKind};
+use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Point;
 use crate::shape::{Element, ElementRef, Shape2d};
 
@@ -115,10 +116,6 @@ pub struct MedialAxis2d {
 /// the shape's bounding-box diagonal.
 pub const MIN_RELATIVE_SAMPLE_TOLERANCE: f64 = 1e-12;
 
-/// Below this many radians (or this fraction of a length) a footpoint
-/// parameter range is a single point for choosing a parametrisation.
-const TINY: f64 = 1e-12;
-
 impl AxisEdge {
     /// The footpoint range on primitive `k` scaled to a length: a segment's
     /// parameter is a length already, an arc's angle times its radius, a
@@ -135,7 +132,7 @@ impl AxisEdge {
     /// The primitive whose footpoint moves furthest along the edge: the
     /// better-conditioned parametrisation.
     pub(crate) fn driver(&self, shape: &Shape2d, r_max: f64) -> usize {
-        usize::from(self.reach(shape, 1, r_max) > self.reach(shape, 0, r_max) * (1.0 + TINY))
+        usize::from(self.reach(shape, 1, r_max) > self.reach(shape, 0, r_max) * (1.0 + Tolerance::point_range()))
     }
 
     /// The maximal disk at fraction `s` ∈ [0, 1] along the edge: of the
@@ -172,7 +169,7 @@ impl AxisEdge {
         // The ends are the nodes (computed by their own, better
         // conditioned constructions); a line needs nothing in between.
         let ends = [(a.point, a.radius), (b.point, b.radius)];
-        if (u1 - u0).abs() <= TINY * (1.0 + u0.abs()) || self.kind == ConicKind::Line {
+        if (u1 - u0).abs() <= Tolerance::point_range() * (1.0 + u0.abs()) || self.kind == ConicKind::Line {
             return ends.to_vec();
         }
         let (start, end) = ((a.point, a.radius, u0), (b.point, b.radius, u1));

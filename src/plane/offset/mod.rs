@@ -59,6 +59,7 @@ pub(crate) mod trim;
 
 pub use layer::{OffsetError, OffsetLayer, OffsetLoop, OffsetRegion};
 
+use crate::kernel::tolerance::Tolerance;
 use crate::plane::axis::MedialAxis2d;
 use crate::plane::medial::conquer::{medial_axis, AxisOptions};
 use crate::plane::offset::trim::Trimmer;
@@ -139,7 +140,7 @@ impl Offsets {
     /// negative ones (up to the outer reach), the shape's own boundary at 0.
     pub fn layer(&self, distance: f64) -> Result<OffsetLayer, OffsetError> {
         // The reach itself is allowed up to rounding (r·k/k).
-        if !distance.is_finite() || -distance > self.outer_reach * (1.0 + 1e-12) {
+        if !distance.is_finite() || -distance > self.outer_reach * (1.0 + Tolerance::reach_rounding()) {
             return Err(OffsetError::BadDistance(distance));
         }
         if distance >= 0.0 {

@@ -7,6 +7,8 @@
 use crate::kernel::apollonius::Site;
 use crate::kernel::bisector::footpoint;
 use crate::kernel::construct::unwrap_near;
+use crate::kernel::direction::angle_of;
+use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Point;
 use crate::plane::axis::Primitive;
 use crate::shape::{turning_angle, Element, Shape2d};
@@ -76,10 +78,7 @@ impl OffsetPrim {
     pub fn param_of(&self, c: Point) -> f64 {
         match self.site {
             Site::Line { a, n } => (c - a).dot(-n.perp()),
-            Site::Point(o) | Site::Circle { o, .. } => {
-                let d = c - o;
-                d.y.atan2(d.x)
-            }
+            Site::Point(o) | Site::Circle { o, .. } => angle_of(c - o),
         }
     }
 
@@ -105,7 +104,7 @@ impl OffsetPrim {
         if self.sigma == 0.0 {
             0.0
         } else {
-            self.sigma * (advance.clamp(0.0, TAU - 1e-9) / 4.0).tan()
+            self.sigma * (advance.clamp(0.0, TAU - Tolerance::whole_turn_margin()) / 4.0).tan()
         }
     }
 

@@ -11,6 +11,8 @@
 use crate::kernel::apollonius::Site;
 use crate::kernel::bisector::bisector_point;
 use crate::kernel::construct::{circle_circle, line_circle};
+use crate::kernel::direction::angle_of;
+use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Point;
 use crate::plane::axis::{AxisEdge, AxisNode};
 use crate::plane::offset::prim::{Curve, OffsetPrim};
@@ -37,10 +39,6 @@ pub(crate) struct EdgeProfile {
     /// parametrisation, as the axis samples it).
     pub driver: usize,
 }
-
-/// Margin (fraction of an edge's parameter range) within which an
-/// extremum is taken to be at the node itself.
-const END_MARGIN: f64 = 1e-9;
 
 impl EdgeProfile {
     /// The profile of `edge` between `nodes`.
@@ -100,7 +98,7 @@ impl EdgeProfile {
             }
         }
         let c = match best {
-            Some((out, c)) if out <= 1e-6 => c,
+            Some((out, c)) if out <= Tolerance::offset_piece_slack() => c,
             _ => self.bisect(j, rho),
         };
         let u = [self.param_near(0, c, a.u[0], b.u[0]), self.param_near(1, c, a.u[1], b.u[1])];
@@ -158,7 +156,7 @@ fn extrema(prims: &[OffsetPrim; 2], k: usize, edge: &AxisEdge) -> Vec<Break> {
         Site::Point(o) | Site::Circle { o, .. } => Some(o),
         Site::Line { .. } => None,
     };
-    let angle = |d: Point| d.y.atan2(d.x);
+    let angle = angle_of;
     // Footpoint parameters on the driver where the disk's centre lies on L.
     let candidates: Vec<f64> = match (p.site, q.site) {
         (Site::Line { .. }, Site::Line { .. }) => Vec::new(),
@@ -178,7 +176,7 @@ fn extrema(prims: &[OffsetPrim; 2], k: usize, edge: &AxisEdge) -> Vec<Break> {
     let (u0, u1) = edge.params[k];
     let mut found: Vec<(f64, Break)> = Vec::new();
     for u in candidates {
-        if !p.strictly_between(u, u0, u1, END_MARGIN) {
+        if !p.strictly_between(u, u0, u1, Tolerance::extremum_at_node()) {
             continue;
         }
         let u = p.unwrap(u, 0.5 * (u0 + u1));

@@ -2,6 +2,7 @@
 //! labelled with the sites on its sides, the regions and a nearest-site
 //! index.
 
+use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Point;
 use crate::plane::axis::{MedialAxis2d, Primitive};
 use crate::plane::voronoi::regions::{site_regions, SiteRegion};
@@ -84,7 +85,8 @@ impl VoronoiDiagram {
         // way along it (its ends are the nodes themselves).
         let toward = |i: usize, from_start: bool| {
             let e = &axis.edges[i];
-            let (node, s) = if from_start { (e.from, 1e-3) } else { (e.to, 1.0 - 1e-3) };
+            let s = Tolerance::leaving_direction();
+            let (node, s) = if from_start { (e.from, s) } else { (e.to, 1.0 - s) };
             let at = axis.nodes[node].point;
             let (a, b) = (axis.nodes[e.from].point, axis.nodes[e.to].point);
             let near = e.eval(&shape, &axis.nodes, s).map_or(a + (b - a) * s, |(c, _)| c);

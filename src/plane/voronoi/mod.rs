@@ -28,6 +28,7 @@ pub(crate) mod sites;
 pub use diagram::VoronoiDiagram;
 pub use sites::{SiteId, Sites, VoronoiEdge};
 
+use crate::kernel::tolerance::Tolerance;
 use crate::kernel::BBox;
 use crate::plane::medial::conquer::{medial_axis, AxisError, AxisOptions};
 use crate::plane::voronoi::frame::{frame_loop, FrameCheck};
@@ -150,7 +151,7 @@ fn voronoi_from(sites: &Sites, opts: &VoronoiOptions, shape_only: bool) -> Resul
     // them.)
     let scale = match bbox.diagonal() {
         d if d > 0.0 && d.is_finite() => d,
-        _ if bbox.min.is_finite() => 1.0_f64.max(1e-6 * bbox.min.x.abs().max(bbox.min.y.abs())),
+        _ if bbox.min.is_finite() => Tolerance::unit_at(bbox.min.x.abs().max(bbox.min.y.abs())),
         _ => 1.0,
     };
     let mut loop_sites = vec![SiteId::Frame];

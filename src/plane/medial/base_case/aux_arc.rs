@@ -2,8 +2,8 @@
 //! whether another disk crosses it, which would take that disk out of the
 //! subshape.
 
+use crate::kernel::direction::ccw_angle;
 use crate::kernel::Point;
-use std::f64::consts::TAU;
 
 /// An auxiliary arc where a subshape meets a dividing disk: a port through
 /// which its axis leaves for the neighbouring subshape.
@@ -46,10 +46,10 @@ impl AuxArc {
         let u = (o - self.c) * (1.0 / d);
         let base = self.c + u * x;
         let (va, vb) = (self.a - self.c, self.b - self.c);
-        let sweep = (va.cross(vb).atan2(va.dot(vb))).rem_euclid(TAU);
+        let sweep = ccw_angle(va, vb);
         [base + u.perp() * h, base - u.perp() * h].into_iter().any(|q| {
             let vq = q - self.c;
-            let at = (va.cross(vq).atan2(va.dot(vq))).rem_euclid(TAU);
+            let at = ccw_angle(va, vq);
             // Strictly inside the arc, away from its ends by the tolerance.
             at * self.r > tol && (sweep - at) * self.r > tol
         })

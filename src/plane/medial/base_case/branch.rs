@@ -1,7 +1,8 @@
 //! The branch point of a pocket: the empty Apollonius disk touching the
 //! pocket's two sides and a third site in between.
 
-use super::{Builder, Key, CONTACT_SLACK, CONTACT_SLACK_CAP, NUDGE};
+use super::{Builder, Key};
+use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{AxisKernel, Contact, Point};
 
 /// A branch point found in a pocket: its disk, its three contacts as
@@ -68,19 +69,19 @@ impl<K: AxisKernel> Builder<'_, K> {
             // on; a site that holds `a` or whose end wraps round stays.
             let (o_start, o_end) = (self.offset(a, Key { site: t, w: 0.0 }), self.offset(a, Key { site: t, w: 1.0 }));
             let whole = o_start <= o_end && o_end + 1.0 < 2.0 * self.n() as f64;
-            if whole && (o_end + 1.0 < x1 - CONTACT_SLACK_CAP || o_start > y2 + CONTACT_SLACK_CAP) {
+            let cap = Tolerance::branch_contact_slack_cap();
+            if whole && (o_end + 1.0 < x1 - cap || o_start > y2 + cap) {
                 continue;
             }
             for (c, r) in self.k().tritangent_disks([self.sites[s1].site, self.sites[s2].site, self.sites[t].site]) {
-                if r <= self.tol || !c.is_finite() || is_own(c, r) {
+                if r <= self.tol.touch() || !c.is_finite() || is_own(c, r) {
                     continue;
                 }
                 // Near-degenerate triples (many disks nearly alike, as at
                 // the centre of a symmetric shape) place contacts a few
                 // tolerances off: allow that much, in length, per site.
                 let slack = |i: usize| {
-                    (CONTACT_SLACK * self.tol / self.length(i, 0.0, 1.0, r).max(f64::MIN_POSITIVE))
-                        .min(CONTACT_SLACK_CAP)
+                    (self.tol.branch_contact_slack() / self.length(i, 0.0, 1.0, r).max(f64::MIN_POSITIVE)).min(cap)
                 };
                 let at = |i: usize| {
                     let u = self.param(i, c, r);
@@ -96,7 +97,10 @@ impl<K: AxisKernel> Builder<'_, K> {
                 }
                 // Touching all three: the construction is ill-conditioned
                 // for nearly parallel lines, where a root can miss a site.
-                if [s1, s2, t].iter().any(|&i| self.contact(i, c, r, CONTACT_SLACK * self.tol) != Contact::Touching) {
+                if [s1, s2, t]
+                    .iter()
+                    .any(|&i| self.contact(i, c, r, self.tol.branch_contact_slack()) != Contact::Touching)
+                {
                     continue;
                 }
                 candidates.push(Candidate { first_offset: o1, third: t, center: c, radius: r });
@@ -109,8 +113,8 @@ impl<K: AxisKernel> Builder<'_, K> {
                 // Empty: no site closer than the radius, inside the subshape,
                 // and for the whole shape (a subshape's own primitives do not
                 // see past its auxiliary arcs).
-                !(0..self.n()).any(|i| self.contact(i, c, r, self.tol) == Contact::Overlapping)
-                    && self.finder.intruder(c, r, 4.0 * self.tol).is_none()
+                !(0..self.n()).any(|i| self.contact(i, c, r, self.tol.touch()) == Contact::Overlapping)
+                    && self.finder.intruder(c, r, self.tol.intruder()).is_none()
             })?;
         let key = |i: usize| self.key(i, self.param(i, c, r), r);
         let raw = [key(s1), key(s2), key(t)];
@@ -124,7 +128,8 @@ impl<K: AxisKernel> Builder<'_, K> {
             for y in 0..3 {
                 if x != y && raw[x] == raw[y] {
                     let w = self.fraction(sites[x], self.param(sites[x], c, r));
-                    keys[x] = Key { site: sites[x], w: if w > 0.5 { 1.0 - NUDGE } else { NUDGE } };
+                    keys[x] =
+                        Key { site: sites[x], w: if w > 0.5 { 1.0 - Tolerance::nudge() } else { Tolerance::nudge() } };
                 }
             }
         }

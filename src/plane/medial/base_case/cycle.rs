@@ -5,11 +5,12 @@
 use super::aux_arc::Port;
 use super::prepare::{drop_sliver_ends, merge_touching_chains, same_position};
 use super::sites::{angle, element_param};
-use super::{AuxArc, Builder, LocalSite, FAN_MIN, POINT_SPLITS};
+use super::{AuxArc, Builder, LocalSite, POINT_SPLITS};
 use crate::kernel::apollonius::Site;
+use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{AxisKernel, Point};
 use crate::plane::axis::Primitive;
-use crate::plane::medial::decompose::subshape::{ChainParts, Cut, Piece, Subshape, SLIVER_END};
+use crate::plane::medial::decompose::subshape::{ChainParts, Cut, Piece, Subshape};
 use crate::shape::{ElementRef, JointKind};
 use std::f64::consts::TAU;
 
@@ -51,7 +52,7 @@ impl<K: AxisKernel> Builder<'_, K> {
         let (d0, d1) = (cw(from), cw(to));
         // Dividing disks found by sliding (maxdisk*) meet a vertex in a
         // direction accurate to about 1e-8 rad; narrower fans are that.
-        if d1 - d0 <= FAN_MIN || (d1 - d0) * r <= 4.0 * self.tol {
+        if d1 - d0 <= Tolerance::fan_angle() || (d1 - d0) * r <= self.tol.fan_arc() {
             return;
         }
         let q = lp.vertices()[v].p;
@@ -69,16 +70,16 @@ impl<K: AxisKernel> Builder<'_, K> {
         use crate::kernel::fan::cw_angle;
         let q = self.shape.loops()[l].vertices()[0].p;
         let mut width = cw_angle(from, to);
-        if width <= FAN_MIN {
+        if width <= Tolerance::fan_angle() {
             width = TAU;
         }
-        if width * r <= 4.0 * self.tol {
+        if width * r <= self.tol.fan_arc() {
             return;
         }
         let mut cuts: Vec<f64> = POINT_SPLITS
             .iter()
             .map(|&a| cw_angle(from, Point::new(a.cos(), a.sin())))
-            .filter(|&o| o > FAN_MIN && o < width - FAN_MIN)
+            .filter(|&o| o > Tolerance::fan_angle() && o < width - Tolerance::fan_angle())
             .collect();
         cuts.sort_by(f64::total_cmp);
         cuts.push(width);
@@ -99,7 +100,7 @@ impl<K: AxisKernel> Builder<'_, K> {
 
     pub(super) fn collect_sites(&mut self, s: &Subshape, cuts: &[Cut]) {
         let shape = self.shape;
-        let s = &drop_sliver_ends(shape, s, SLIVER_END * self.tol);
+        let s = &drop_sliver_ends(shape, s, self.tol.sliver_end());
         // A chain with no parts next to another chain is the other chain's
         // end point (a cut at an element's very end leaves one): drop it.
         let is_point =
@@ -188,7 +189,7 @@ impl<K: AxisKernel> Builder<'_, K> {
                 // a vertex) is that vertex; slivers at the ends of longer
                 // chains went in `drop_sliver_ends`, except next to a
                 // convex corner, whose corner event needs the sliver's site.
-                let sliver = parts.len() == 1 && (hi - lo) * lp.element(e).length() <= self.tol;
+                let sliver = parts.len() == 1 && (hi - lo) * lp.element(e).length() <= self.tol.touch();
                 if !sliver {
                     self.element_site(l, e, lo, hi);
                 }

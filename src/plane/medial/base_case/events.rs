@@ -2,9 +2,11 @@
 //! ends, leaf arcs), each with its footpoints on the cycle.
 
 use super::aux_arc::Port;
-use super::{BaseCaseError, Builder, EventKind, Key, SAME_EVENT, TOUCH};
+use super::{BaseCaseError, Builder, EventKind, Key};
 use crate::kernel::apollonius::Site;
+use crate::kernel::direction::{heading, Heading};
 use crate::kernel::growing_disk::GrowingDisk;
+use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{AxisKernel, Contact, Point};
 use crate::plane::axis::Primitive;
 use crate::plane::medial::decompose::subshape::Cut;
@@ -29,7 +31,7 @@ impl<K: AxisKernel> Builder<'_, K> {
     /// True when the disk (`c`, `r`) is event `e`'s own (centres and radii
     /// within [`SAME_EVENT`] tolerances): one event, not two.
     pub(super) fn same_disk(&self, e: &Event, c: Point, r: f64) -> bool {
-        let near = SAME_EVENT * self.tol;
+        let near = self.tol.same_event();
         e.center.dist(c) <= near && (e.radius - r).abs() <= near
     }
 
@@ -40,7 +42,7 @@ impl<K: AxisKernel> Builder<'_, K> {
 
     /// True when the disk (`c`, `r`) crosses one of the auxiliary arcs.
     pub(super) fn leaves_subshape(&self, c: Point, r: f64) -> bool {
-        self.aux.iter().any(|p| p.arc.crossed_by(c, r, self.tol))
+        self.aux.iter().any(|p| p.arc.crossed_by(c, r, self.tol.touch()))
     }
 
     /// Every site the circle (`c`, `r`) touches within the tolerance.
@@ -49,7 +51,7 @@ impl<K: AxisKernel> Builder<'_, K> {
         let mut whole = Vec::new();
         for i in 0..self.n() {
             if let Site::Circle { o, r: rc, outside: false } = self.sites[i].site {
-                if c.dist(o) <= self.tol && (rc - r).abs() <= self.tol {
+                if c.dist(o) <= self.tol.touch() && (rc - r).abs() <= self.tol.touch() {
                     feet.push((i, self.key(i, self.sites[i].u0, r)));
                     feet.push((i, self.key(i, self.sites[i].u1, r)));
                     whole.push(i);
@@ -62,7 +64,7 @@ impl<K: AxisKernel> Builder<'_, K> {
                     // A disk through a reflex vertex from outside its fan
                     // (in this subshape) touches the element beside it.
                     let w = self.fraction(i, self.param(i, c, 0.0));
-                    let slack = 4.0 * self.tol / self.length(i, 0.0, 1.0, c.dist(q)).max(f64::MIN_POSITIVE);
+                    let slack = self.tol.fan_slack() / self.length(i, 0.0, 1.0, c.dist(q)).max(f64::MIN_POSITIVE);
                     if w < -slack || w > 1.0 + slack {
                         continue;
                     }
@@ -99,16 +101,12 @@ impl<K: AxisKernel> Builder<'_, K> {
     }
 
     /// Contacts of a constructed disk count as footpoints within this
-    /// distance: the disks here come from closed-form constructions
-    /// (residuals of a few ulps), while the shape's tolerance would let a
-    /// disk inside a nearly circular stretch of arcs (a rounded tip) touch
-    /// all of them at once.
-    /// Far from the origin, rounding of the coordinates themselves sets the
-    /// floor.
-    pub(super) fn touch_tol(shape: &Shape2d, tol: f64) -> f64 {
+    /// distance ([`Tolerance::constructed_touch`]); far from the origin,
+    /// rounding of the coordinates themselves sets the floor.
+    pub(super) fn touch_tol(shape: &Shape2d, tol: Tolerance) -> f64 {
         let bb = shape.bbox();
         let magnitude = bb.min.x.abs().max(bb.min.y.abs()).max(bb.max.x.abs()).max(bb.max.y.abs()) + bb.diagonal();
-        (TOUCH * tol).max(256.0 * f64::EPSILON * magnitude).min(tol)
+        tol.constructed_touch(magnitude)
     }
 
     /// True when key `k`, found on element site `i`, is an end of `i`
@@ -157,7 +155,7 @@ impl<K: AxisKernel> Builder<'_, K> {
             }
         };
         feet.sort_by(|a, b| self.pos(*a).total_cmp(&self.pos(*b)));
-        feet.dedup_by(|a, b| a.site == b.site && (a.w - b.w).abs() <= 1e-12);
+        feet.dedup_by(|a, b| a.site == b.site && (a.w - b.w).abs() <= Tolerance::same_fraction());
         let e = &mut self.events[id];
         e.feet = feet;
         e.whole.sort_unstable();
@@ -171,13 +169,13 @@ impl<K: AxisKernel> Builder<'_, K> {
     /// curving inwards caps the radius at its own).
     pub(super) fn grow(&self, p: Point, nrm: Point, own: &[usize]) -> Option<(Point, f64)> {
         let g = GrowingDisk { p, n: nrm };
-        let t_min = 0.25 * self.tol;
+        let t_min = self.tol.least_growth();
         let mut best = f64::INFINITY;
         for i in 0..self.n() {
             let s = &self.sites[i];
             if own.contains(&i) {
                 if let Site::Circle { o, r, outside: false } = s.site {
-                    if nrm.dot(o - p) > 0.0 {
+                    if heading(nrm, o - p) == Heading::Forward {
                         best = best.min(r);
                     }
                 }
@@ -186,7 +184,7 @@ impl<K: AxisKernel> Builder<'_, K> {
             let (lo, hi) = (s.u0.min(s.u1), s.u0.max(s.u1));
             // The piece's ends are boundary points: always safe contacts.
             for q in [self.point_of(i, s.u0), self.point_of(i, s.u1)] {
-                if q.dist(p) > self.tol {
+                if q.dist(p) > self.tol.touch() {
                     if let Some(t) = self.k().through_point(&g, q).filter(|&t| t > t_min) {
                         best = best.min(t);
                     }
@@ -199,10 +197,10 @@ impl<K: AxisKernel> Builder<'_, K> {
                 let c = g.center(t);
                 let u = self.param(i, c, t);
                 let slack = match s.site {
-                    Site::Circle { r, .. } => self.tol / r,
-                    _ => self.tol,
+                    Site::Circle { r, .. } => self.tol.touch() / r,
+                    _ => self.tol.touch(),
                 };
-                if u >= lo - slack && u <= hi + slack && s.site.contact(c, t).dist(p) > self.tol {
+                if u >= lo - slack && u <= hi + slack && s.site.contact(c, t).dist(p) > self.tol.touch() {
                     best = best.min(t);
                 }
             }
@@ -211,7 +209,10 @@ impl<K: AxisKernel> Builder<'_, K> {
         // other contacts may lie outside this subshape).
         for Port { arc, .. } in &self.aux {
             let v = arc.c - p;
-            if (v.norm() - arc.r).abs() <= self.tol && v.cross(nrm).abs() <= self.tol && v.dot(nrm) > 0.0 {
+            if (v.norm() - arc.r).abs() <= self.tol.touch()
+                && v.cross(nrm).abs() <= self.tol.touch()
+                && heading(v, nrm) == Heading::Forward
+            {
                 best = best.min(arc.r);
             }
         }
@@ -285,7 +286,7 @@ impl<K: AxisKernel> Builder<'_, K> {
             let um = 0.5 * (self.sites[i].u0 + self.sites[i].u1);
             let (p, nrm) = crate::kernel::bisector::footpoint(&self.sites[i].site, um);
             if let Some((_, t)) = self.grow(p, nrm, &[i]) {
-                if (t - r).abs() <= self.tol && !self.leaves_subshape(o, r) {
+                if (t - r).abs() <= self.tol.touch() && !self.leaves_subshape(o, r) {
                     let (feet, whole) = self.touching(o, r);
                     self.add_event(o, r, EventKind::Leaf, feet, whole);
                 }
@@ -305,7 +306,7 @@ impl<K: AxisKernel> Builder<'_, K> {
         }
         (0..=8).all(|k| {
             let w = w0 + (w1 - w0) * k as f64 / 8.0;
-            self.k().contact(c.dist(self.point_of(i, self.u_at(i, w))), r, 4.0 * self.tol) == Contact::Touching
+            self.k().contact(c.dist(self.point_of(i, self.u_at(i, w))), r, self.tol.hug()) == Contact::Touching
         })
     }
 }

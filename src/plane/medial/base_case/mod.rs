@@ -28,9 +28,10 @@
 //! of other maximal disks) is why only original primitives are searched.
 //! The cost is O(k²) for k primitives, which the divide step keeps tiny.
 
+use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{AxisKernel, Point};
 use crate::plane::axis::Primitive;
-use crate::plane::medial::decompose::subshape::{hugged_disk, Cut, Piece, Subshape, HUGGED_TIP};
+use crate::plane::medial::decompose::subshape::{hugged_disk, Cut, Piece, Subshape};
 use crate::plane::medial::disk::maximal::DiskFinder;
 use crate::shape::Shape2d;
 
@@ -45,33 +46,6 @@ mod walk;
 use aux_arc::{AuxArc, Port};
 use events::Event;
 use sites::{Key, LocalSite};
-
-/// Pockets holding less boundary than this many tolerances are slivers
-/// left by cuts within rounding of a vertex; the axis in them is shorter
-/// than the same.
-const SLIVER: f64 = 64.0;
-
-/// Footpoint tolerance of constructed disks, as a fraction of the shape's
-/// tolerance.
-const TOUCH: f64 = 1e-3;
-
-/// Fraction by which coinciding contacts of a branch point are pulled
-/// into their own primitives.
-const NUDGE: f64 = 1e-12;
-
-/// How far (in tolerances, along the boundary) a branch point's contact
-/// may fall outside the range it must lie in.
-const CONTACT_SLACK: f64 = 16.0;
-
-/// And at most this fraction of the site (short sites).
-const CONTACT_SLACK_CAP: f64 = 0.5;
-
-/// Disks whose centres and radii agree within this many tolerances are
-/// one event.
-const SAME_EVENT: f64 = 4.0;
-
-/// Fans of normals narrower than this (radians) are rounding, not fans.
-const FAN_MIN: f64 = 1e-7;
 
 /// The directions (angles) where a point site's fan is cut into sites of
 /// at most a quarter turn: fixed, so that every subshape holding part of
@@ -156,7 +130,8 @@ pub fn solve<K: AxisKernel>(
     tol: f64,
     finder: &DiskFinder<K>,
 ) -> Result<LocalAxis, BaseCaseError> {
-    if let Some(disk) = hugged_disk(shape, s, cuts, HUGGED_TIP * tol) {
+    let tol = Tolerance::new(tol);
+    if let Some(disk) = hugged_disk(shape, s, cuts, tol.hugged_tip()) {
         // The tip of a lobe cut at nearly its osculating circle: its true
         // axis runs on inside a sliver a few tolerances thin, where the
         // order of footpoints is rounding rather than geometry, and every
@@ -195,7 +170,7 @@ pub fn solve<K: AxisKernel>(
 
 struct Builder<'a, K: AxisKernel> {
     shape: &'a Shape2d,
-    tol: f64,
+    tol: Tolerance,
     /// Footpoint tolerance of constructed disks ([`Builder::touch_tol`]).
     touch: f64,
     sites: Vec<LocalSite>,
@@ -231,7 +206,7 @@ pub(super) mod fixtures {
         f: impl FnOnce(Builder<'_, FilteredKernel>) -> T,
     ) -> T {
         let finder = DiskFinder::new(shape);
-        let tol = shape.tolerance();
+        let tol = Tolerance::new(shape.tolerance());
         let touch = Builder::<FilteredKernel>::touch_tol(shape, tol);
         let mut b =
             Builder { shape, tol, touch, sites: Vec::new(), events: Vec::new(), aux: Vec::new(), finder: &finder };

@@ -1,9 +1,10 @@
 //! Positions on the cycle of sites: footpoint parameters, their keys
 //! (site and fraction), offsets along the cycle, distances and lengths.
 
-use super::{Builder, NUDGE};
+use super::Builder;
 use crate::kernel::apollonius::Site;
 use crate::kernel::construct::unwrap_near;
+use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{AxisKernel, Point};
 use crate::plane::axis::Primitive;
 use crate::shape::Element;
@@ -29,7 +30,7 @@ pub(super) struct Key {
 }
 
 pub(super) fn angle(v: Point) -> f64 {
-    v.y.atan2(v.x)
+    crate::kernel::direction::angle_of(v)
 }
 
 /// Global footpoint parameter of element fraction `t`.
@@ -104,10 +105,10 @@ impl<K: AxisKernel> Builder<'_, K> {
             Site::Point(_) => r,
         };
         let mut w = self.fraction(i, u).clamp(0.0, 1.0);
-        if (u - s.u0).abs() * scale <= self.tol {
+        if (u - s.u0).abs() * scale <= self.tol.touch() {
             w = 0.0;
         }
-        if (u - s.u1).abs() * scale <= self.tol {
+        if (u - s.u1).abs() * scale <= self.tol.touch() {
             w = 1.0;
         }
         if w == 1.0 && s.joined_next {
@@ -119,9 +120,9 @@ impl<K: AxisKernel> Builder<'_, K> {
         // there is rounding of one just inside the site.
         let n = self.n();
         if w == 0.0 && !self.sites[(i + n - 1) % n].joined_next {
-            w = NUDGE;
+            w = Tolerance::nudge();
         } else if w == 1.0 && !s.joined_next {
-            w = 1.0 - NUDGE;
+            w = 1.0 - Tolerance::nudge();
         }
         Key { site: i, w }
     }
@@ -206,7 +207,7 @@ mod tests {
     #[test]
     fn keys_snap_to_site_ends_and_joined_ends_are_the_next_start() {
         with_events(&rectangle(), |b| {
-            let tol = b.tol;
+            let tol = b.tol.touch();
             // Site 0 is the bottom edge, parameters 0..4 along it.
             assert_eq!(b.key(0, 2.0, 1.0), Key { site: 0, w: 0.5 });
             assert_eq!(b.key(0, 0.5 * tol, 1.0), Key { site: 0, w: 0.0 });

@@ -2,8 +2,9 @@
 //! an edge to the one event met from both ends, or a branch point first.
 
 use super::branch::Pocket;
-use super::{BaseCaseError, Builder, EventKind, Key, LocalAxis, LocalEdge, LocalNode, SLIVER};
+use super::{BaseCaseError, Builder, EventKind, Key, LocalAxis, LocalEdge, LocalNode};
 use crate::kernel::apollonius::Site;
+use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{AxisKernel, Point};
 
 /// A footpoint of another event met walking into a pocket.
@@ -25,7 +26,7 @@ impl<K: AxisKernel> Builder<'_, K> {
         let ev = &self.events[d];
         let n = self.n();
         let len = if a == b { 2.0 * n as f64 } else { self.offset(a, b) };
-        let eps = 1e-12;
+        let eps = Tolerance::cycle_position();
         let mut content = 0.0;
         // Site i occupies [2i, 2i + 1] on the cycle.
         let mut x = self.pos(a);
@@ -39,7 +40,7 @@ impl<K: AxisKernel> Builder<'_, K> {
             }
             x = 2.0 * block + 2.0;
         }
-        content <= SLIVER * self.tol
+        content <= self.tol.sliver_pocket()
     }
 
     /// Footpoint parameters on site `i` of the disks of events `d` and `e`,
@@ -51,8 +52,8 @@ impl<K: AxisKernel> Builder<'_, K> {
         let at = |ev: usize, w: f64| {
             let (c, r) = (self.events[ev].center, self.events[ev].radius);
             let degenerate = match self.sites[i].site {
-                Site::Point(q) => c.dist(q) <= self.tol,
-                Site::Circle { o, .. } => c.dist(o) <= self.tol,
+                Site::Point(q) => c.dist(q) <= self.tol.touch(),
+                Site::Circle { o, .. } => c.dist(o) <= self.tol.touch(),
                 Site::Line { .. } => false,
             };
             if degenerate || r == 0.0 {

@@ -23,7 +23,9 @@
 //! The thesis finds the disks with a plane sweep (Lemma 3); here each is
 //! one growing-disk query on the shared element index.
 
+use crate::kernel::direction::{heading, turn, Heading};
 use crate::kernel::fan::cw_angle;
+use crate::kernel::Orientation;
 use crate::kernel::{AxisKernel, Point};
 use crate::plane::medial::decompose::subshape::{BoundaryPos, Cut, Piece, Subshape};
 use crate::plane::medial::disk::maximal::{DiskFinder, MaxDisk};
@@ -199,12 +201,13 @@ fn lowest_point(shape: &Shape2d, hole: usize, down: Point) -> (BoundaryPos, Poin
     // points down) grows its disk downwards. A region hole's lowest point
     // always faces down.
     let curve = lp.kind() == crate::shape::LoopKind::Curve;
-    let faces_down = |e: &Element| !curve || e.left_normal_at(e.point_at(0.5)).dot(down) > 0.0;
+    let faces_down = |e: &Element| !curve || heading(e.left_normal_at(e.point_at(0.5)), down) == Heading::Forward;
     for (k, e) in lp.elements().enumerate() {
         let pos = |t: f64| BoundaryPos { loop_index: hole, element: k, t };
         let joint = shape.joint(hole, k);
         let vertex_faces_down = joint == crate::shape::JointKind::Reflex
-            || (joint == crate::shape::JointKind::Smooth && e.left_normal_at(e.start()).dot(down) > 0.0);
+            || (joint == crate::shape::JointKind::Smooth
+                && heading(e.left_normal_at(e.start()), down) == Heading::Forward);
         if !curve || vertex_faces_down {
             offer(depth(e.start()), false, pos(0.0));
         }
@@ -234,7 +237,7 @@ fn lowest_point(shape: &Shape2d, hole: usize, down: Point) -> (BoundaryPos, Poin
 /// element's normal to the outgoing one's, so a direction clockwise of
 /// another comes later.
 fn fan_before(a: Point, b: Point) -> bool {
-    a.cross(b) < 0.0
+    turn(a, b) == Orientation::Right
 }
 
 /// Builds the one boundary cycle from the disks (Figure 2.17).

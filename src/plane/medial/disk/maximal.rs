@@ -11,7 +11,10 @@
 //! the whole shape (Observation 4), so the divide step can ask this one
 //! index for every subshape.
 
+use crate::kernel::direction::{heading, turn, Heading};
 use crate::kernel::growing_disk::GrowingDisk;
+use crate::kernel::tolerance::Tolerance;
+use crate::kernel::Orientation;
 use crate::kernel::{AxisKernel, Contact, FilteredKernel, Point};
 use crate::shape::{ChainTree, Element, ElementIndex, ElementRef, JointKind, LoopKind, Shape2d};
 
@@ -174,9 +177,9 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
                     let d = c - v;
                     let outside = if other == vertex {
                         // `f` ends its element; the neighbour starts at `v`.
-                        lp.element(other).start_tangent().perp().cross(d) < 0.0
+                        turn(lp.element(other).start_tangent().perp(), d) == Orientation::Right
                     } else {
-                        lp.element(other).end_tangent().perp().cross(d) > 0.0
+                        turn(lp.element(other).end_tangent().perp(), d) == Orientation::Left
                     };
                     return !(neighbour_touches && outside);
                 }
@@ -208,7 +211,7 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
         } else if q.dist(e.end()) <= tol {
             (er.element + 1) % n
         } else {
-            return (c - q).dot(e.left_normal_at(q)) > 0.0;
+            return heading(c - q, e.left_normal_at(q)) == Heading::Forward;
         };
         let m = c - lp.vertices()[v].p;
         match self.shape.joint(er.loop_index, v) {
@@ -217,7 +220,7 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
                 let t_out = lp.element(v).start_tangent();
                 m.dot(t_in) >= -tol && m.dot(t_out) <= tol
             }
-            JointKind::Smooth => m.dot(e.left_normal_at(q)) > 0.0,
+            JointKind::Smooth => heading(m, e.left_normal_at(q)) == Heading::Forward,
             JointKind::Convex => false,
         }
     }
@@ -279,13 +282,13 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
         // seen through a neighbour sharing it; a genuine contact is at least
         // half the distance to another element, which validation keeps
         // above the tolerance.
-        let t_min = 0.25 * tol;
+        let t_min = Tolerance::new(tol).least_growth();
         // Grown along the element's own normal, the disk meets its own arc
         // again only as the arc's circle; grown along another direction of a
         // reflex vertex's fan (an augmenting disk at a curve site's end, where
         // the fan is half a turn), the arc is any other element.
         let own_element = lp.element(at.element);
-        let along_normal = own_element.left_normal_at(p).dot(n) > 1.0 - 1e-12;
+        let along_normal = own_element.left_normal_at(p).dot(n) > 1.0 - Tolerance::same_direction();
         // The first contact of each element, as a key for the tree search.
         let contact = |gid: usize| {
             let (_, e) = self.element(gid);
@@ -352,7 +355,7 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
 /// its supporting circle.
 fn own_contact(g: &GrowingDisk, e: &Element) -> Option<f64> {
     match e {
-        Element::Arc(a) if g.n.dot(a.center - g.p) > 0.0 => Some(a.radius),
+        Element::Arc(a) if heading(g.n, a.center - g.p) == Heading::Forward => Some(a.radius),
         _ => None,
     }
 }
@@ -374,7 +377,7 @@ fn neighbour_touch(
 ) -> Option<f64> {
     let mut best = touches(k, g, e, t_min).filter(|&(_, q)| q.dist(g.p) > tol).map(|(t, _)| t).fold(None, min_some);
     if let (true, Element::Arc(a)) = (smooth, e) {
-        if g.n.dot(a.center - g.p) > 0.0 {
+        if heading(g.n, a.center - g.p) == Heading::Forward {
             best = min_some(best, a.radius);
         }
     }
@@ -428,5 +431,8 @@ fn touches(k: &impl AxisKernel, g: &GrowingDisk, e: &Element, t_min: f64) -> imp
 /// needle thinner than the tolerance, past the needle's other side, which
 /// is the real contact.
 fn seen_from_inside(e: &Element, q: Point, c: Point, r: f64, tol: f64) -> bool {
-    r <= tol || q.dist(e.start()) <= tol || q.dist(e.end()) <= tol || (c - q).dot(e.left_normal_at(q)) > 0.0
+    r <= tol
+        || q.dist(e.start()) <= tol
+        || q.dist(e.end()) <= tol
+        || heading(c - q, e.left_normal_at(q)) == Heading::Forward
 }

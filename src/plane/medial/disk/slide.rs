@@ -20,6 +20,8 @@
 
 use crate::kernel::apollonius::Site;
 use crate::kernel::construct::unwrap_near;
+use crate::kernel::direction::angle_of;
+use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{AxisKernel, Contact, Point};
 use crate::plane::axis::Primitive;
 use crate::plane::medial::disk::maximal::{DiskFinder, Footpoint};
@@ -53,14 +55,8 @@ pub fn site_of<K: AxisKernel>(finder: &DiskFinder<K>, f: &Footpoint) -> Site {
 fn param_on(a: &Site, c: Point, touch: Point) -> f64 {
     match *a {
         Site::Line { a, n } => (touch - a).dot(-n.perp()),
-        Site::Point(q) => {
-            let d = c - q;
-            d.y.atan2(d.x)
-        }
-        Site::Circle { o, .. } => {
-            let d = touch - o;
-            d.y.atan2(d.x)
-        }
+        Site::Point(q) => angle_of(c - q),
+        Site::Circle { o, .. } => angle_of(touch - o),
     }
 }
 
@@ -82,7 +78,7 @@ pub fn slide_to_third<K: AxisKernel>(
     let k = finder.kernel();
     let (sa, sb) = (site_of(finder, fa), site_of(finder, fb));
     let u0 = param_on(&sa, c, fa.point);
-    let empty_tol = 1e-12 * finder.shape().bbox().diagonal();
+    let empty_tol = Tolerance::slide_emptiness(finder.shape().bbox().diagonal());
     let shape = finder.shape();
     let element = |f: &Footpoint| shape.loops()[f.element.loop_index].element(f.element.element);
     let (ea, eb) = (element(fa), element(fb));
@@ -97,8 +93,8 @@ pub fn slide_to_third<K: AxisKernel>(
     };
     // The direction that moves the centre away from the junction.
     let h0 = match sa {
-        Site::Line { .. } => 1e-3 * r.max(empty_tol),
-        _ => 1e-3,
+        Site::Line { .. } => Tolerance::slide_probe() * r.max(empty_tol),
+        _ => Tolerance::slide_probe(),
     };
     let away = |u: f64| empty(u).map(|(cc, _, _)| cc.dist(junction));
     let dir = match (away(u0 + h0), away(u0 - h0)) {
@@ -125,7 +121,7 @@ pub fn slide_to_third<K: AxisKernel>(
         let u = lo + dir * h;
         let (cc, rr, ok) = empty(u)?;
         let moved = cc.dist(prev_c);
-        if moved > 0.2 * prev_r && h > 1e-15 {
+        if moved > 0.2 * prev_r && h > Tolerance::least_step() {
             h *= 0.5;
             continue;
         }
@@ -191,12 +187,13 @@ fn jump_to_third<K: AxisKernel>(
     let angular = !matches!(sa, Site::Line { .. });
     let wrap = |turns: bool, d: f64| if turns { unwrap_near(d, 0.0) } else { d };
     let ahead = |u: f64| wrap(angular, (u - u0) * dir);
-    let min_ahead = if angular { 1e-12 } else { tol };
+    let min_ahead = if angular { Tolerance::least_turn() } else { tol };
     // A disk (c, r) counts if it lies on this branch of the bisector.
     let on_branch = |c: Point, r: f64| -> Option<f64> {
         let u = param_on(sa, c, sa.contact(c, r));
         let (cb, rb) = k.bisector_point(sa, sb, u)?;
-        (cb.dist(c) <= 16.0 * tol && (rb - r).abs() <= 16.0 * tol).then_some(u)
+        let near = Tolerance::new(tol).slide_match();
+        (cb.dist(c) <= near && (rb - r).abs() <= near).then_some(u)
     };
     // Keeps the disk (c, r) in `best` if it comes first, before `bound`
     // (`best.0` is how far ahead it lies; infinite while there is none).
@@ -215,7 +212,7 @@ fn jump_to_third<K: AxisKernel>(
     // (a maximal disk grown at a reflex vertex touches at the end of its
     // fan) ends the slide where it starts: the defining pair changes there.
     let scale = if angular { 1.0 } else { r0 };
-    let (c1, r1) = k.bisector_point(sa, sb, u0 + dir * 1e-6 * scale)?;
+    let (c1, r1) = k.bisector_point(sa, sb, u0 + dir * Tolerance::slide_direction_step() * scale)?;
     let mut best = (f64::INFINITY, Point::default(), 0.0);
     for &(f, s, other) in [(fa, sa, sb), (fb, sb, sa)].iter() {
         let turns = !matches!(s, Site::Line { .. });
@@ -227,7 +224,7 @@ fn jump_to_third<K: AxisKernel>(
         }
         let mut open = false;
         for &u in contact_range(finder, f, s).iter() {
-            if wrap(turns, u - here) * forward <= if turns { 1e-12 } else { tol } {
+            if wrap(turns, u - here) * forward <= if turns { Tolerance::least_turn() } else { tol } {
                 continue;
             }
             open = true;
@@ -278,16 +275,13 @@ fn contact_range<K: AxisKernel>(finder: &DiskFinder<K>, f: &Footpoint, s: &Site)
     let e = lp.element(f.element.element);
     match *s {
         Site::Line { a, n } => [e.start(), e.end()].map(|q| (q - a).dot(-n.perp())),
-        Site::Circle { o, .. } => [e.start(), e.end()].map(|q| {
-            let d = q - o;
-            d.y.atan2(d.x)
-        }),
+        Site::Circle { o, .. } => [e.start(), e.end()].map(|q| angle_of(q - o)),
         Site::Point(q) => {
             let n = lp.len();
             // The vertex is the start or the end of the footpoint's element.
             let v = if q.dist(e.start()) <= q.dist(e.end()) { f.element.element } else { (f.element.element + 1) % n };
             let (before, after) = (lp.element((v + n - 1) % n), lp.element(v));
-            [before.end_tangent().perp(), after.start_tangent().perp()].map(|d| d.y.atan2(d.x))
+            [before.end_tangent().perp(), after.start_tangent().perp()].map(angle_of)
         }
     }
 }

@@ -1,0 +1,93 @@
+//! Questions about directions (normals, tangents, vectors from a centre)
+//! that the algorithms used to answer with a sign test of their own: on
+//! which side of a normal a vector points, which way one direction turns
+//! from another, and the angles that order directions round a fan.
+//!
+//! The directions asked about are themselves rounded constructions
+//! (normals of elements, vectors between constructed points), so these
+//! are `f64` evaluations: an exact sign of rounded inputs would not be
+//! more right. They live here so that an exact kernel has one place to
+//! change them, and so that `src/plane` holds no sign test of its own
+//! (`tests/architecture.rs` checks it).
+
+use super::{Orientation, Point};
+
+/// Where a vector points relative to a direction `n`: the sign of `n · v`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Heading {
+    /// Into the half plane `n` points into (`n · v > 0`).
+    Forward,
+    /// Along the line perpendicular to `n` (`n · v = 0`, or not a number).
+    Sideways,
+    /// Into the other half plane (`n · v < 0`).
+    Backward,
+}
+
+/// Where `v` points relative to the direction `n` (see [`Heading`]).
+pub fn heading(n: Point, v: Point) -> Heading {
+    let d = n.dot(v);
+    if d > 0.0 {
+        Heading::Forward
+    } else if d < 0.0 {
+        Heading::Backward
+    } else {
+        Heading::Sideways
+    }
+}
+
+/// Which way direction `b` turns from direction `a`: [`Orientation::Left`]
+/// counter-clockwise (`a × b > 0`), [`Orientation::Right`] clockwise,
+/// [`Orientation::Collinear`] along or opposite it (or not a number).
+pub fn turn(a: Point, b: Point) -> Orientation {
+    let c = a.cross(b);
+    if c > 0.0 {
+        Orientation::Left
+    } else if c < 0.0 {
+        Orientation::Right
+    } else {
+        Orientation::Collinear
+    }
+}
+
+/// The angle of direction `v` from the positive x axis, radians in
+/// (−π, π] (0 for the zero vector).
+pub fn angle_of(v: Point) -> f64 {
+    v.y.atan2(v.x)
+}
+
+/// The signed angle from direction `a` to direction `b`, radians in
+/// (−π, π]: positive counter-clockwise.
+pub fn signed_angle(a: Point, b: Point) -> f64 {
+    a.cross(b).atan2(a.dot(b))
+}
+
+/// The counter-clockwise angle from direction `a` to direction `b`,
+/// radians in [0, 2π).
+pub fn ccw_angle(a: Point, b: Point) -> f64 {
+    signed_angle(a, b).rem_euclid(std::f64::consts::TAU)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn headings_and_turns_read_the_signs() {
+        let (e, n) = (Point::new(1.0, 0.0), Point::new(0.0, 1.0));
+        assert_eq!(heading(e, Point::new(2.0, 5.0)), Heading::Forward);
+        assert_eq!(heading(e, Point::new(0.0, 5.0)), Heading::Sideways);
+        assert_eq!(heading(e, Point::new(-1.0, 5.0)), Heading::Backward);
+        assert_eq!(turn(e, n), Orientation::Left);
+        assert_eq!(turn(n, e), Orientation::Right);
+        assert_eq!(turn(e, Point::new(-3.0, 0.0)), Orientation::Collinear);
+    }
+
+    #[test]
+    fn angles() {
+        let q = std::f64::consts::FRAC_PI_2;
+        assert_eq!(angle_of(Point::new(0.0, 2.0)), q);
+        assert_eq!(signed_angle(Point::new(0.0, 1.0), Point::new(1.0, 0.0)), -q);
+        assert_eq!(ccw_angle(Point::new(0.0, 1.0), Point::new(1.0, 0.0)), 3.0 * q);
+        assert_eq!(ccw_angle(Point::new(1.0, 0.0), Point::new(1.0, 0.0)), 0.0);
+    }
+}
