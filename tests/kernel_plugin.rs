@@ -7,7 +7,7 @@ mod common;
 use common::{circle, shape, star, v};
 use medax::kernel::apollonius::Site;
 use medax::kernel::growing_disk::GrowingDisk;
-use medax::kernel::{AxisKernel, CircleSide, Contact, FilteredKernel, Kernel, Orientation, Point};
+use medax::kernel::{AxisKernel, CircleSide, Contact, Disk, FilteredKernel, Kernel, Orientation, Point};
 use medax::plane::{medial_axis, medial_axis_with, AxisOptions, MedialAxis2d, NodeKind};
 use medax::shape::Shape2d;
 use std::sync::atomic::{AtomicUsize, Ordering::Relaxed};
@@ -64,16 +64,16 @@ impl AxisKernel for Counting {
         FilteredKernel.tangent_to_circle(g, o, r)
     }
 
-    fn tritangent_disks(&self, sites: [Site; 3]) -> Vec<(Point, f64)> {
+    fn tritangent_disks(&self, sites: [Site; 3]) -> Vec<Disk> {
         self.calls.apollonius.fetch_add(1, Relaxed);
         if self.no_apollonius {
             return Vec::new();
         }
         let shift = Point::new(self.shift, 0.0);
-        FilteredKernel.tritangent_disks(sites).into_iter().map(|(c, r)| (c + shift, r)).collect()
+        FilteredKernel.tritangent_disks(sites).into_iter().map(|d| Disk::new(d.center + shift, d.radius)).collect()
     }
 
-    fn bisector_point(&self, a: &Site, b: &Site, u: f64) -> Option<(Point, f64)> {
+    fn bisector_point(&self, a: &Site, b: &Site, u: f64) -> Option<Disk> {
         self.calls.bisector.fetch_add(1, Relaxed);
         FilteredKernel.bisector_point(a, b, u)
     }

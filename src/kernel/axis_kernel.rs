@@ -33,7 +33,7 @@
 use super::apollonius::{self, Site};
 use super::bisector;
 use super::growing_disk::GrowingDisk;
-use super::{construct, Kernel, Orientation, Point};
+use super::{construct, Disk, Kernel, Orientation, Point};
 
 /// How a disk meets a boundary primitive, decided with a length tolerance.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -78,23 +78,23 @@ pub trait AxisKernel: Kernel + Copy + Send + Sync + 'static {
 
     /// Every disk (centre, radius > 0) tangent to the three sites as their
     /// kinds say, smallest radius first (thesis 2.2.3, branching points).
-    fn tritangent_disks(&self, sites: [Site; 3]) -> Vec<(Point, f64)> {
-        apollonius::tangent_disks(sites)
+    fn tritangent_disks(&self, sites: [Site; 3]) -> Vec<Disk> {
+        apollonius::tangent_disks(sites).into_iter().map(|(c, r)| Disk::new(c, r)).collect()
     }
 
     /// The disk tangent to `a` at footpoint parameter `u` and to `b`.
-    fn bisector_point(&self, a: &Site, b: &Site, u: f64) -> Option<(Point, f64)> {
-        bisector::bisector_point(a, b, u)
+    fn bisector_point(&self, a: &Site, b: &Site, u: f64) -> Option<Disk> {
+        bisector::bisector_point(a, b, u).map(|(c, r)| Disk::new(c, r))
     }
 
     /// The circle through three points (centre, radius), `None` when they
     /// are collinear: decided by [`Kernel::orientation`] first, then by the
     /// construction's own guard against a centre lost to rounding.
-    fn circumcircle(&self, a: Point, b: Point, c: Point) -> Option<(Point, f64)> {
+    fn circumcircle(&self, a: Point, b: Point, c: Point) -> Option<Disk> {
         if self.orientation(a, b, c) == Orientation::Collinear {
             return None;
         }
-        construct::circumcircle(a, b, c)
+        construct::circumcircle(a, b, c).map(|(o, r)| Disk::new(o, r))
     }
 
     /// How the circle of radius `radius` around a centre meets a primitive

@@ -26,6 +26,7 @@ mod bbox;
 pub mod bisector;
 pub mod construct;
 pub mod direction;
+mod disk;
 mod exact;
 pub mod fan;
 pub mod growing_disk;
@@ -34,6 +35,7 @@ pub mod tolerance;
 
 pub use axis_kernel::{AxisKernel, Contact};
 pub use bbox::BBox;
+pub use disk::Disk;
 pub use point::Point;
 
 /// Where a point lies relative to a directed line.

@@ -3,6 +3,7 @@
 
 use super::{Builder, Key};
 use crate::kernel::tolerance::Tolerance;
+use crate::kernel::Disk;
 use crate::kernel::{AxisKernel, Contact, Point};
 
 /// A branch point found in a pocket: its disk, its three contacts as
@@ -73,7 +74,9 @@ impl<K: AxisKernel> Builder<'_, K> {
             if whole && (o_end + 1.0 < x1 - cap || o_start > y2 + cap) {
                 continue;
             }
-            for (c, r) in self.k().tritangent_disks([self.sites[s1].site, self.sites[s2].site, self.sites[t].site]) {
+            for Disk { center: c, radius: r } in
+                self.k().tritangent_disks([self.sites[s1].site, self.sites[s2].site, self.sites[t].site])
+            {
                 if r <= self.tol.touch() || !c.is_finite() || is_own(c, r) {
                     continue;
                 }

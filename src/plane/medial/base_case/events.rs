@@ -7,6 +7,7 @@ use crate::kernel::apollonius::Site;
 use crate::kernel::direction::{heading, Heading};
 use crate::kernel::growing_disk::GrowingDisk;
 use crate::kernel::tolerance::Tolerance;
+use crate::kernel::Disk;
 use crate::kernel::{AxisKernel, Contact, Point};
 use crate::plane::axis::Primitive;
 use crate::plane::medial::decompose::subshape::Cut;
@@ -167,7 +168,7 @@ impl<K: AxisKernel> Builder<'_, K> {
     /// previous site), tangent with normal `nrm`; `own` are the sites whose
     /// supporting curve is tangent there (skipped, but an arc among them
     /// curving inwards caps the radius at its own).
-    pub(super) fn grow(&self, p: Point, nrm: Point, own: &[usize]) -> Option<(Point, f64)> {
+    pub(super) fn grow(&self, p: Point, nrm: Point, own: &[usize]) -> Option<Disk> {
         let g = GrowingDisk { p, n: nrm };
         let t_min = self.tol.least_growth();
         let mut best = f64::INFINITY;
@@ -216,7 +217,7 @@ impl<K: AxisKernel> Builder<'_, K> {
                 best = best.min(arc.r);
             }
         }
-        best.is_finite().then(|| (g.center(best), best))
+        best.is_finite().then(|| Disk::new(g.center(best), best))
     }
 
     pub(super) fn collect_events(&mut self, cuts: &[Cut]) -> Result<(), BaseCaseError> {
@@ -257,7 +258,7 @@ impl<K: AxisKernel> Builder<'_, K> {
                     }
                     let Site::Point(q) = b.site else { continue };
                     let nrm = Point::new(b.u0.cos(), b.u0.sin());
-                    let (c, r) = self.grow(q, nrm, &[i, j]).ok_or(BaseCaseError::NoDisk(q))?;
+                    let (c, r) = self.grow(q, nrm, &[i, j]).ok_or(BaseCaseError::NoDisk(q))?.parts();
                     let (mut feet, whole) = self.touching(c, r);
                     feet.push(key);
                     self.add_event(c, r, EventKind::Joint, feet, whole);
@@ -275,7 +276,7 @@ impl<K: AxisKernel> Builder<'_, K> {
                 // is found twice alike.
                 nrm = (elements.element(ea.element).end_tangent().perp() + nrm).unit();
             }
-            let (c, r) = self.grow(p, nrm, &[i, j]).ok_or(BaseCaseError::NoDisk(p))?;
+            let (c, r) = self.grow(p, nrm, &[i, j]).ok_or(BaseCaseError::NoDisk(p))?.parts();
             let (mut feet, whole) = self.touching(c, r);
             feet.push(key);
             self.add_event(c, r, EventKind::Joint, feet, whole);
@@ -285,7 +286,7 @@ impl<K: AxisKernel> Builder<'_, K> {
             let Site::Circle { o, r, outside: false } = self.sites[i].site else { continue };
             let um = 0.5 * (self.sites[i].u0 + self.sites[i].u1);
             let (p, nrm) = crate::kernel::bisector::footpoint(&self.sites[i].site, um);
-            if let Some((_, t)) = self.grow(p, nrm, &[i]) {
+            if let Some(Disk { radius: t, .. }) = self.grow(p, nrm, &[i]) {
                 if (t - r).abs() <= self.tol.touch() && !self.leaves_subshape(o, r) {
                     let (feet, whole) = self.touching(o, r);
                     self.add_event(o, r, EventKind::Leaf, feet, whole);

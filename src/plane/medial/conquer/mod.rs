@@ -7,6 +7,7 @@
 //! elements, is no node of the true axis: its two edges lie on one conic
 //! and are merged back into one.
 
+use crate::kernel::Disk;
 use crate::kernel::{AxisKernel, Contact, FilteredKernel, Point};
 use crate::plane::axis::{edge_kind, AxisEdge, AxisNode, MedialAxis2d, NodeKind, Primitive};
 use crate::plane::medial::base_case::{self, BaseCaseError, EventKind, LocalAxis};
@@ -633,7 +634,7 @@ fn polish_branches(kernel: &impl AxisKernel, shape: &Shape2d, axis: &mut MedialA
         for i in 0..sites.len() {
             for j in i + 1..sites.len() {
                 for k in j + 1..sites.len() {
-                    for (c, r) in kernel.tritangent_disks([sites[i], sites[j], sites[k]]) {
+                    for Disk { center: c, radius: r } in kernel.tritangent_disks([sites[i], sites[j], sites[k]]) {
                         let m = misfit(c, r);
                         if near(c, r) && best.is_none_or(|b| m < b.0) {
                             best = Some((m, c, r));

@@ -20,6 +20,7 @@
 //! in 140 leaves on smooth biarc shapes and 1 in 80 on random star
 //! polygons).
 
+use crate::kernel::Disk;
 use crate::kernel::{AxisKernel, Contact, Point};
 use crate::plane::medial::decompose::augment::Augmentation;
 #[cfg(any(test, feature = "internals"))]
@@ -247,7 +248,7 @@ fn cluster_cut<K: AxisKernel>(
             if k == i || k == (i + 1) % pts.len() {
                 continue;
             }
-            let Some((c, rad)) = kernel.circumcircle(p, q, r) else { continue };
+            let Some(Disk { center: c, radius: rad }) = kernel.circumcircle(p, q, r) else { continue };
             if pts.iter().any(|&x| kernel.contact(x.dist(c), rad, tol) == Contact::Overlapping) {
                 continue;
             }

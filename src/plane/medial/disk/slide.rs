@@ -22,6 +22,7 @@ use crate::kernel::apollonius::Site;
 use crate::kernel::construct::unwrap_near;
 use crate::kernel::direction::angle_of;
 use crate::kernel::tolerance::Tolerance;
+use crate::kernel::Disk;
 use crate::kernel::{AxisKernel, Contact, Point};
 use crate::plane::axis::Primitive;
 use crate::plane::medial::disk::maximal::{DiskFinder, Footpoint};
@@ -86,7 +87,7 @@ pub fn slide_to_third<K: AxisKernel>(
     // A disk counts while it is empty and still touches both elements
     // (not only their supporting lines or circles).
     let empty = |u: f64| -> Option<(Point, f64, bool)> {
-        let (c, r) = k.bisector_point(&sa, &sb, u)?;
+        let (c, r) = k.bisector_point(&sa, &sb, u)?.parts();
         let (_, d) = finder.nearest(c)?;
         let touches = on(&ea, sa.contact(c, r)) && on(&eb, sb.contact(c, r));
         Some((c, r, k.contact(d, r, empty_tol) != Contact::Overlapping && touches))
@@ -135,7 +136,7 @@ pub fn slide_to_third<K: AxisKernel>(
                     _ => hi = mid,
                 }
             }
-            return k.bisector_point(&sa, &sb, lo);
+            return k.bisector_point(&sa, &sb, lo).map(Disk::parts);
         }
         lo = u;
         (prev_c, prev_r) = (cc, rr);
@@ -191,7 +192,7 @@ fn jump_to_third<K: AxisKernel>(
     // A disk (c, r) counts if it lies on this branch of the bisector.
     let on_branch = |c: Point, r: f64| -> Option<f64> {
         let u = param_on(sa, c, sa.contact(c, r));
-        let (cb, rb) = k.bisector_point(sa, sb, u)?;
+        let (cb, rb) = k.bisector_point(sa, sb, u)?.parts();
         let near = Tolerance::new(tol).slide_match();
         (cb.dist(c) <= near && (rb - r).abs() <= near).then_some(u)
     };
@@ -212,7 +213,7 @@ fn jump_to_third<K: AxisKernel>(
     // (a maximal disk grown at a reflex vertex touches at the end of its
     // fan) ends the slide where it starts: the defining pair changes there.
     let scale = if angular { 1.0 } else { r0 };
-    let (c1, r1) = k.bisector_point(sa, sb, u0 + dir * Tolerance::slide_direction_step() * scale)?;
+    let (c1, r1) = k.bisector_point(sa, sb, u0 + dir * Tolerance::slide_direction_step() * scale)?.parts();
     let mut best = (f64::INFINITY, Point::default(), 0.0);
     for &(f, s, other) in [(fa, sa, sb), (fb, sb, sa)].iter() {
         let turns = !matches!(s, Site::Line { .. });
@@ -228,7 +229,7 @@ fn jump_to_third<K: AxisKernel>(
                 continue;
             }
             open = true;
-            if let Some((c, r)) = k.bisector_point(s, other, u) {
+            if let Some(Disk { center: c, radius: r }) = k.bisector_point(s, other, u) {
                 offer(&mut best, c, r, f64::INFINITY);
             }
         }
@@ -253,7 +254,7 @@ fn jump_to_third<K: AxisKernel>(
         for s3 in [interior, Site::Point(e.start()), Site::Point(e.end())].iter() {
             let point = matches!(s3, Site::Point(_));
             let solutions = k.tritangent_disks([*sa, *sb, *s3]);
-            for &(c3, r3) in solutions.iter() {
+            for &Disk { center: c3, radius: r3 } in solutions.iter() {
                 if point || on(&e, s3.contact(c3, r3)) {
                     moved |= offer(&mut best, c3, r3, bound);
                 }
