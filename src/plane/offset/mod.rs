@@ -54,7 +54,7 @@ pub(crate) mod layer;
 pub(crate) mod outer;
 pub(crate) mod prim;
 pub(crate) mod profile;
-pub(crate) mod tour;
+pub(crate) mod side_cycle;
 pub(crate) mod trim;
 
 pub use layer::{OffsetError, OffsetLayer, OffsetLoop, OffsetRegion};

@@ -1,6 +1,6 @@
 //! The trimming walk of thesis 2.4.3 for one axis.
 //!
-//! A state is one side of one monotonic piece of an edge. Walking the tour,
+//! A state is one side of one monotonic piece of an edge. Walking the side cycle,
 //! a side whose radius stays above ρ contributes its whole offset; a side
 //! whose radius falls to ρ contributes its offset up to the disk of radius
 //! ρ, and the walk turns over to the other side of the same piece there
@@ -15,7 +15,7 @@ use crate::plane::axis::{own_end_pair, MedialAxis2d, Primitive};
 use crate::plane::offset::layer::{OffsetError, OffsetLayer, OffsetLoop, OffsetRegion};
 use crate::plane::offset::prim::OffsetPrim;
 use crate::plane::offset::profile::EdgeProfile;
-use crate::plane::offset::tour::Tour;
+use crate::plane::offset::side_cycle::SideCycle;
 use crate::shape::{ElementRef, Loop, Shape2d, Vertex};
 use std::collections::HashMap;
 
@@ -27,7 +27,7 @@ pub(crate) struct Trimmer {
     sub_base: Vec<u32>,
     /// (from, to) node of each edge.
     ends: Vec<[u32; 2]>,
-    tour: Result<Tour, &'static str>,
+    sides: Result<SideCycle, &'static str>,
     /// The leaf arcs' primitives and start angles, by (loop, element).
     arcs: HashMap<(u32, u32), (OffsetPrim, f64)>,
     /// A shape whose axis is one leaf (a disk): its loop, centre and radius.
@@ -103,9 +103,9 @@ impl Trimmer {
             total += (p.breaks.len() - 1) as u32;
         }
         sub_base.push(total);
-        let tour = Tour::new(shape, axis);
+        let sides = SideCycle::new(shape, axis);
         let mut arcs = HashMap::new();
-        if let Ok(t) = &tour {
+        if let Ok(t) = &sides {
             for h in 0..2 * axis.edges.len() {
                 for &(l, e) in t.gaps(h) {
                     let r = ElementRef { loop_index: l as usize, element: e as usize };
@@ -130,7 +130,7 @@ impl Trimmer {
             profiles,
             sub_base,
             ends: axis.edges.iter().map(|e| [e.from as u32, e.to as u32]).collect(),
-            tour,
+            sides,
             arcs,
             disk,
             nodes: axis.nodes.len(),
@@ -138,9 +138,9 @@ impl Trimmer {
         }
     }
 
-    /// Whether the axis's edge sides form the tour round the boundary.
+    /// Whether the axis's edge sides form the side cycle round the boundary.
     pub(crate) fn check(&self) -> Result<(), &'static str> {
-        self.tour.as_ref().map(|_| ()).map_err(|e| *e)
+        self.sides.as_ref().map(|_| ()).map_err(|e| *e)
     }
 
     /// The radius of the largest inscribed disk, model units.
@@ -213,7 +213,7 @@ impl Trimmer {
     /// and the union–find over the axis in the band.
     pub(crate) fn band_loops(&self, lo: f64, hi: f64) -> Result<(Vec<(BandLoop, usize)>, UnionFind), OffsetError> {
         let topology = |what| OffsetError::Topology { distance: lo, what };
-        let tour = self.tour.as_ref().map_err(|w| topology(w))?;
+        let sides = self.sides.as_ref().map_err(|w| topology(w))?;
         let total = *self.sub_base.last().unwrap_or(&0) as usize;
         let mut uf = UnionFind::new(self.nodes + 2 * total - self.profiles.len());
         for (e, p) in self.profiles.iter().enumerate() {
@@ -240,7 +240,7 @@ impl Trimmer {
                     if visited[2 * (self.sub_base[e] as usize + j) + k] {
                         continue;
                     }
-                    let pieces = self.walk(tour, (e, j, k), (lo, hi), &mut visited).map_err(topology)?;
+                    let pieces = self.walk(sides, (e, j, k), (lo, hi), &mut visited).map_err(topology)?;
                     let component = uf.find(self.piece_id(e, j));
                     out.push((BandLoop { pieces, component }, self.sub_base[e] as usize + j));
                 }
@@ -253,7 +253,7 @@ impl Trimmer {
     /// piece, side).
     fn walk(
         &self,
-        tour: &Tour,
+        sides: &SideCycle,
         start: (usize, usize, usize),
         (lo, hi): (f64, f64),
         visited: &mut [bool],
@@ -308,11 +308,11 @@ impl Trimmer {
                     j -= 1;
                 } else {
                     let h = 2 * e + k;
-                    for gap in tour.gaps(h) {
+                    for gap in sides.gaps(h) {
                         let (arc, u) = self.arcs[gap];
                         out.push(BandPiece::Run(Run { prim: arc, start: arc.point_at(u, lo), advance: arc.bound }));
                     }
-                    let hn = tour.next[h] as usize;
+                    let hn = sides.next[h] as usize;
                     (e, k) = (hn / 2, hn % 2);
                     j = if k == 1 { 0 } else { self.pieces(e) - 1 };
                 }

@@ -1,4 +1,4 @@
-//! The boundary's order of the axis edge sides: the tour round the axis
+//! The boundary's order of the axis edge sides: the side cycle round the axis
 //! that the offset walks (thesis 2.4.2, Figure 2.21 (b), (c)).
 //!
 //! Half-edge `2e + k` is side `k` of edge `e`, walked the way its
@@ -15,7 +15,7 @@ use crate::shape::{Element, Shape2d};
 
 /// The successor of every half-edge and the leaf arcs passed on the way.
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) struct Tour {
+pub(crate) struct SideCycle {
     /// Successor of each half-edge.
     pub next: Vec<u32>,
     /// For half-edge h, `gaps[gap_start[h]..gap_start[h + 1]]` are the
@@ -53,9 +53,9 @@ fn place(p: Primitive) -> (usize, usize) {
     }
 }
 
-impl Tour {
+impl SideCycle {
     /// The tour of `axis`, the medial axis of `shape`.
-    pub fn new(shape: &Shape2d, axis: &MedialAxis2d) -> Result<Tour, &'static str> {
+    pub fn new(shape: &Shape2d, axis: &MedialAxis2d) -> Result<SideCycle, &'static str> {
         let halves = 2 * axis.edges.len();
         let mut leaving: Vec<Vec<u32>> = vec![Vec::new(); axis.nodes.len()];
         for h in 0..halves {
@@ -98,7 +98,7 @@ impl Tour {
             }
         }
         gap_start.push(gaps.len() as u32);
-        Ok(Tour { next, gap_start, gaps })
+        Ok(SideCycle { next, gap_start, gaps })
     }
 
     /// The leaf arcs between half-edge `h` and its successor.
