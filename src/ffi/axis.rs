@@ -2,7 +2,7 @@
 //! free. Mirrors `crate::plane` (`medial_axis`, `MedialAxis2d`); no geometry
 //! is computed here.
 
-use super::boundary::{check_out, guard, nth, run_with_progress, write_out};
+use super::boundary::{check_out, fill, guard, nth, run_with_progress, write_out};
 use super::handles::{arg, compute, free, impl_options, options_default, query, Boxed, Handle};
 use super::last_error::FfiError;
 use super::shape2d::mx_shape2d;
@@ -336,21 +336,13 @@ pub unsafe extern "C" fn mx_axis_edge_sample(
         let samples = e.sample(&a.shape, &a.axis.nodes, tolerance);
         let need = 3 * samples.len();
         if capacity != 0 {
-            if capacity < need {
-                return Err(FfiError::new(
-                    mx_status::MX_ERR_BUFFER_TOO_SMALL,
-                    format!("edge {index} needs {need} doubles ({} samples), buffer holds {capacity}", samples.len()),
-                ));
-            }
-            check_out(xyr, "xyr")?;
-            for (i, (c, r)) in samples.iter().enumerate() {
-                // SAFETY: 3i + 2 < need <= capacity, and `xyr` holds `capacity` doubles.
-                unsafe {
-                    *xyr.add(3 * i) = c.x;
-                    *xyr.add(3 * i + 1) = c.y;
-                    *xyr.add(3 * i + 2) = *r;
-                }
-            }
+            let xyr_of = samples.iter().flat_map(|(c, r)| [c.x, c.y, *r]);
+            // SAFETY: caller contract: `xyr` NULL or `capacity` writable doubles.
+            unsafe {
+                fill(xyr, "xyr", capacity, need, xyr_of, || {
+                    format!("edge {index} needs {need} doubles ({} samples), buffer holds {capacity}", samples.len())
+                })?
+            };
         }
         // SAFETY: checked non-NULL above.
         unsafe { write_out(count, samples.len()) };

@@ -103,6 +103,32 @@ pub(crate) fn nth<'a, T>(items: &'a [T], index: usize, what: &str) -> Result<&'a
     items.get(index).ok_or_else(|| index_error(what, index, items.len()))
 }
 
+/// Writes the `need` entries of `items` to the caller's buffer `buf`
+/// (argument `name`) of `capacity` entries, after checking that they fit
+/// (else `MX_ERR_BUFFER_TOO_SMALL` with the message `too_small`, nothing
+/// written) and that `buf` is not NULL.
+///
+/// # Safety
+/// `buf` must be NULL or valid for `capacity` writes.
+pub(crate) unsafe fn fill<T>(
+    buf: *mut T,
+    name: &str,
+    capacity: usize,
+    need: usize,
+    items: impl IntoIterator<Item = T>,
+    too_small: impl FnOnce() -> String,
+) -> Result<(), FfiError> {
+    if capacity < need {
+        return Err(FfiError::new(mx_status::MX_ERR_BUFFER_TOO_SMALL, too_small()));
+    }
+    check_out(buf, name)?;
+    for (i, v) in items.into_iter().take(need).enumerate() {
+        // SAFETY: i < need <= capacity entries, writable per the contract.
+        unsafe { buf.add(i).write(v) };
+    }
+    Ok(())
+}
+
 /// NULL for an empty array: C callers never see a dangling pointer.
 pub(crate) fn ptr_or_null<T>(v: &[T]) -> *const T {
     if v.is_empty() {

@@ -1,7 +1,7 @@
 //! C functions for 2D shapes: create, inspect, draw, free. Mirrors
 //! `crate::shape`; no geometry is computed here.
 
-use super::boundary::{c_str, check_out, guard, index_error, nth, slice, write_out};
+use super::boundary::{c_str, check_out, fill, guard, index_error, nth, slice, write_out};
 use super::handles::{arg, create, free, impl_options, options_default, query, Boxed, Handle, Options};
 use super::last_error::FfiError;
 use super::status::mx_status;
@@ -431,21 +431,13 @@ pub unsafe extern "C" fn mx_shape2d_loop_vertices(
         let s = unsafe { arg(shape)? };
         let l = loop_of(s, loop_index)?;
         let need = 3 * l.len();
-        if capacity < need {
-            return Err(FfiError::new(
-                mx_status::MX_ERR_BUFFER_TOO_SMALL,
-                format!("loop {loop_index} needs {need} doubles, buffer holds {capacity}"),
-            ));
-        }
-        check_out(xyb, "xyb")?;
-        for (i, v) in l.vertices().iter().enumerate() {
-            // SAFETY: i*3+2 < need <= capacity, and `xyb` holds `capacity` doubles.
-            unsafe {
-                *xyb.add(3 * i) = v.p.x;
-                *xyb.add(3 * i + 1) = v.p.y;
-                *xyb.add(3 * i + 2) = v.bulge;
-            }
-        }
+        let triples = l.vertices().iter().flat_map(|v| [v.p.x, v.p.y, v.bulge]);
+        // SAFETY: caller contract: `xyb` NULL or `capacity` writable doubles.
+        unsafe {
+            fill(xyb, "xyb", capacity, need, triples, || {
+                format!("loop {loop_index} needs {need} doubles, buffer holds {capacity}")
+            })?
+        };
         // SAFETY: checked non-NULL.
         unsafe { write_out(written, l.len()) };
         Ok(())

@@ -4,7 +4,7 @@
 //! (`mx_voronoi_axis`), whose node and edge indices these functions use.
 
 use super::axis::{axis_error, mx_axis, mx_progress_fn};
-use super::boundary::{check_out, deref, guard, nth, run_with_progress, slice, write_out};
+use super::boundary::{check_out, deref, fill, guard, nth, run_with_progress, slice, write_out};
 use super::handles::{arg, create, free, impl_options, lend, options_default, query, Boxed, Handle, Lends, Options};
 use super::last_error::FfiError;
 use super::shape2d::split_bulges;
@@ -462,20 +462,14 @@ pub unsafe extern "C" fn mx_voronoi_region_walk(
         let v = unsafe { arg(vd)? };
         let walk = &region_of(v, site_kind, site_index)?.boundary;
         if capacity != 0 {
-            if capacity < walk.len() {
-                return Err(FfiError::new(
-                    mx_status::MX_ERR_BUFFER_TOO_SMALL,
-                    format!("the walk has {} edges, the buffer holds {capacity}", walk.len()),
-                ));
-            }
-            check_out(edges, "edges")?;
-            for (k, &(i, fwd)) in walk.iter().enumerate() {
-                // SAFETY: k < walk.len() <= capacity entries of each buffer.
-                unsafe {
-                    *edges.add(k) = i;
-                    if !forward.is_null() {
-                        *forward.add(k) = fwd.into();
-                    }
+            let too_small = || format!("the walk has {} edges, the buffer holds {capacity}", walk.len());
+            // SAFETY: caller contract: `edges` and `forward` NULL or
+            // `capacity` writable entries; `forward` is optional, and only
+            // written once `edges` was.
+            unsafe {
+                fill(edges, "edges", capacity, walk.len(), walk.iter().map(|&(i, _)| i), too_small)?;
+                if !forward.is_null() {
+                    fill(forward, "forward", capacity, walk.len(), walk.iter().map(|&(_, f)| f.into()), too_small)?;
                 }
             }
         }
