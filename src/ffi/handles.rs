@@ -19,10 +19,12 @@
 //!    Ownership = Boxed; }` (`ARG` is the name of its argument in every
 //!    export, for the NULL message);
 //! 3. the exports, each its written-out `#[no_mangle] pub unsafe extern "C"
-//!    fn` with one generic call inside: `create(out, || Ok(mx_foo { .. }))`
-//!    or `compute(out, input, options, |input, o| ..)`, `query(foo, out,
-//!    |f| ..)`, `free(foo)`, and for a handle lent by
-//!    another, `impl Lends<mx_foo> for mx_owner` and `lend(owner, out)`.
+//!    fn` (cbindgen reads the signature and doc comment) around one generic
+//!    call: `create(out, || Ok(mx_foo { .. }))` or `compute(out, input,
+//!    options, |input, o| ..)` to make one, `query(foo, out, |f| ..)` to
+//!    read it, `free(foo)`; a handle lent by another also gets `impl
+//!    Lends<mx_foo> for mx_owner`, and the owner's export is `lend(owner,
+//!    out)`.
 //!
 //! An options struct `mx_foo_options` (`#[repr(C)]`, first field
 //! `struct_size`) gets [`Options`] from `impl_options!`, with its size in

@@ -24,6 +24,15 @@ impl Handle for mx_shape2d {
     type Ownership = Boxed;
 }
 
+// So that the queries call `Shape2d` methods straight on the handle.
+impl std::ops::Deref for mx_shape2d {
+    type Target = Shape2d;
+
+    fn deref(&self) -> &Shape2d {
+        &self.inner
+    }
+}
+
 /// Tolerances for building shapes. Initialise with `mx_shape_options_default`
 /// (which sets `struct_size`), then change fields. Lengths in model units.
 #[repr(C)]
@@ -350,14 +359,6 @@ pub unsafe extern "C" fn mx_shape2d_from_string(
 pub unsafe extern "C" fn mx_shape2d_free(shape: *mut mx_shape2d) {
     // SAFETY: forwarded contract.
     unsafe { free(shape) }
-}
-
-impl std::ops::Deref for mx_shape2d {
-    type Target = Shape2d;
-
-    fn deref(&self) -> &Shape2d {
-        &self.inner
-    }
 }
 
 fn loop_of(s: &Shape2d, l: usize) -> Result<&crate::shape::Loop, FfiError> {
