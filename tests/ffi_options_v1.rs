@@ -252,6 +252,9 @@ fn voronoi_options_of_0_1() {
     assert_eq!(calls, 2, "progress and user (the last 0.1 fields) are read");
     let short = old(VoronoiOptionsV01 { struct_size: size_of::<VoronoiOptionsV01>() - 1, ..*o });
     let mut vd2 = null_mut();
-    assert_eq!(unsafe { mx_voronoi_compute(&sites, as_current(&*short), &mut vd2) }, mx_status::MX_ERR_INVALID_ARGUMENT);
+    assert_eq!(
+        unsafe { mx_voronoi_compute(&sites, as_current(&*short), &mut vd2) },
+        mx_status::MX_ERR_INVALID_ARGUMENT
+    );
     unsafe { mx_voronoi_free(vd) };
 }
