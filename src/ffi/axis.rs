@@ -2,7 +2,8 @@
 //! free. Mirrors `crate::plane` (`medial_axis`, `MedialAxis2d`); no geometry
 //! is computed here.
 
-use super::boundary::{self, check_out, deref, guard, index_error, read_options, run_with_progress, write_out};
+use super::boundary::{check_out, fill, guard, nth, run_with_progress, write_out};
+use super::handles::{arg, compute, free, impl_options, options_default, query, Boxed, Handle};
 use super::last_error::FfiError;
 use super::shape2d::mx_shape2d;
 use super::status::mx_status;
@@ -10,28 +11,31 @@ use crate::kernel::bisector::ConicKind;
 use crate::plane::{medial_axis, AxisEdge, AxisError, AxisOptions, MedialAxis2d, NodeKind, Primitive};
 use crate::shape::Shape2d;
 use std::ffi::{c_int, c_void};
+use std::mem::size_of;
 
 /// A computed medial axis of a 2D shape: nodes (maximal disks) joined by
 /// conic edges. Opaque; create with `mx_axis_compute`, release with
 /// `mx_axis_free`. It owns a copy of the shape, so it stays valid after the
 /// shape is freed. Immutable: a `const mx_axis*` may be used from several
 /// threads at once.
-#[allow(non_camel_case_types)]
 pub struct mx_axis {
     pub(crate) shape: Shape2d,
     pub(crate) axis: MedialAxis2d,
 }
 
+impl Handle for mx_axis {
+    const ARG: &'static str = "axis";
+    type Ownership = Boxed;
+}
+
 /// Progress callback: `fraction` in [0, 1] of the work done; `user` is
 /// `mx_axis_options.user`. Return 0 to go on, nonzero to cancel. Called on
 /// the thread that called `mx_axis_compute`; it must not throw or unwind.
-#[allow(non_camel_case_types)]
 pub type mx_progress_fn = Option<unsafe extern "C" fn(fraction: f64, user: *mut c_void) -> c_int>;
 
 /// Options for `mx_axis_compute`. Initialise with `mx_axis_options_default`
 /// (which sets `struct_size`), then change fields.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy)]
 pub struct mx_axis_options {
     /// `sizeof(mx_axis_options)` as the caller was compiled; lets later
@@ -57,19 +61,14 @@ pub struct mx_axis_options {
 /// The largest accepted `mx_axis_options.threads`.
 pub const MX_AXIS_MAX_THREADS: usize = 1024;
 
-/// `AxisOptions::default()` in C form.
-fn default_options() -> mx_axis_options {
-    mx_axis_options {
-        struct_size: std::mem::size_of::<mx_axis_options>(),
-        seed: AxisOptions::default().seed,
-        threads: 0,
-        progress: None,
-        user: std::ptr::null_mut(),
-    }
-}
-
-/// Size of `mx_axis_options` in release 0.1, the smallest accepted.
-const OPTIONS_V1_SIZE: usize = std::mem::size_of::<mx_axis_options>();
+// `AxisOptions::default()` in C form.
+impl_options!(mx_axis_options, v1: 40 bytes up to user: *mut c_void, defaults: mx_axis_options {
+    struct_size: size_of::<Self>(),
+    seed: AxisOptions::default().seed,
+    threads: 0,
+    progress: None,
+    user: std::ptr::null_mut(),
+});
 
 /// Fills `out` with the default options (and its `struct_size`).
 ///
@@ -77,17 +76,12 @@ const OPTIONS_V1_SIZE: usize = std::mem::size_of::<mx_axis_options>();
 /// `out` must be NULL or point to a writable `mx_axis_options`.
 #[no_mangle]
 pub unsafe extern "C" fn mx_axis_options_default(out: *mut mx_axis_options) -> mx_status {
-    guard(|| {
-        check_out(out, "out")?;
-        // SAFETY: checked non-NULL above.
-        unsafe { write_out(out, default_options()) };
-        Ok(())
-    })
+    // SAFETY: forwarded contract.
+    unsafe { options_default(out) }
 }
 
 /// What a node of the medial axis is.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum mx_node_kind {
     /// Three or more edges meet: the disk touches three or more primitives.
@@ -103,7 +97,6 @@ pub enum mx_node_kind {
 
 /// The kind of conic an edge of the medial axis lies on.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum mx_conic_kind {
     /// A straight line.
@@ -118,7 +111,6 @@ pub enum mx_conic_kind {
 
 /// A node of the medial axis: the maximal disk centred there.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct mx_axis_node {
     /// Centre x, model units.
@@ -134,7 +126,6 @@ pub struct mx_axis_node {
 /// A boundary primitive an edge is equidistant from, in the caller's input
 /// numbering (as given to `mx_shape2d_from_*`, before any loop reversal).
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct mx_axis_site {
     /// Loop index (0 = outer boundary).
@@ -149,7 +140,6 @@ pub struct mx_axis_site {
 /// An edge of the medial axis: a piece of the conic of centres equidistant
 /// from its two sites.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct mx_axis_edge {
     /// Node index at the start.
@@ -181,14 +171,6 @@ pub(crate) fn axis_error(e: AxisError) -> FfiError {
     }
 }
 
-/// Options from C (NULL = defaults); `threads` is checked by
-/// `run_with_progress`.
-unsafe fn options(p: *const mx_axis_options) -> Result<mx_axis_options, FfiError> {
-    // SAFETY: forwarded contract; `mx_axis_options` starts with `struct_size`.
-    Ok(unsafe { read_options(p, default_options(), OPTIONS_V1_SIZE, "mx_axis_options")? }
-        .unwrap_or_else(default_options))
-}
-
 /// Computes the medial axis of `shape` (thesis Algorithm 2) and writes a new
 /// handle to `*out`. `options` may be NULL (defaults). The handle keeps its
 /// own copy of the shape. Shapes with holes give an axis with one cycle
@@ -206,20 +188,17 @@ pub unsafe extern "C" fn mx_axis_compute(
     options: *const mx_axis_options,
     out: *mut *mut mx_axis,
 ) -> mx_status {
-    guard(|| {
-        check_out(out, "out")?;
-        // SAFETY: caller contract.
-        let (s, o) = unsafe { (deref(shape, "shape")?, self::options(options)?) };
-        let opts = AxisOptions { seed: o.seed, ..AxisOptions::default() };
-        let axis = run_with_progress("mx_axis_compute", "mx_axis_options", o.threads, o.progress, o.user, || {
-            medial_axis(&s.inner, &opts).map_err(axis_error)
-        })?;
-        let h = Box::new(mx_axis { shape: s.inner.clone(), axis });
-        let h = Box::into_raw(h);
-        // SAFETY: checked non-NULL above.
-        unsafe { write_out(out, h) };
-        Ok(())
-    })
+    // SAFETY: caller contract.
+    unsafe {
+        compute(out, shape, options, |s, o| {
+            // `threads` is checked by `run_with_progress`.
+            let opts = AxisOptions { seed: o.seed, ..AxisOptions::default() };
+            let axis = run_with_progress("mx_axis_compute", "mx_axis_options", o.threads, o.progress, o.user, || {
+                medial_axis(&s.inner, &opts).map_err(axis_error)
+            })?;
+            Ok(mx_axis { shape: s.inner.clone(), axis })
+        })
+    }
 }
 
 /// Releases an axis. NULL is a no-op.
@@ -228,20 +207,12 @@ pub unsafe extern "C" fn mx_axis_compute(
 /// `axis` must be NULL or a handle from medax not yet freed.
 #[no_mangle]
 pub unsafe extern "C" fn mx_axis_free(axis: *mut mx_axis) {
-    if !axis.is_null() {
-        // SAFETY: per the contract, it came from Box::into_raw in `mx_axis_compute`.
-        drop(unsafe { Box::from_raw(axis) });
-    }
-}
-
-/// Runs `f` on an axis handle and writes its result to `out`.
-unsafe fn query<T>(axis: *const mx_axis, out: *mut T, f: impl FnOnce(&mx_axis) -> Result<T, FfiError>) -> mx_status {
     // SAFETY: forwarded contract.
-    unsafe { boundary::query(axis, "axis", out, f) }
+    unsafe { free(axis) }
 }
 
 fn edge_of(a: &mx_axis, i: usize) -> Result<&AxisEdge, FfiError> {
-    a.axis.edges.get(i).ok_or_else(|| index_error("edge", i, a.axis.edges.len()))
+    nth(&a.axis.edges, i, "edge")
 }
 
 fn site(shape: &Shape2d, p: Primitive) -> mx_axis_site {
@@ -287,8 +258,7 @@ pub unsafe extern "C" fn mx_axis_get_node(axis: *const mx_axis, index: usize, ou
     // SAFETY: forwarded contract.
     unsafe {
         query(axis, out, |a| {
-            let nodes = &a.axis.nodes;
-            let n = nodes.get(index).ok_or_else(|| index_error("node", index, nodes.len()))?;
+            let n = nth(&a.axis.nodes, index, "node")?;
             let kind = match n.kind {
                 NodeKind::Branch => mx_node_kind::MX_NODE_BRANCH,
                 NodeKind::Corner => mx_node_kind::MX_NODE_CORNER,
@@ -354,7 +324,7 @@ pub unsafe extern "C" fn mx_axis_edge_sample(
     guard(|| {
         check_out(count, "count")?;
         // SAFETY: caller contract.
-        let a = unsafe { deref(axis, "axis")? };
+        let a = unsafe { arg(axis)? };
         let e = edge_of(a, index)?;
         let min = MX_AXIS_MIN_RELATIVE_SAMPLE_TOLERANCE * a.shape.bbox().diagonal();
         if !(tolerance.is_finite() && tolerance >= min) {
@@ -366,21 +336,13 @@ pub unsafe extern "C" fn mx_axis_edge_sample(
         let samples = e.sample(&a.shape, &a.axis.nodes, tolerance);
         let need = 3 * samples.len();
         if capacity != 0 {
-            if capacity < need {
-                return Err(FfiError::new(
-                    mx_status::MX_ERR_BUFFER_TOO_SMALL,
-                    format!("edge {index} needs {need} doubles ({} samples), buffer holds {capacity}", samples.len()),
-                ));
-            }
-            check_out(xyr, "xyr")?;
-            for (i, (c, r)) in samples.iter().enumerate() {
-                // SAFETY: 3i + 2 < need <= capacity, and `xyr` holds `capacity` doubles.
-                unsafe {
-                    *xyr.add(3 * i) = c.x;
-                    *xyr.add(3 * i + 1) = c.y;
-                    *xyr.add(3 * i + 2) = *r;
-                }
-            }
+            let xyr_of = samples.iter().flat_map(|(c, r)| [c.x, c.y, *r]);
+            // SAFETY: caller contract: `xyr` NULL or `capacity` writable doubles.
+            unsafe {
+                fill(xyr, "xyr", capacity, need, xyr_of, || {
+                    format!("edge {index} needs {need} doubles ({} samples), buffer holds {capacity}", samples.len())
+                })?
+            };
         }
         // SAFETY: checked non-NULL above.
         unsafe { write_out(count, samples.len()) };

@@ -94,67 +94,39 @@ pub(crate) unsafe fn c_str<'a>(p: *const std::ffi::c_char, name: &str) -> Result
         .map_err(|_| FfiError::new(mx_status::MX_ERR_INVALID_ARGUMENT, format!("argument `{name}` is not valid UTF-8")))
 }
 
-/// Runs `f` on the handle `h` (argument `name`) and writes its result to
-/// `out`: the shape of every read-only query export.
-///
-/// # Safety
-/// `h` must be NULL or a live handle; `out` NULL or valid for writes.
-pub(crate) unsafe fn query<H, T>(
-    h: *const H,
-    name: &str,
-    out: *mut T,
-    f: impl FnOnce(&H) -> Result<T, FfiError>,
-) -> mx_status {
-    guard(|| {
-        check_out(out, "out")?;
-        // SAFETY: caller contract: NULL or a live handle.
-        let v = f(unsafe { deref(h, name)? })?;
-        // SAFETY: checked non-NULL above.
-        unsafe { write_out(out, v) };
-        Ok(())
-    })
-}
-
 pub(crate) fn index_error(what: &str, index: usize, len: usize) -> FfiError {
     FfiError::new(mx_status::MX_ERR_INDEX_OUT_OF_RANGE, format!("{what} index {index} is out of range (0..{len})"))
 }
 
-/// An options struct from C, read by prefix: `None` for NULL, else the
-/// caller's first `struct_size` bytes over a copy of `defaults`, so a caller
-/// compiled against an older (smaller) layout keeps working when fields are
-/// added. Layouts smaller than `min_size` (the first released one) are
-/// rejected; `name` is the C type for the message.
+/// Item `index` of `items` (a node, edge, loop… named `what` in the error).
+pub(crate) fn nth<'a, T>(items: &'a [T], index: usize, what: &str) -> Result<&'a T, FfiError> {
+    items.get(index).ok_or_else(|| index_error(what, index, items.len()))
+}
+
+/// Writes the `need` entries of `items` to the caller's buffer `buf`
+/// (argument `name`) of `capacity` entries, after checking that they fit
+/// (else `MX_ERR_BUFFER_TOO_SMALL` with the message `too_small`, nothing
+/// written) and that `buf` is not NULL.
 ///
 /// # Safety
-/// `T` must be a `#[repr(C)]` plain-old-data struct whose first field is
-/// `struct_size: usize`; `p` must be NULL or point to at least its own
-/// `struct_size` readable bytes.
-pub(crate) unsafe fn read_options<T: Copy>(
-    p: *const T,
-    defaults: T,
-    min_size: usize,
+/// `buf` must be NULL or valid for `capacity` writes.
+pub(crate) unsafe fn fill<T>(
+    buf: *mut T,
     name: &str,
-) -> Result<Option<T>, FfiError> {
-    if p.is_null() {
-        return Ok(None);
+    capacity: usize,
+    need: usize,
+    items: impl IntoIterator<Item = T>,
+    too_small: impl FnOnce() -> String,
+) -> Result<(), FfiError> {
+    if capacity < need {
+        return Err(FfiError::new(mx_status::MX_ERR_BUFFER_TOO_SMALL, too_small()));
     }
-    // SAFETY: non-NULL, and every version of the struct starts with
-    // `struct_size`; read it alone before trusting the rest.
-    let size = unsafe { p.cast::<usize>().read_unaligned() };
-    if size < min_size {
-        return Err(FfiError::new(
-            mx_status::MX_ERR_INVALID_ARGUMENT,
-            format!(
-                "{name}.struct_size = {size} is smaller than any released layout ({min_size}); call {name}_default first"
-            ),
-        ));
+    check_out(buf, name)?;
+    for (i, v) in items.into_iter().take(need).enumerate() {
+        // SAFETY: i < need <= capacity entries, writable per the contract.
+        unsafe { buf.add(i).write(v) };
     }
-    let mut o = defaults;
-    let n = size.min(std::mem::size_of::<T>());
-    // SAFETY: the caller's struct holds `size` >= n readable bytes; ours is
-    // at least n bytes; both are plain old data.
-    unsafe { std::ptr::copy_nonoverlapping(p.cast::<u8>(), std::ptr::addr_of_mut!(o).cast::<u8>(), n) };
-    Ok(Some(o))
+    Ok(())
 }
 
 /// NULL for an empty array: C callers never see a dangling pointer.

@@ -9,7 +9,6 @@ use std::ffi::{c_char, CString};
 /// Structured details of the last error on this thread. Indices are −1 when
 /// they do not apply. Loop and element indices are the caller's input indices.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct mx_error_info {
     /// The status of the failing call (`MX_OK` when no error is recorded).

@@ -10,6 +10,8 @@
 //!
 //! This is the only module allowed `unsafe` code.
 
+#![allow(non_camel_case_types, reason = "C names: the `mx_` prefix and snake_case, as in include/medax.h")]
+
 mod axis;
 mod boundary;
 mod handles;

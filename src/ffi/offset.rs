@@ -10,22 +10,21 @@
 //! copying by hand.
 
 use super::axis::{axis_error, mx_axis, mx_progress_fn};
-use super::boundary::{
-    self, check_out, deref, guard, in_pool, index_error, ptr_or_null, read_options, run_with_progress, slice, write_out,
-};
+use super::boundary::{check_out, guard, in_pool, nth, ptr_or_null, run_with_progress, slice, write_out};
+use super::handles::{arg, compute, free, impl_options, into_raw, options_default, query, Boxed, Handle};
 use super::last_error::FfiError;
 use super::shape2d::mx_shape2d;
 use super::status::mx_status;
 use crate::plane::{AxisOptions, OffsetError, OffsetLayer, OffsetOptions, Offsets};
 use crate::shape::Vertex;
 use std::ffi::c_void;
+use std::mem::size_of;
 
 /// A shape prepared for offsets at any distance: its medial axis and, for
 /// outer offsets, the axes of its complement. Opaque; create with
 /// `mx_offsets_compute` or `mx_offsets_from_axis`, release with
 /// `mx_offsets_free`. Immutable: a `const mx_offsets*` may be used from
 /// several threads at once.
-#[allow(non_camel_case_types)]
 pub struct mx_offsets {
     pub(crate) offsets: Offsets,
     /// The worker threads asked for at compute time, used again for layers
@@ -33,20 +32,28 @@ pub struct mx_offsets {
     pub(crate) threads: usize,
 }
 
+impl Handle for mx_offsets {
+    const ARG: &'static str = "offsets";
+    type Ownership = Boxed;
+}
+
 /// The offset at one distance: closed loops of segments and arcs and the
 /// regions they bound. Opaque; from `mx_offsets_layer`,
 /// `mx_offsets_layers` (release with `mx_offset_layer_free`) or borrowed
 /// from `mx_vcarve_flat`. Immutable.
-#[allow(non_camel_case_types)]
 pub struct mx_offset_layer {
     pub(crate) layer: OffsetLayer,
     loops: FlatLoops,
 }
 
+impl Handle for mx_offset_layer {
+    const ARG: &'static str = "layer";
+    type Ownership = Boxed;
+}
+
 /// Options for `mx_offsets_compute` and `mx_offsets_from_axis`.
 /// Initialise with `mx_offset_options_default` (which sets `struct_size`).
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy)]
 pub struct mx_offset_options {
     /// `sizeof(mx_offset_options)` as the caller was compiled.
@@ -68,24 +75,19 @@ pub struct mx_offset_options {
     pub user: *mut c_void,
 }
 
-fn default_options() -> mx_offset_options {
-    mx_offset_options {
-        struct_size: std::mem::size_of::<mx_offset_options>(),
-        seed: AxisOptions::default().seed,
-        threads: 0,
-        outer_reach: 0.0,
-        progress: None,
-        user: std::ptr::null_mut(),
-    }
-}
-
-const OPTIONS_V1_SIZE: usize = std::mem::size_of::<mx_offset_options>();
+impl_options!(mx_offset_options, v1: 48 bytes up to user: *mut c_void, defaults: mx_offset_options {
+    struct_size: size_of::<Self>(),
+    seed: AxisOptions::default().seed,
+    threads: 0,
+    outer_reach: 0.0,
+    progress: None,
+    user: std::ptr::null_mut(),
+});
 
 /// Closed bulge loops, borrowed from the handle that owns them, laid out
 /// as `mx_shape2d_from_bulges` takes them. The pointers are NULL when the
 /// counts are 0.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy)]
 pub struct mx_bulge_loops {
     /// `x, y, bulge` triples of every loop back to back (model units;
@@ -103,7 +105,6 @@ pub struct mx_bulge_loops {
 
 /// Facts about one offset layer.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct mx_offset_layer_info {
     /// The distance, model units: positive inwards, negative outwards.
@@ -119,7 +120,6 @@ pub struct mx_offset_layer_info {
 /// One loop of an offset layer. The region lies on its left: outer loops
 /// run counter-clockwise, holes clockwise.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct mx_offset_loop {
     /// `x, y, bulge` triples, 3 × `vertex_count` doubles; borrowed from the
@@ -139,7 +139,6 @@ pub struct mx_offset_loop {
 /// One connected region of an offset layer: an outer loop and its holes
 /// (loop indices).
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct mx_offset_region {
     /// Index of the outer loop.
@@ -227,20 +226,18 @@ pub(crate) fn offset_error(e: OffsetError) -> FfiError {
 /// `out` must be NULL or point to a writable `mx_offset_options`.
 #[no_mangle]
 pub unsafe extern "C" fn mx_offset_options_default(out: *mut mx_offset_options) -> mx_status {
-    guard(|| {
-        check_out(out, "out")?;
-        // SAFETY: checked non-NULL above.
-        unsafe { write_out(out, default_options()) };
-        Ok(())
-    })
+    // SAFETY: forwarded contract.
+    unsafe { options_default(out) }
 }
 
-/// Options from C (NULL = defaults) with `outer_reach` checked, and the
-/// Rust options they stand for.
-unsafe fn options(p: *const mx_offset_options) -> Result<(mx_offset_options, OffsetOptions), FfiError> {
-    // SAFETY: forwarded contract; `mx_offset_options` starts with `struct_size`.
-    let o = unsafe { read_options(p, default_options(), OPTIONS_V1_SIZE, "mx_offset_options")? }
-        .unwrap_or_else(default_options);
+/// Checks the options' `outer_reach` and runs `prepare` with the Rust
+/// options they stand for as the export `export`, with their threads and
+/// progress.
+fn prepare(
+    export: &str,
+    o: mx_offset_options,
+    prepare: impl FnOnce(&OffsetOptions) -> Result<Offsets, OffsetError> + Send,
+) -> Result<mx_offsets, FfiError> {
     if !(o.outer_reach.is_finite() && o.outer_reach >= 0.0) {
         return Err(FfiError::new(
             mx_status::MX_ERR_INVALID_ARGUMENT,
@@ -249,24 +246,10 @@ unsafe fn options(p: *const mx_offset_options) -> Result<(mx_offset_options, Off
     }
     let opts =
         OffsetOptions { axis: AxisOptions { seed: o.seed, ..AxisOptions::default() }, outer_reach: o.outer_reach };
-    Ok((o, opts))
-}
-
-/// Runs `prepare` as the export `export` with the options' threads and
-/// progress, and writes the new handle to `out`.
-unsafe fn compute(
-    export: &str,
-    o: &mx_offset_options,
-    out: *mut *mut mx_offsets,
-    prepare: impl FnOnce() -> Result<Offsets, OffsetError> + Send,
-) -> Result<(), FfiError> {
     let offsets = run_with_progress(export, "mx_offset_options", o.threads, o.progress, o.user, || {
-        prepare().map_err(offset_error)
+        prepare(&opts).map_err(offset_error)
     })?;
-    let h = Box::into_raw(Box::new(mx_offsets { offsets, threads: o.threads }));
-    // SAFETY: the caller checked `out` non-NULL.
-    unsafe { write_out(out, h) };
-    Ok(())
+    Ok(mx_offsets { offsets, threads: o.threads })
 }
 
 /// Prepares `shape` for offsets (thesis 2.4: its medial axis, and for
@@ -286,13 +269,10 @@ pub unsafe extern "C" fn mx_offsets_compute(
     options: *const mx_offset_options,
     out: *mut *mut mx_offsets,
 ) -> mx_status {
-    guard(|| {
-        check_out(out, "out")?;
-        // SAFETY: caller contract.
-        let (s, (o, opts)) = unsafe { (deref(shape, "shape")?, self::options(options)?) };
-        // SAFETY: `out` checked non-NULL above.
-        unsafe { compute("mx_offsets_compute", &o, out, || Offsets::new(&s.inner, &opts)) }
-    })
+    // SAFETY: caller contract.
+    unsafe {
+        compute(out, shape, options, |s, o| prepare("mx_offsets_compute", o, |opts| Offsets::new(&s.inner, opts)))
+    }
 }
 
 /// Prepares offsets from an axis the caller already has (of `axis`'s own
@@ -310,17 +290,12 @@ pub unsafe extern "C" fn mx_offsets_from_axis(
     options: *const mx_offset_options,
     out: *mut *mut mx_offsets,
 ) -> mx_status {
-    guard(|| {
-        check_out(out, "out")?;
-        // SAFETY: caller contract.
-        let (a, (o, opts)) = unsafe { (deref(axis, "axis")?, self::options(options)?) };
-        // SAFETY: `out` checked non-NULL above.
-        unsafe {
-            compute("mx_offsets_from_axis", &o, out, || {
-                Offsets::from_axis(&a.shape, &a.axis)?.with_outer(&a.shape, &opts)
-            })
-        }
-    })
+    // SAFETY: caller contract.
+    unsafe {
+        compute(out, axis, options, |a, o| {
+            prepare("mx_offsets_from_axis", o, |opts| Offsets::from_axis(&a.shape, &a.axis)?.with_outer(&a.shape, opts))
+        })
+    }
 }
 
 /// Releases prepared offsets (layers taken from them stay valid). NULL is
@@ -330,10 +305,8 @@ pub unsafe extern "C" fn mx_offsets_from_axis(
 /// `offsets` must be NULL or a handle from medax not yet freed.
 #[no_mangle]
 pub unsafe extern "C" fn mx_offsets_free(offsets: *mut mx_offsets) {
-    if !offsets.is_null() {
-        // SAFETY: per the contract, it came from Box::into_raw in `mx_offsets_compute` or `mx_offsets_from_axis`.
-        drop(unsafe { Box::from_raw(offsets) });
-    }
+    // SAFETY: forwarded contract.
+    unsafe { free(offsets) }
 }
 
 /// The largest inner distance with anything left (the radius of the
@@ -344,7 +317,7 @@ pub unsafe extern "C" fn mx_offsets_free(offsets: *mut mx_offsets) {
 #[no_mangle]
 pub unsafe extern "C" fn mx_offsets_max_inner_distance(offsets: *const mx_offsets, out: *mut f64) -> mx_status {
     // SAFETY: forwarded contract.
-    unsafe { boundary::query(offsets, "offsets", out, |o| Ok(o.offsets.max_inner_distance())) }
+    unsafe { query(offsets, out, |o| Ok(o.offsets.max_inner_distance())) }
 }
 
 /// The offset at `distance` (model units: positive inwards, negative
@@ -363,9 +336,9 @@ pub unsafe extern "C" fn mx_offsets_layer(
 ) -> mx_status {
     // SAFETY: forwarded contract.
     unsafe {
-        boundary::query(offsets, "offsets", out, |o| {
+        query(offsets, out, |o| {
             let layer = in_pool(o.threads, || o.offsets.layer(distance))?.map_err(offset_error)?;
-            Ok(Box::into_raw(Box::new(mx_offset_layer::new(layer))))
+            Ok(into_raw(mx_offset_layer::new(layer)))
         })
     }
 }
@@ -388,11 +361,11 @@ pub unsafe extern "C" fn mx_offsets_layers(
     guard(|| {
         check_out(out, "out")?;
         // SAFETY: caller contract.
-        let (o, ds) = unsafe { (deref(offsets, "offsets")?, slice(distances, count, "distances")?) };
+        let (o, ds) = unsafe { (arg(offsets)?, slice(distances, count, "distances")?) };
         let layers = in_pool(o.threads, || o.offsets.layers(ds))?.map_err(offset_error)?;
         for (k, layer) in layers.into_iter().enumerate() {
             // SAFETY: k < count entries, writable per the contract.
-            unsafe { write_out(out.add(k), Box::into_raw(Box::new(mx_offset_layer::new(layer)))) };
+            unsafe { write_out(out.add(k), into_raw(mx_offset_layer::new(layer))) };
         }
         Ok(())
     })
@@ -405,20 +378,8 @@ pub unsafe extern "C" fn mx_offsets_layers(
 /// `layer` must be NULL or a handle from medax not yet freed.
 #[no_mangle]
 pub unsafe extern "C" fn mx_offset_layer_free(layer: *mut mx_offset_layer) {
-    if !layer.is_null() {
-        // SAFETY: per the contract, it came from Box::into_raw in `mx_offsets_layer(s)`.
-        drop(unsafe { Box::from_raw(layer) });
-    }
-}
-
-/// Runs `f` on a layer handle and writes its result to `out`.
-unsafe fn query<T>(
-    layer: *const mx_offset_layer,
-    out: *mut T,
-    f: impl FnOnce(&mx_offset_layer) -> Result<T, FfiError>,
-) -> mx_status {
     // SAFETY: forwarded contract.
-    unsafe { boundary::query(layer, "layer", out, f) }
+    unsafe { free(layer) }
 }
 
 /// Distance, area and counts of a layer.
@@ -470,8 +431,7 @@ pub unsafe extern "C" fn mx_offset_layer_get_loop(
     // SAFETY: forwarded contract.
     unsafe {
         query(layer, out, |l| {
-            let loops = &l.layer.loops;
-            let lp = loops.get(index).ok_or_else(|| index_error("loop", index, loops.len()))?;
+            let lp = nth(&l.layer.loops, index, "loop")?;
             Ok(mx_offset_loop {
                 xyb: l.loops.one(index),
                 vertex_count: lp.vertices.len(),
@@ -497,8 +457,7 @@ pub unsafe extern "C" fn mx_offset_layer_get_region(
     // SAFETY: forwarded contract.
     unsafe {
         query(layer, out, |l| {
-            let regions = &l.layer.regions;
-            let r = regions.get(index).ok_or_else(|| index_error("region", index, regions.len()))?;
+            let r = nth(&l.layer.regions, index, "region")?;
             Ok(mx_offset_region { outer: r.outer, holes: ptr_or_null(&r.holes), hole_count: r.holes.len() })
         })
     }

@@ -2,19 +2,25 @@
 //! prepared offsets, their tree and machining order, the area left uncut.
 //! Mirrors `crate::cam::pocket`; no geometry here.
 
-use super::boundary::{self, check_out, guard, in_pool, index_error, ptr_or_null, read_options, write_out};
+use super::boundary::{in_pool, nth, ptr_or_null};
+use super::handles::{compute, free, impl_options, options_default, query, Boxed, Handle};
 use super::last_error::FfiError;
 use super::offset::{mx_bulge_loops, mx_offsets, offset_error, FlatLoops};
 use super::status::mx_status;
 use crate::cam::{pocket, CamError, Pocket, PocketOptions, PocketOrder, UncutKind};
+use std::mem::size_of;
 
 /// The rings of a pocket. Opaque; create with `mx_pocket_compute`, release
 /// with `mx_pocket_free`. Immutable.
-#[allow(non_camel_case_types)]
 pub struct mx_pocket {
     pocket: Pocket,
     rings: Vec<FlatLoops>,
     uncut: Vec<FlatLoops>,
+}
+
+impl Handle for mx_pocket {
+    const ARG: &'static str = "pocket";
+    type Ownership = Boxed;
 }
 
 /// `mx_pocket_options.order`: every ring after the rings inside it (the
@@ -33,7 +39,6 @@ pub const MX_UNCUT_WALL: u32 = 1;
 /// `mx_pocket_options_default` (which sets `struct_size`), then set
 /// `tool_radius` and `stepover`: their defaults (0) are rejected.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy)]
 pub struct mx_pocket_options {
     /// `sizeof(mx_pocket_options)` as the caller was compiled.
@@ -50,22 +55,16 @@ pub struct mx_pocket_options {
     pub max_levels: usize,
 }
 
-fn default_options() -> mx_pocket_options {
-    let d = PocketOptions::new(0.0, 0.0);
-    mx_pocket_options {
-        struct_size: std::mem::size_of::<mx_pocket_options>(),
-        tool_radius: 0.0,
-        stepover: 0.0,
-        order: MX_POCKET_INSIDE_OUT,
-        max_levels: d.max_levels,
-    }
-}
-
-const OPTIONS_V1_SIZE: usize = std::mem::size_of::<mx_pocket_options>();
+impl_options!(mx_pocket_options, v1: 40 bytes up to max_levels: usize, defaults: mx_pocket_options {
+    struct_size: size_of::<Self>(),
+    tool_radius: 0.0,
+    stepover: 0.0,
+    order: MX_POCKET_INSIDE_OUT,
+    max_levels: PocketOptions::new(0.0, 0.0).max_levels,
+});
 
 /// Facts about a whole pocket.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct mx_pocket_info {
     /// Number of rings (`mx_pocket_get_ring`).
@@ -85,7 +84,6 @@ pub struct mx_pocket_info {
 /// One ring: the boundary of one connected region of the offset at its
 /// level, which the tool centre follows.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy)]
 pub struct mx_pocket_ring {
     /// Level k (0 at the tool radius).
@@ -108,7 +106,6 @@ pub struct mx_pocket_ring {
 
 /// A region the tool does not cut.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy)]
 pub struct mx_uncut_region {
     /// `MX_UNCUT_SCALLOP` or `MX_UNCUT_WALL`.
@@ -133,12 +130,8 @@ pub(crate) fn cam_error(e: CamError) -> FfiError {
 /// `out` must be NULL or point to a writable `mx_pocket_options`.
 #[no_mangle]
 pub unsafe extern "C" fn mx_pocket_options_default(out: *mut mx_pocket_options) -> mx_status {
-    guard(|| {
-        check_out(out, "out")?;
-        // SAFETY: checked non-NULL above.
-        unsafe { write_out(out, default_options()) };
-        Ok(())
-    })
+    // SAFETY: forwarded contract.
+    unsafe { options_default(out) }
 }
 
 /// The pocket of the prepared shape: rings at r + k·s until nothing is
@@ -156,32 +149,29 @@ pub unsafe extern "C" fn mx_pocket_compute(
     options: *const mx_pocket_options,
     out: *mut *mut mx_pocket,
 ) -> mx_status {
-    guard(|| {
-        check_out(out, "out")?;
-        // SAFETY: caller contract.
-        let o = unsafe { boundary::deref(offsets, "offsets")? };
-        // SAFETY: `mx_pocket_options` starts with `struct_size`.
-        let c = unsafe { read_options(options, default_options(), OPTIONS_V1_SIZE, "mx_pocket_options")? }
-            .unwrap_or_else(default_options);
-        let order = match c.order {
-            MX_POCKET_INSIDE_OUT => PocketOrder::InsideOut,
-            MX_POCKET_OUTSIDE_IN => PocketOrder::OutsideIn,
-            k => {
-                return Err(FfiError::new(
-                    mx_status::MX_ERR_INVALID_ARGUMENT,
-                    format!("mx_pocket_options.order = {k}: use MX_POCKET_INSIDE_OUT (0) or MX_POCKET_OUTSIDE_IN (1)"),
-                ))
-            }
-        };
-        let opts = PocketOptions { tool_radius: c.tool_radius, stepover: c.stepover, order, max_levels: c.max_levels };
-        let p = in_pool(o.threads, || pocket(&o.offsets, &opts))?.map_err(cam_error)?;
-        let rings = p.rings.iter().map(|r| FlatLoops::new(&r.loops)).collect();
-        let uncut = p.uncut.iter().map(|u| FlatLoops::new(&u.loops)).collect();
-        let h = Box::into_raw(Box::new(mx_pocket { pocket: p, rings, uncut }));
-        // SAFETY: checked non-NULL above.
-        unsafe { write_out(out, h) };
-        Ok(())
-    })
+    // SAFETY: caller contract.
+    unsafe {
+        compute(out, offsets, options, |o, c| {
+            let order = match c.order {
+                MX_POCKET_INSIDE_OUT => PocketOrder::InsideOut,
+                MX_POCKET_OUTSIDE_IN => PocketOrder::OutsideIn,
+                k => {
+                    return Err(FfiError::new(
+                        mx_status::MX_ERR_INVALID_ARGUMENT,
+                        format!(
+                            "mx_pocket_options.order = {k}: use MX_POCKET_INSIDE_OUT (0) or MX_POCKET_OUTSIDE_IN (1)"
+                        ),
+                    ))
+                }
+            };
+            let opts =
+                PocketOptions { tool_radius: c.tool_radius, stepover: c.stepover, order, max_levels: c.max_levels };
+            let p = in_pool(o.threads, || pocket(&o.offsets, &opts))?.map_err(cam_error)?;
+            let rings = p.rings.iter().map(|r| FlatLoops::new(&r.loops)).collect();
+            let uncut = p.uncut.iter().map(|u| FlatLoops::new(&u.loops)).collect();
+            Ok(mx_pocket { pocket: p, rings, uncut })
+        })
+    }
 }
 
 /// Releases a pocket. NULL is a no-op.
@@ -190,20 +180,8 @@ pub unsafe extern "C" fn mx_pocket_compute(
 /// `pocket` must be NULL or a handle from medax not yet freed.
 #[no_mangle]
 pub unsafe extern "C" fn mx_pocket_free(pocket: *mut mx_pocket) {
-    if !pocket.is_null() {
-        // SAFETY: per the contract, it came from Box::into_raw in `mx_pocket_compute`.
-        drop(unsafe { Box::from_raw(pocket) });
-    }
-}
-
-/// Runs `f` on a pocket handle and writes its result to `out`.
-unsafe fn query<T>(
-    pocket: *const mx_pocket,
-    out: *mut T,
-    f: impl FnOnce(&mx_pocket) -> Result<T, FfiError>,
-) -> mx_status {
     // SAFETY: forwarded contract.
-    unsafe { boundary::query(pocket, "pocket", out, f) }
+    unsafe { free(pocket) }
 }
 
 /// Counts, machining order and uncut area of the pocket.
@@ -242,8 +220,7 @@ pub unsafe extern "C" fn mx_pocket_get_ring(
     // SAFETY: forwarded contract.
     unsafe {
         query(pocket, out, |h| {
-            let rings = &h.pocket.rings;
-            let r = rings.get(index).ok_or_else(|| index_error("ring", index, rings.len()))?;
+            let r = nth(&h.pocket.rings, index, "ring")?;
             Ok(mx_pocket_ring {
                 level: r.level,
                 distance: r.distance,
@@ -271,8 +248,7 @@ pub unsafe extern "C" fn mx_pocket_get_uncut(
     // SAFETY: forwarded contract.
     unsafe {
         query(pocket, out, |h| {
-            let uncut = &h.pocket.uncut;
-            let u = uncut.get(index).ok_or_else(|| index_error("uncut region", index, uncut.len()))?;
+            let u = nth(&h.pocket.uncut, index, "uncut region")?;
             let kind = match u.kind {
                 UncutKind::Scallop => MX_UNCUT_SCALLOP,
                 UncutKind::Wall => MX_UNCUT_WALL,

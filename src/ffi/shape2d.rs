@@ -1,27 +1,41 @@
 //! C functions for 2D shapes: create, inspect, draw, free. Mirrors
 //! `crate::shape`; no geometry is computed here.
 
-use super::boundary::{self, c_str, check_out, deref, guard, index_error, read_options, slice, write_out};
+use super::boundary::{c_str, check_out, fill, guard, index_error, nth, slice, write_out};
+use super::handles::{arg, create, free, impl_options, options_default, query, Boxed, Handle, Options};
 use super::last_error::FfiError;
 use super::status::mx_status;
 use crate::io::Format;
 use crate::kernel::Point;
 use crate::shape::{Element, ElementSpec, JointKind, Shape2d, ShapeOptions, Vertex};
 use std::ffi::c_char;
+use std::mem::size_of;
 
 /// A validated 2D shape: an outer loop and holes of segments and circular
 /// arcs. Opaque; create with `mx_shape2d_from_*`, release with
 /// `mx_shape2d_free`. Immutable: a `const mx_shape2d*` may be used from
 /// several threads at once.
-#[allow(non_camel_case_types)]
 pub struct mx_shape2d {
     pub(crate) inner: Shape2d,
+}
+
+impl Handle for mx_shape2d {
+    const ARG: &'static str = "shape";
+    type Ownership = Boxed;
+}
+
+// So that the queries call `Shape2d` methods straight on the handle.
+impl std::ops::Deref for mx_shape2d {
+    type Target = Shape2d;
+
+    fn deref(&self) -> &Shape2d {
+        &self.inner
+    }
 }
 
 /// Tolerances for building shapes. Initialise with `mx_shape_options_default`
 /// (which sets `struct_size`), then change fields. Lengths in model units.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct mx_shape_options {
     /// `sizeof(mx_shape_options)` as the caller was compiled; lets later
@@ -54,7 +68,6 @@ pub const MX_ELEMENT_ARC: u32 = 1;
 /// `x0 y0 x1 y1 cx cy ccw` (start, end, centre, direction; start == end is a
 /// full circle) and ignores `bulge` and `radius`.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct mx_element {
     /// `MX_ELEMENT_SEGMENT` or `MX_ELEMENT_ARC`.
@@ -81,7 +94,6 @@ pub struct mx_element {
 
 /// An axis-aligned box, model units.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct mx_bbox {
     /// Smallest x.
@@ -110,16 +122,16 @@ pub const MX_FORMAT_DXF: u32 = 2;
 /// Format argument: SVG document or path data.
 pub const MX_FORMAT_SVG: u32 = 3;
 
-/// `ShapeOptions::DEFAULT` in C form (0 and −1 stand for "derived").
-const DEFAULT_OPTIONS: mx_shape_options = mx_shape_options {
-    struct_size: std::mem::size_of::<mx_shape_options>(),
+// `ShapeOptions::DEFAULT` in C form (0 and −1 stand for "derived").
+impl_options!(mx_shape_options, v1: 56 bytes up to max_radius_ratio: f64, defaults: mx_shape_options {
+    struct_size: size_of::<Self>(),
     tolerance: 0.0,
     relative_tolerance: ShapeOptions::DEFAULT.relative_tolerance,
     angle_tolerance: ShapeOptions::DEFAULT.angle_tolerance,
     flatten_sagitta: -1.0,
     chain_tolerance: 0.0,
     max_radius_ratio: ShapeOptions::DEFAULT.max_radius_ratio,
-};
+});
 
 /// Fills `out` with the default options (and its `struct_size`).
 ///
@@ -127,24 +139,14 @@ const DEFAULT_OPTIONS: mx_shape_options = mx_shape_options {
 /// `out` must be NULL or point to a writable `mx_shape_options`.
 #[no_mangle]
 pub unsafe extern "C" fn mx_shape_options_default(out: *mut mx_shape_options) -> mx_status {
-    guard(|| {
-        check_out(out, "out")?;
-        let o = DEFAULT_OPTIONS;
-        // SAFETY: checked non-NULL above.
-        unsafe { write_out(out, o) };
-        Ok(())
-    })
+    // SAFETY: forwarded contract.
+    unsafe { options_default(out) }
 }
 
-/// Size of `mx_shape_options` in release 0.1, the smallest accepted.
-const OPTIONS_V1_SIZE: usize = std::mem::size_of::<mx_shape_options>();
-
-/// Options from C; NULL means defaults. Only `struct_size` bytes are read,
-/// over a copy of the defaults, so a caller compiled against an older
-/// (smaller) struct keeps working when fields are added.
+/// Options from C, checked; NULL means defaults.
 unsafe fn options(p: *const mx_shape_options) -> Result<ShapeOptions, FfiError> {
-    // SAFETY: forwarded contract; `mx_shape_options` starts with `struct_size`.
-    let Some(o) = (unsafe { read_options(p, DEFAULT_OPTIONS, OPTIONS_V1_SIZE, "mx_shape_options")? }) else {
+    // SAFETY: forwarded contract.
+    let Some(o) = (unsafe { mx_shape_options::read(p)? }) else {
         return Ok(ShapeOptions::default());
     };
     let length = |name: &str, v: f64| -> Result<Option<f64>, FfiError> {
@@ -169,12 +171,6 @@ unsafe fn options(p: *const mx_shape_options) -> Result<ShapeOptions, FfiError> 
     };
     opts.check()?;
     Ok(opts)
-}
-
-fn publish(out: *mut *mut mx_shape2d, shape: Shape2d) {
-    let h = Box::into_raw(Box::new(mx_shape2d { inner: shape }));
-    // SAFETY: every caller checked `out` for NULL before building the shape.
-    unsafe { write_out(out, h) };
 }
 
 /// `x, y, bulge` triples for chains back to back (`data`), cut into
@@ -221,15 +217,17 @@ pub unsafe extern "C" fn mx_shape2d_from_bulges(
     options: *const mx_shape_options,
     out: *mut *mut mx_shape2d,
 ) -> mx_status {
-    guard(|| {
-        check_out(out, "out")?;
-        // SAFETY: caller contract on pointer/length pairs.
-        let (data, lens, opts) = unsafe {
-            (slice(xyb, xyb_len, "xyb")?, slice(loop_lengths, loop_count, "loop_lengths")?, self::options(options)?)
-        };
-        publish(out, Shape2d::from_bulge_loops(split_bulges(data, lens, "xyb")?, &opts)?);
-        Ok(())
-    })
+    // SAFETY: caller contract on pointer/length pairs.
+    unsafe {
+        create(out, || {
+            let (data, lens, opts) = (
+                slice(xyb, xyb_len, "xyb")?,
+                slice(loop_lengths, loop_count, "loop_lengths")?,
+                self::options(options)?,
+            );
+            Ok(mx_shape2d { inner: Shape2d::from_bulge_loops(split_bulges(data, lens, "xyb")?, &opts)? })
+        })
+    }
 }
 
 /// Creates a shape from explicit segments and arcs (see `mx_element` for the
@@ -248,45 +246,47 @@ pub unsafe extern "C" fn mx_shape2d_from_elements(
     options: *const mx_shape_options,
     out: *mut *mut mx_shape2d,
 ) -> mx_status {
-    guard(|| {
-        check_out(out, "out")?;
-        // SAFETY: caller contract on pointer/length pairs.
-        let (elems, lens, opts) = unsafe {
-            (
+    // SAFETY: caller contract on pointer/length pairs.
+    unsafe {
+        create(out, || {
+            elements_shape(
                 slice(elements, element_count, "elements")?,
                 slice(loop_lengths, loop_count, "loop_lengths")?,
                 self::options(options)?,
             )
-        };
-        if lens.iter().try_fold(0usize, |a, &n| a.checked_add(n)) != Some(elems.len()) {
-            return Err(FfiError::new(
-                mx_status::MX_ERR_INVALID_ARGUMENT,
-                format!("element_count = {} does not match the sum of loop_lengths", elems.len()),
-            ));
+        })
+    }
+}
+
+/// The shape of `elems` cut into loops of `lens` elements.
+fn elements_shape(elems: &[mx_element], lens: &[usize], opts: ShapeOptions) -> Result<mx_shape2d, FfiError> {
+    if lens.iter().try_fold(0usize, |a, &n| a.checked_add(n)) != Some(elems.len()) {
+        return Err(FfiError::new(
+            mx_status::MX_ERR_INVALID_ARGUMENT,
+            format!("element_count = {} does not match the sum of loop_lengths", elems.len()),
+        ));
+    }
+    let mut loops = Vec::with_capacity(lens.len());
+    let mut at = 0;
+    for (li, &n) in lens.iter().enumerate() {
+        let mut specs = Vec::with_capacity(n);
+        for (i, e) in elems[at..at + n].iter().enumerate() {
+            let (a, b) = (Point::new(e.x0, e.y0), Point::new(e.x1, e.y1));
+            specs.push(match e.kind {
+                MX_ELEMENT_SEGMENT => ElementSpec::Segment { a, b },
+                MX_ELEMENT_ARC => ElementSpec::ArcPoints { a, b, center: Point::new(e.cx, e.cy), ccw: e.ccw != 0 },
+                k => {
+                    return Err(FfiError::new(
+                        mx_status::MX_ERR_INVALID_ARGUMENT,
+                        format!("loop {li} element {i}: unknown kind {k}"),
+                    ))
+                }
+            });
         }
-        let mut loops = Vec::with_capacity(lens.len());
-        let mut at = 0;
-        for (li, &n) in lens.iter().enumerate() {
-            let mut specs = Vec::with_capacity(n);
-            for (i, e) in elems[at..at + n].iter().enumerate() {
-                let (a, b) = (Point::new(e.x0, e.y0), Point::new(e.x1, e.y1));
-                specs.push(match e.kind {
-                    MX_ELEMENT_SEGMENT => ElementSpec::Segment { a, b },
-                    MX_ELEMENT_ARC => ElementSpec::ArcPoints { a, b, center: Point::new(e.cx, e.cy), ccw: e.ccw != 0 },
-                    k => {
-                        return Err(FfiError::new(
-                            mx_status::MX_ERR_INVALID_ARGUMENT,
-                            format!("loop {li} element {i}: unknown kind {k}"),
-                        ))
-                    }
-                });
-            }
-            loops.push(specs);
-            at += n;
-        }
-        publish(out, Shape2d::from_elements(&loops, &opts)?);
-        Ok(())
-    })
+        loops.push(specs);
+        at += n;
+    }
+    Ok(mx_shape2d { inner: Shape2d::from_elements(&loops, &opts)? })
 }
 
 fn format_of(code: u32) -> Result<Option<Format>, FfiError> {
@@ -311,22 +311,22 @@ pub unsafe extern "C" fn mx_shape2d_from_file(
     options: *const mx_shape_options,
     out: *mut *mut mx_shape2d,
 ) -> mx_status {
-    guard(|| {
-        check_out(out, "out")?;
-        // SAFETY: caller contract.
-        let (path, opts) = unsafe { (c_str(path, "path")?, self::options(options)?) };
-        let shape = match format_of(format)? {
-            None => Shape2d::from_file(path, &opts)?,
-            Some(f) => {
-                let text = std::fs::read(path).map_err(|e| {
-                    FfiError::from(crate::shape::ShapeError::Io { path: path.into(), message: e.to_string() })
-                })?;
-                Shape2d::from_str_as(&String::from_utf8_lossy(&text), f, &opts)?
-            }
-        };
-        publish(out, shape);
-        Ok(())
-    })
+    // SAFETY: caller contract.
+    unsafe {
+        create(out, || {
+            let (path, opts) = (c_str(path, "path")?, self::options(options)?);
+            let inner = match format_of(format)? {
+                None => Shape2d::from_file(path, &opts)?,
+                Some(f) => {
+                    let text = std::fs::read(path).map_err(|e| {
+                        FfiError::from(crate::shape::ShapeError::Io { path: path.into(), message: e.to_string() })
+                    })?;
+                    Shape2d::from_str_as(&String::from_utf8_lossy(&text), f, &opts)?
+                }
+            };
+            Ok(mx_shape2d { inner })
+        })
+    }
 }
 
 /// Parses a shape from a NUL-terminated string in the given format
@@ -341,14 +341,14 @@ pub unsafe extern "C" fn mx_shape2d_from_string(
     options: *const mx_shape_options,
     out: *mut *mut mx_shape2d,
 ) -> mx_status {
-    guard(|| {
-        check_out(out, "out")?;
-        // SAFETY: caller contract.
-        let (text, opts) = unsafe { (c_str(text, "text")?, self::options(options)?) };
-        let f = format_of(format)?.unwrap_or_else(|| crate::shape::sniff(text));
-        publish(out, Shape2d::from_str_as(text, f, &opts)?);
-        Ok(())
-    })
+    // SAFETY: caller contract.
+    unsafe {
+        create(out, || {
+            let (text, opts) = (c_str(text, "text")?, self::options(options)?);
+            let f = format_of(format)?.unwrap_or_else(|| crate::shape::sniff(text));
+            Ok(mx_shape2d { inner: Shape2d::from_str_as(text, f, &opts)? })
+        })
+    }
 }
 
 /// Releases a shape. NULL is a no-op.
@@ -357,24 +357,12 @@ pub unsafe extern "C" fn mx_shape2d_from_string(
 /// `shape` must be NULL or a shape from medax not yet freed.
 #[no_mangle]
 pub unsafe extern "C" fn mx_shape2d_free(shape: *mut mx_shape2d) {
-    if !shape.is_null() {
-        // SAFETY: per the contract, it came from Box::into_raw in `publish`.
-        drop(unsafe { Box::from_raw(shape) });
-    }
-}
-
-/// Runs `f` on a shape handle and writes its result to `out`.
-unsafe fn query<T>(
-    shape: *const mx_shape2d,
-    out: *mut T,
-    f: impl FnOnce(&Shape2d) -> Result<T, FfiError>,
-) -> mx_status {
     // SAFETY: forwarded contract.
-    unsafe { boundary::query(shape, "shape", out, |s| f(&s.inner)) }
+    unsafe { free(shape) }
 }
 
 fn loop_of(s: &Shape2d, l: usize) -> Result<&crate::shape::Loop, FfiError> {
-    s.loops().get(l).ok_or_else(|| index_error("loop", l, s.loops().len()))
+    nth(s.loops(), l, "loop")
 }
 
 /// Number of loops (1 + number of holes).
@@ -441,24 +429,16 @@ pub unsafe extern "C" fn mx_shape2d_loop_vertices(
     guard(|| {
         check_out(written, "written")?;
         // SAFETY: caller contract.
-        let s = unsafe { deref(shape, "shape")? };
-        let l = loop_of(&s.inner, loop_index)?;
+        let s = unsafe { arg(shape)? };
+        let l = loop_of(s, loop_index)?;
         let need = 3 * l.len();
-        if capacity < need {
-            return Err(FfiError::new(
-                mx_status::MX_ERR_BUFFER_TOO_SMALL,
-                format!("loop {loop_index} needs {need} doubles, buffer holds {capacity}"),
-            ));
-        }
-        check_out(xyb, "xyb")?;
-        for (i, v) in l.vertices().iter().enumerate() {
-            // SAFETY: i*3+2 < need <= capacity, and `xyb` holds `capacity` doubles.
-            unsafe {
-                *xyb.add(3 * i) = v.p.x;
-                *xyb.add(3 * i + 1) = v.p.y;
-                *xyb.add(3 * i + 2) = v.bulge;
-            }
-        }
+        let triples = l.vertices().iter().flat_map(|v| [v.p.x, v.p.y, v.bulge]);
+        // SAFETY: caller contract: `xyb` NULL or `capacity` writable doubles.
+        unsafe {
+            fill(xyb, "xyb", capacity, need, triples, || {
+                format!("loop {loop_index} needs {need} doubles, buffer holds {capacity}")
+            })?
+        };
         // SAFETY: checked non-NULL.
         unsafe { write_out(written, l.len()) };
         Ok(())
@@ -571,7 +551,7 @@ pub unsafe extern "C" fn mx_shape2d_tolerance(shape: *const mx_shape2d, out: *mu
 pub unsafe extern "C" fn mx_shape2d_write_svg(shape: *const mx_shape2d, path: *const c_char) -> mx_status {
     guard(|| {
         // SAFETY: caller contract.
-        let (s, path) = unsafe { (deref(shape, "shape")?, c_str(path, "path")?) };
+        let (s, path) = unsafe { (arg(shape)?, c_str(path, "path")?) };
         std::fs::write(path, s.inner.to_svg(900.0))
             .map_err(|e| FfiError::new(mx_status::MX_ERR_IO, format!("cannot write {path}: {e}")))
     })

@@ -7,7 +7,6 @@ use std::ffi::c_char;
 /// may be added. `MX_OK` is 0; every other value is an error and the
 /// thread-local last error (see `mx_last_error_message`) says more.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum mx_status {
     /// Success; out-parameters were written.

@@ -3,15 +3,16 @@
 //! `crate::cam::vcarve`; no geometry here.
 
 use super::axis::mx_axis;
-use super::boundary::{self, check_out, deref, guard, index_error, ptr_or_null, read_options, write_out};
+use super::boundary::{nth, ptr_or_null};
+use super::handles::{compute, free, impl_options, lend, options_default, query, Boxed, Handle, Lends};
 use super::offset::mx_offset_layer;
 use super::pocket::cam_error;
 use super::status::mx_status;
 use crate::cam::{vcarve, VCarveOptions, VCarvePath};
+use std::mem::size_of;
 
 /// V-carve paths and the flat bottom. Opaque; create with
 /// `mx_vcarve_compute`, release with `mx_vcarve_free`. Immutable.
-#[allow(non_camel_case_types)]
 pub struct mx_vcarve {
     paths: Vec<VCarvePath>,
     /// The flat bottom (at the flat radius), in the form `mx_vcarve_flat`
@@ -19,10 +20,20 @@ pub struct mx_vcarve {
     flat: mx_offset_layer,
 }
 
+impl Handle for mx_vcarve {
+    const ARG: &'static str = "vcarve";
+    type Ownership = Boxed;
+}
+
+impl Lends<mx_offset_layer> for mx_vcarve {
+    fn lent(&self) -> &mx_offset_layer {
+        &self.flat
+    }
+}
+
 /// Options for `mx_vcarve_compute`. Initialise with
 /// `mx_vcarve_options_default` (which sets `struct_size`).
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy)]
 pub struct mx_vcarve_options {
     /// `sizeof(mx_vcarve_options)` as the caller was compiled.
@@ -36,20 +47,15 @@ pub struct mx_vcarve_options {
     pub tolerance: f64,
 }
 
-fn default_options() -> mx_vcarve_options {
-    mx_vcarve_options {
-        struct_size: std::mem::size_of::<mx_vcarve_options>(),
-        angle_deg: 90.0,
-        max_depth: f64::INFINITY,
-        tolerance: 0.0,
-    }
-}
-
-const OPTIONS_V1_SIZE: usize = std::mem::size_of::<mx_vcarve_options>();
+impl_options!(mx_vcarve_options, v1: 32 bytes up to tolerance: f64, defaults: mx_vcarve_options {
+    struct_size: size_of::<Self>(),
+    angle_deg: 90.0,
+    max_depth: f64::INFINITY,
+    tolerance: 0.0,
+});
 
 /// Facts about a V-carve.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct mx_vcarve_info {
     /// Number of paths (`mx_vcarve_get_path`).
@@ -63,7 +69,6 @@ pub struct mx_vcarve_info {
 
 /// One V-carve path: the tool tip's points along the medial axis.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct mx_vcarve_path {
     /// `x, y, depth` triples, 3 × `point_count` doubles, model units; depth
@@ -79,12 +84,8 @@ pub struct mx_vcarve_path {
 /// `out` must be NULL or point to a writable `mx_vcarve_options`.
 #[no_mangle]
 pub unsafe extern "C" fn mx_vcarve_options_default(out: *mut mx_vcarve_options) -> mx_status {
-    guard(|| {
-        check_out(out, "out")?;
-        // SAFETY: checked non-NULL above.
-        unsafe { write_out(out, default_options()) };
-        Ok(())
-    })
+    // SAFETY: forwarded contract.
+    unsafe { options_default(out) }
 }
 
 /// Computes the V-carve paths along the medial axis `axis` (of the
@@ -104,20 +105,14 @@ pub unsafe extern "C" fn mx_vcarve_compute(
     options: *const mx_vcarve_options,
     out: *mut *mut mx_vcarve,
 ) -> mx_status {
-    guard(|| {
-        check_out(out, "out")?;
-        // SAFETY: caller contract.
-        let a = unsafe { deref(axis, "axis")? };
-        // SAFETY: `mx_vcarve_options` starts with `struct_size`.
-        let o = unsafe { read_options(options, default_options(), OPTIONS_V1_SIZE, "mx_vcarve_options")? }
-            .unwrap_or_else(default_options);
-        let opts = VCarveOptions { angle_deg: o.angle_deg, max_depth: o.max_depth, tolerance: o.tolerance };
-        let v = vcarve(&a.shape, &a.axis, &opts).map_err(cam_error)?;
-        let h = Box::into_raw(Box::new(mx_vcarve { paths: v.paths, flat: mx_offset_layer::new(v.flat) }));
-        // SAFETY: checked non-NULL above.
-        unsafe { write_out(out, h) };
-        Ok(())
-    })
+    // SAFETY: caller contract.
+    unsafe {
+        compute(out, axis, options, |a, o| {
+            let opts = VCarveOptions { angle_deg: o.angle_deg, max_depth: o.max_depth, tolerance: o.tolerance };
+            let v = vcarve(&a.shape, &a.axis, &opts).map_err(cam_error)?;
+            Ok(mx_vcarve { paths: v.paths, flat: mx_offset_layer::new(v.flat) })
+        })
+    }
 }
 
 /// Releases a V-carve (and its flat layer). NULL is a no-op.
@@ -126,10 +121,8 @@ pub unsafe extern "C" fn mx_vcarve_compute(
 /// `vcarve` must be NULL or a handle from medax not yet freed.
 #[no_mangle]
 pub unsafe extern "C" fn mx_vcarve_free(vcarve: *mut mx_vcarve) {
-    if !vcarve.is_null() {
-        // SAFETY: per the contract, it came from Box::into_raw in `mx_vcarve_compute`.
-        drop(unsafe { Box::from_raw(vcarve) });
-    }
+    // SAFETY: forwarded contract.
+    unsafe { free(vcarve) }
 }
 
 /// Counts and the flat radius.
@@ -140,7 +133,7 @@ pub unsafe extern "C" fn mx_vcarve_free(vcarve: *mut mx_vcarve) {
 pub unsafe extern "C" fn mx_vcarve_get_info(vcarve: *const mx_vcarve, out: *mut mx_vcarve_info) -> mx_status {
     // SAFETY: forwarded contract.
     unsafe {
-        boundary::query(vcarve, "vcarve", out, |v| {
+        query(vcarve, out, |v| {
             Ok(mx_vcarve_info {
                 path_count: v.paths.len(),
                 flat_radius: v.flat.layer.distance,
@@ -163,8 +156,8 @@ pub unsafe extern "C" fn mx_vcarve_get_path(
 ) -> mx_status {
     // SAFETY: forwarded contract.
     unsafe {
-        boundary::query(vcarve, "vcarve", out, |v| {
-            let p = v.paths.get(index).ok_or_else(|| index_error("path", index, v.paths.len()))?;
+        query(vcarve, out, |v| {
+            let p = nth(&v.paths, index, "path")?;
             Ok(mx_vcarve_path { xyd: ptr_or_null(&p.points).cast(), point_count: p.points.len() })
         })
     }
@@ -179,5 +172,5 @@ pub unsafe extern "C" fn mx_vcarve_get_path(
 #[no_mangle]
 pub unsafe extern "C" fn mx_vcarve_flat(vcarve: *const mx_vcarve, out: *mut *const mx_offset_layer) -> mx_status {
     // SAFETY: forwarded contract.
-    unsafe { boundary::query(vcarve, "vcarve", out, |v| Ok(&v.flat as *const mx_offset_layer)) }
+    unsafe { lend(vcarve, out) }
 }

@@ -4,7 +4,8 @@
 //! (`mx_voronoi_axis`), whose node and edge indices these functions use.
 
 use super::axis::{axis_error, mx_axis, mx_progress_fn};
-use super::boundary::{check_out, deref, guard, index_error, read_options, run_with_progress, slice, write_out};
+use super::boundary::{check_out, deref, fill, guard, nth, run_with_progress, slice, write_out};
+use super::handles::{arg, create, free, impl_options, lend, options_default, query, Boxed, Handle, Lends, Options};
 use super::last_error::FfiError;
 use super::shape2d::split_bulges;
 use super::status::mx_status;
@@ -13,11 +14,11 @@ use crate::plane::voronoi::{voronoi, SiteId, Sites, VoronoiDiagram, VoronoiError
 use crate::plane::{AxisOptions, SiteRegion};
 use crate::shape::ShapeOptions;
 use std::ffi::c_void;
+use std::mem::size_of;
 
 /// A computed Voronoi diagram. Opaque; create with `mx_voronoi_compute`,
 /// release with `mx_voronoi_free`. Immutable: a `const mx_voronoi*` may be
 /// used from several threads at once.
-#[allow(non_camel_case_types)]
 pub struct mx_voronoi {
     /// The frame with the sites as holes and its medial axis (moved out of
     /// `diagram`, whose `axis` is left empty: the labels below index it).
@@ -25,10 +26,20 @@ pub struct mx_voronoi {
     diagram: VoronoiDiagram,
 }
 
+impl Handle for mx_voronoi {
+    const ARG: &'static str = "vd";
+    type Ownership = Boxed;
+}
+
+impl Lends<mx_axis> for mx_voronoi {
+    fn lent(&self) -> &mx_axis {
+        &self.axis
+    }
+}
+
 /// The input sites, as plain arrays (model units). Every array may be NULL
 /// when its count is 0. Sites must be pairwise disjoint.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy)]
 pub struct mx_sites {
     /// `x, y` pairs, `2 × point_count` doubles.
@@ -65,7 +76,6 @@ pub struct mx_sites {
 /// Options for `mx_voronoi_compute`. Initialise with
 /// `mx_voronoi_options_default` (which sets `struct_size`).
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy)]
 pub struct mx_voronoi_options {
     /// `sizeof(mx_voronoi_options)` as the caller was compiled.
@@ -84,22 +94,17 @@ pub struct mx_voronoi_options {
     pub user: *mut c_void,
 }
 
-fn default_options() -> mx_voronoi_options {
-    mx_voronoi_options {
-        struct_size: std::mem::size_of::<mx_voronoi_options>(),
-        seed: AxisOptions::default().seed,
-        threads: 0,
-        tolerance: 0.0,
-        progress: None,
-        user: std::ptr::null_mut(),
-    }
-}
-
-const OPTIONS_V1_SIZE: usize = std::mem::size_of::<mx_voronoi_options>();
+impl_options!(mx_voronoi_options, v1: 48 bytes up to user: *mut c_void, defaults: mx_voronoi_options {
+    struct_size: size_of::<Self>(),
+    seed: AxisOptions::default().seed,
+    threads: 0,
+    tolerance: 0.0,
+    progress: None,
+    user: std::ptr::null_mut(),
+});
 
 /// What kind of site an `mx_site` is.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum mx_site_kind {
     /// `points[index]`.
@@ -114,7 +119,6 @@ pub enum mx_site_kind {
 
 /// A site, numbered as the caller gave it.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct mx_site {
     /// Which list.
@@ -125,7 +129,6 @@ pub struct mx_site {
 
 /// What an edge of the diagram's axis separates.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct mx_voronoi_edge {
     /// The sites on either side; `sides[0]` is on the left walking from the
@@ -141,7 +144,6 @@ pub struct mx_voronoi_edge {
 
 /// Facts about a whole diagram.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct mx_voronoi_info {
     /// 1 when the library chose the frame, 0 for the caller's boundary.
@@ -155,7 +157,6 @@ pub struct mx_voronoi_info {
 
 /// The region of one site.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct mx_voronoi_region {
     /// Edges in the boundary walk (`mx_voronoi_region_walk`).
@@ -171,7 +172,6 @@ pub struct mx_voronoi_region {
 
 /// The site nearest to a point.
 #[repr(C)]
-#[allow(non_camel_case_types)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct mx_nearest_site {
     /// The site.
@@ -190,12 +190,8 @@ pub struct mx_nearest_site {
 /// `out` must be NULL or point to a writable `mx_voronoi_options`.
 #[no_mangle]
 pub unsafe extern "C" fn mx_voronoi_options_default(out: *mut mx_voronoi_options) -> mx_status {
-    guard(|| {
-        check_out(out, "out")?;
-        // SAFETY: checked non-NULL above.
-        unsafe { write_out(out, default_options()) };
-        Ok(())
-    })
+    // SAFETY: forwarded contract.
+    unsafe { options_default(out) }
 }
 
 fn site_c(s: SiteId) -> mx_site {
@@ -294,36 +290,33 @@ pub unsafe extern "C" fn mx_voronoi_compute(
     options: *const mx_voronoi_options,
     out: *mut *mut mx_voronoi,
 ) -> mx_status {
-    guard(|| {
-        check_out(out, "out")?;
-        // SAFETY: caller contract.
-        let s = unsafe { deref(sites, "sites")? };
-        // SAFETY: `mx_voronoi_options` starts with `struct_size`.
-        let o = unsafe { read_options(options, default_options(), OPTIONS_V1_SIZE, "mx_voronoi_options")? }
-            .unwrap_or_else(default_options);
-        if !(o.tolerance.is_finite() && o.tolerance >= 0.0) {
-            return Err(FfiError::new(
-                mx_status::MX_ERR_INVALID_ARGUMENT,
-                format!("mx_voronoi_options.tolerance = {}: use a finite value >= 0", o.tolerance),
-            ));
-        }
-        // SAFETY: caller contract.
-        let (sites, boundary) = unsafe { read_sites(s)? };
-        let opts = VoronoiOptions {
-            axis: AxisOptions { seed: o.seed, ..AxisOptions::default() },
-            shape: ShapeOptions { tolerance: (o.tolerance > 0.0).then_some(o.tolerance), ..ShapeOptions::default() },
-            boundary,
-        };
-        let mut diagram =
-            run_with_progress("mx_voronoi_compute", "mx_voronoi_options", o.threads, o.progress, o.user, || {
-                voronoi(&sites, &opts).map_err(voronoi_error)
-            })?;
-        let axis = mx_axis { shape: diagram.shape().clone(), axis: std::mem::take(&mut diagram.axis) };
-        let h = Box::into_raw(Box::new(mx_voronoi { axis, diagram }));
-        // SAFETY: checked non-NULL above.
-        unsafe { write_out(out, h) };
-        Ok(())
-    })
+    // SAFETY: caller contract.
+    unsafe {
+        create(out, || {
+            let (s, o) = (deref(sites, "sites")?, mx_voronoi_options::read_or_default(options)?);
+            if !(o.tolerance.is_finite() && o.tolerance >= 0.0) {
+                return Err(FfiError::new(
+                    mx_status::MX_ERR_INVALID_ARGUMENT,
+                    format!("mx_voronoi_options.tolerance = {}: use a finite value >= 0", o.tolerance),
+                ));
+            }
+            let (sites, boundary) = read_sites(s)?;
+            let opts = VoronoiOptions {
+                axis: AxisOptions { seed: o.seed, ..AxisOptions::default() },
+                shape: ShapeOptions {
+                    tolerance: (o.tolerance > 0.0).then_some(o.tolerance),
+                    ..ShapeOptions::default()
+                },
+                boundary,
+            };
+            let mut diagram =
+                run_with_progress("mx_voronoi_compute", "mx_voronoi_options", o.threads, o.progress, o.user, || {
+                    voronoi(&sites, &opts).map_err(voronoi_error)
+                })?;
+            let axis = mx_axis { shape: diagram.shape().clone(), axis: std::mem::take(&mut diagram.axis) };
+            Ok(mx_voronoi { axis, diagram })
+        })
+    }
 }
 
 /// Releases a diagram (and its axis). NULL is a no-op.
@@ -332,20 +325,8 @@ pub unsafe extern "C" fn mx_voronoi_compute(
 /// `vd` must be NULL or a handle from medax not yet freed.
 #[no_mangle]
 pub unsafe extern "C" fn mx_voronoi_free(vd: *mut mx_voronoi) {
-    if !vd.is_null() {
-        // SAFETY: per the contract, it came from Box::into_raw in `mx_voronoi_compute`.
-        drop(unsafe { Box::from_raw(vd) });
-    }
-}
-
-/// Runs `f` on a diagram handle and writes its result to `out`.
-unsafe fn query<T>(
-    vd: *const mx_voronoi,
-    out: *mut T,
-    f: impl FnOnce(&mx_voronoi) -> Result<T, FfiError>,
-) -> mx_status {
     // SAFETY: forwarded contract.
-    unsafe { super::boundary::query(vd, "vd", out, f) }
+    unsafe { free(vd) }
 }
 
 /// The diagram's medial axis: nodes, edges and their samples through the
@@ -359,7 +340,7 @@ unsafe fn query<T>(
 #[no_mangle]
 pub unsafe extern "C" fn mx_voronoi_axis(vd: *const mx_voronoi, out: *mut *const mx_axis) -> mx_status {
     // SAFETY: forwarded contract.
-    unsafe { query(vd, out, |v| Ok(&v.axis as *const mx_axis)) }
+    unsafe { lend(vd, out) }
 }
 
 /// Facts about the diagram.
@@ -393,7 +374,7 @@ pub unsafe extern "C" fn mx_voronoi_get_edge(
     // SAFETY: forwarded contract.
     unsafe {
         query(vd, out, |v| {
-            let e = v.diagram.edges.get(index).ok_or_else(|| index_error("edge", index, v.diagram.edges.len()))?;
+            let e = nth(&v.diagram.edges, index, "edge")?;
             let facing_frame = v.diagram.auto_frame && e.sides.contains(&SiteId::Frame);
             Ok(mx_voronoi_edge {
                 sides: e.sides.map(site_c),
@@ -415,7 +396,7 @@ pub unsafe extern "C" fn mx_voronoi_node_frontier(vd: *const mx_voronoi, index: 
     unsafe {
         query(vd, out, |v| {
             let f = &v.diagram.frontier;
-            f.get(index).map(|&b| b.into()).ok_or_else(|| index_error("node", index, f.len()))
+            nth(f, index, "node").map(|&b| b.into())
         })
     }
 }
@@ -478,23 +459,17 @@ pub unsafe extern "C" fn mx_voronoi_region_walk(
     guard(|| {
         check_out(count, "count")?;
         // SAFETY: caller contract.
-        let v = unsafe { deref(vd, "vd")? };
+        let v = unsafe { arg(vd)? };
         let walk = &region_of(v, site_kind, site_index)?.boundary;
         if capacity != 0 {
-            if capacity < walk.len() {
-                return Err(FfiError::new(
-                    mx_status::MX_ERR_BUFFER_TOO_SMALL,
-                    format!("the walk has {} edges, the buffer holds {capacity}", walk.len()),
-                ));
-            }
-            check_out(edges, "edges")?;
-            for (k, &(i, fwd)) in walk.iter().enumerate() {
-                // SAFETY: k < walk.len() <= capacity entries of each buffer.
-                unsafe {
-                    *edges.add(k) = i;
-                    if !forward.is_null() {
-                        *forward.add(k) = fwd.into();
-                    }
+            let too_small = || format!("the walk has {} edges, the buffer holds {capacity}", walk.len());
+            // SAFETY: caller contract: `edges` and `forward` NULL or
+            // `capacity` writable entries; `forward` is optional, and only
+            // written once `edges` was.
+            unsafe {
+                fill(edges, "edges", capacity, walk.len(), walk.iter().map(|&(i, _)| i), too_small)?;
+                if !forward.is_null() {
+                    fill(forward, "forward", capacity, walk.len(), walk.iter().map(|&(_, f)| f.into()), too_small)?;
                 }
             }
         }
