@@ -1,6 +1,6 @@
 //! Trimmed offsets, side by side with cavalier_contours on the same shapes
 //! (issue 5's benchmark; `scripts/bench-offset`, figures in
-//! docs/PERFORMANCE.md, "Offsets (issue 5)").
+//! docs/PERFORMANCE.md, "Offsets").
 //!
 //! For each shape: medax's medial axis, the offset preparation
 //! (`Offsets::from_axis`), then 20 layers one after another (the first is
