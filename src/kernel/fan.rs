@@ -11,9 +11,78 @@ pub fn cw_angle(a: Point, b: Point) -> f64 {
     (a.y.atan2(a.x) - b.y.atan2(b.x)).rem_euclid(std::f64::consts::TAU)
 }
 
+/// A fan of directions, clockwise from a start direction through a width
+/// of up to a whole turn: the normals at a reflex vertex (less than a half
+/// turn), at a curve site's end (a half turn) or round a point site (a
+/// whole turn), or the part of one that a subshape holds.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Fan {
+    start: Point,
+    width: f64,
+}
+
+impl Fan {
+    /// The fan clockwise from direction `start` to direction `end`.
+    pub fn clockwise(start: Point, end: Point) -> Fan {
+        Fan { start, width: cw_angle(start, end) }
+    }
+
+    /// The fan clockwise from `start` to `end`, or the whole turn from
+    /// `start` when the two are one direction within `min_width` radians
+    /// (a point between the two arcs of one disk).
+    pub fn clockwise_or_whole(start: Point, end: Point, min_width: f64) -> Fan {
+        let fan = Fan::clockwise(start, end);
+        if fan.width <= min_width {
+            Fan::whole_turn(start)
+        } else {
+            fan
+        }
+    }
+
+    /// The whole turn of directions, starting at `start`.
+    pub fn whole_turn(start: Point) -> Fan {
+        Fan { start, width: std::f64::consts::TAU }
+    }
+
+    /// The start direction.
+    pub fn start(&self) -> Point {
+        self.start
+    }
+
+    /// The width, radians in [0, 2π].
+    pub fn width(&self) -> f64 {
+        self.width
+    }
+
+    /// How far clockwise from the start direction `d` lies, radians in
+    /// [0, 2π).
+    pub fn offset_of(&self, d: Point) -> f64 {
+        cw_angle(self.start, d)
+    }
+
+    /// The direction `fraction` (0 to 1) of the way through the fan, with
+    /// the start direction's length.
+    pub fn direction_at(&self, fraction: f64) -> Point {
+        let (s, c) = (-self.width * fraction).sin_cos();
+        Point::new(c * self.start.x - s * self.start.y, s * self.start.x + c * self.start.y)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn fans_of_any_width() {
+        let (east, south) = (Point::new(1.0, 0.0), Point::new(0.0, -1.0));
+        let quarter = Fan::clockwise(east, south);
+        assert!((quarter.width() - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+        assert!(quarter.direction_at(1.0).dist(south) < 1e-15);
+        let whole = Fan::clockwise_or_whole(east, east, 1e-7);
+        assert_eq!(whole.width(), std::f64::consts::TAU);
+        assert!(whole.direction_at(0.5).dist(Point::new(-1.0, 0.0)) < 1e-15);
+        assert!((whole.offset_of(Point::new(0.0, 1.0)) - 1.5 * std::f64::consts::PI).abs() < 1e-15);
+    }
 
     #[test]
     fn clockwise_angles_cover_the_whole_turn() {

@@ -7,6 +7,7 @@ use super::prepare::{drop_sliver_ends, merge_touching_chains, same_position};
 use super::sites::{angle, element_param};
 use super::{AuxArc, Builder, LocalSite, POINT_SPLITS};
 use crate::kernel::apollonius::Site;
+use crate::kernel::fan::Fan;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{AxisKernel, Point};
 use crate::plane::axis::Primitive;
@@ -67,18 +68,15 @@ impl<K: AxisKernel> Builder<'_, K> {
     /// through the point in that direction), so that no site's range comes
     /// near a whole turn, where angles are ambiguous.
     pub(super) fn push_point_fan(&mut self, l: usize, from: Point, to: Point, r: f64) {
-        use crate::kernel::fan::cw_angle;
         let q = self.shape.loops()[l].vertices()[0].p;
-        let mut width = cw_angle(from, to);
-        if width <= Tolerance::fan_angle() {
-            width = TAU;
-        }
+        let fan = Fan::clockwise_or_whole(from, to, Tolerance::fan_angle());
+        let width = fan.width();
         if width * r <= self.tol.fan_arc() {
             return;
         }
         let mut cuts: Vec<f64> = POINT_SPLITS
             .iter()
-            .map(|&a| cw_angle(from, Point::new(a.cos(), a.sin())))
+            .map(|&a| fan.offset_of(Point::new(a.cos(), a.sin())))
             .filter(|&o| o > Tolerance::fan_angle() && o < width - Tolerance::fan_angle())
             .collect();
         cuts.sort_by(f64::total_cmp);

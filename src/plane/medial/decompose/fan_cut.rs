@@ -7,15 +7,14 @@
 //! random boundary point does for original parts (Algorithm 1), so that a
 //! cloud of k points divides in O(k log k).
 
-use crate::kernel::fan::cw_angle;
-use crate::kernel::{AxisKernel, Point};
+use crate::kernel::fan::Fan;
+use crate::kernel::AxisKernel;
 use crate::plane::medial::decompose::parts::{foot_at_convex_corner, parts_in, points_in, position, reflex_point};
 use crate::plane::medial::decompose::subshape::{BoundaryPos, Cut, Piece};
 use crate::plane::medial::decompose::tour::{Ranged, Span, Tour};
 use crate::plane::medial::disk::maximal::DiskFinder;
 use crate::shape::samples::Mix;
 use crate::shape::{ElementRef, Shape2d};
-use std::f64::consts::TAU;
 
 /// A random reflex single point of `s` with its neighbouring auxiliary
 /// arcs' disks (before, after), or `None` (no such point, or one at the
@@ -80,12 +79,10 @@ pub(super) fn fan_cut<K: AxisKernel>(
     let (at, before, after) = pick(shape, s, tour, rng)?;
     let q = at.point(shape);
     let a = (cuts[before].center - q).unit();
-    let width = if before == after { TAU } else { cw_angle(a, (cuts[after].center - q).unit()) };
+    let fan = if before == after { Fan::whole_turn(a) } else { Fan::clockwise(a, (cuts[after].center - q).unit()) };
     // Clear of the fan part's ends, where the disk would be the
     // neighbouring cut again.
-    let turn = -width * (0.1 + 0.8 * rng.next());
-    let (sn, cs) = turn.sin_cos();
-    let m = Point::new(cs * a.x - sn * a.y, sn * a.x + cs * a.y);
+    let m = fan.direction_at(0.1 + 0.8 * rng.next());
     let d = finder.max_disk_toward(ElementRef { loop_index: at.loop_index, element: at.element }, at.t, m);
     if d.radius <= finder.contact_tolerance() || d.footpoints.len() < 2 {
         return None;
