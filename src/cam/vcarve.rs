@@ -3,6 +3,7 @@
 //! both walls); where that would pass the maximum depth the bottom is flat
 //! and bounded by the offset at the capped radius.
 
+use crate::kernel::tolerance::Tolerance;
 use super::CamError;
 use crate::kernel::Point;
 use crate::plane::{MedialAxis2d, OffsetLayer, Offsets};
@@ -93,7 +94,7 @@ pub fn vcarve(shape: &Shape2d, axis: &MedialAxis2d, opts: &VCarveOptions) -> Res
     opts.check()?;
     let slope = (0.5 * opts.angle_deg.to_radians()).tan();
     let flat_radius = opts.max_depth * slope;
-    let tol = if opts.tolerance > 0.0 { opts.tolerance } else { 1000.0 * shape.tolerance() };
+    let tol = if opts.tolerance > 0.0 { opts.tolerance } else { Tolerance::new(shape.tolerance()).vcarve_sampling() };
     let sampled = axis.sampled(shape, tol);
     // Pieces of edges below the flat radius, as polylines of (point,
     // radius), with the nodes they start and end at (none at a cut).

@@ -246,6 +246,13 @@ impl Tolerance {
         1.0_f64.max(1e-6 * magnitude)
     }
 
+    /// The default chordal tolerance (model units) of V-carve paths sampled
+    /// along the axis, 1000τ (1e-6 of the diagonal by default): well
+    /// below any machine's resolution, coarse enough to keep paths short.
+    pub fn vcarve_sampling(self) -> f64 {
+        1000.0 * self.touch
+    }
+
     /// Fraction of a site's parameter range by which coinciding contacts
     /// of a branch point are pulled into their own primitives, and by which
     /// a contact where only the dividing disk touches is moved inside.

@@ -212,7 +212,7 @@ fn lowest_point(shape: &Shape2d, hole: usize, down: Point) -> (BoundaryPos, Poin
             offer(depth(e.start()), false, pos(0.0));
         }
         match e {
-            Element::Segment(s) if (s.b - s.a).dot(down) == 0.0 && faces_down(&e) => {
+            Element::Segment(s) if heading(s.b - s.a, down) == Heading::Sideways && faces_down(&e) => {
                 offer(depth((s.a + s.b) * 0.5), true, pos(0.5))
             }
             Element::Segment(_) => {}
