@@ -300,7 +300,7 @@ mod tests {
     #[test]
     fn constructed_touch_stays_between_rounding_and_the_tolerance() {
         let t = Tolerance::new(1e-9);
-        assert_eq!(t.constructed_touch(1.0), 1e-12);
+        assert_eq!(t.constructed_touch(1.0), 1e-3 * 1e-9);
         // Far from the origin the coordinates' own rounding sets the floor.
         assert_eq!(t.constructed_touch(1e6), 256.0 * f64::EPSILON * 1e6);
         assert_eq!(t.constructed_touch(1e12), 1e-9);
