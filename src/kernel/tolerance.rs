@@ -302,7 +302,7 @@ mod tests {
         let t = Tolerance::new(1e-9);
         assert_eq!(t.constructed_touch(1.0), 1e-3 * 1e-9);
         // Far from the origin the coordinates' own rounding sets the floor.
-        assert_eq!(t.constructed_touch(1e6), 256.0 * f64::EPSILON * 1e6);
+        assert_eq!(t.constructed_touch(1e3), 256.0 * f64::EPSILON * 1e3);
         assert_eq!(t.constructed_touch(1e12), 1e-9);
     }
 }
