@@ -210,7 +210,6 @@ fn source_files_stay_small() {
         ("io/dxf.rs", 621),
         ("io/svg_path.rs", 849),
         ("plane/medial/base_case/mod.rs", 1272),
-        ("plane/medial/conquer/mod.rs", 673),
         ("plane/medial/decompose/subshape.rs", 636),
     ];
     let mut files = Vec::new();
