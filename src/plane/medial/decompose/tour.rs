@@ -15,8 +15,9 @@
 //! [`Subshape`]s.
 
 use crate::kernel::Point;
+use crate::plane::medial::decompose::cut::split_slots;
 use crate::plane::medial::decompose::subshape::{
-    along, chain_holds, split_slots, BoundaryPos, ChainParts, Cut, Piece, Slot, Subshape,
+    along, chain_holds, BoundaryPos, ChainParts, Cut, Piece, Slot, Subshape,
 };
 use crate::shape::{JointKind, Shape2d};
 use std::borrow::Cow;
