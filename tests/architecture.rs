@@ -80,11 +80,12 @@ fn crate_paths(code: &str) -> Vec<Vec<String>> {
 /// The layers below each top-level module: what it may use.
 fn allowed(top: &str) -> Option<&'static [&'static str]> {
     Some(match top {
-        "io" => &["io"],
-        "kernel" => &["kernel", "io"],
-        "shape" => &["shape", "kernel", "io"],
-        "plane" => &["plane", "shape", "kernel", "io"],
-        "cam" => &["cam", "plane", "shape", "kernel", "io"],
+        "util" => &["util"],
+        "io" => &["io", "util"],
+        "kernel" => &["kernel", "io", "util"],
+        "shape" => &["shape", "kernel", "io", "util"],
+        "plane" => &["plane", "shape", "kernel", "io", "util"],
+        "cam" => &["cam", "plane", "shape", "kernel", "io", "util"],
         _ => return None,
     })
 }

@@ -357,7 +357,7 @@ mod tests {
 
     #[test]
     fn agrees_with_winding_numbers_on_aligned_grids() {
-        let mut mix = crate::shape::samples::Mix(99);
+        let mut mix = crate::util::mix::Mix(99);
         let mut rnd = || mix.next();
         let mut seen = [0usize; 3];
         for _ in 0..400 {

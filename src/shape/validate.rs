@@ -374,7 +374,7 @@ mod tests {
         for seed in 0..300u64 {
             let n = 6 + (seed % 50) as usize;
             let mut l: Vec<Vertex> = samples::star_polygon(n, seed).remove(0);
-            let mut mix = samples::Mix(seed);
+            let mut mix = crate::util::mix::Mix(seed);
             let mut rnd = || mix.next();
             for v in l.iter_mut() {
                 if rnd() < 0.4 {
@@ -476,7 +476,7 @@ mod tests {
 
     #[test]
     fn random_holes_with_touches_agree_on_every_path() {
-        let mut mix = samples::Mix(0x2545_f491_4f6c_dd1d);
+        let mut mix = crate::util::mix::Mix(0x2545_f491_4f6c_dd1d);
         let mut rnd = || mix.next();
         let mut seen = [0usize; 2];
         for _ in 0..300 {

@@ -342,7 +342,7 @@ mod tests {
         let tour = Tour::new(&shape, &aug.boundary);
         assert_eq!(tour.expand(&tour.root()), aug.boundary);
         let n = aug.boundary.pieces.len();
-        let mut rng = samples::Mix(5);
+        let mut rng = crate::util::mix::Mix(5);
         for _ in 0..200 {
             let (a, b) = (rng.below(n), rng.below(n));
             let (from, to) = (a.min(b), a.max(b));

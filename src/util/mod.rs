@@ -1,0 +1,4 @@
+//! Helpers that are neither geometry nor file formats, below every layer:
+//! the seeded random numbers of the divide step and the sample shapes.
+
+pub(crate) mod mix;
