@@ -5,18 +5,23 @@
 //! containment tests of holes (which then need only one point per hole).
 //! All positions and indices in errors refer to the loops as given.
 
-use super::box_tree::BoxTree;
-use super::bulge_loop::{Loop, LoopKind};
-use super::containment::check_holes;
-use super::element::Element;
-use super::error::{Degeneracy, ElementRef, ShapeError};
-use super::intersect::element_pair_approach;
-use super::joints::{classify, turning_angle, JointKind};
-use super::options::ShapeOptions;
-use super::per_element;
-use super::sweep::{sweep_intersections, SweepOutcome};
-use super::{MAX_COORDINATE, MIN_EXTENT, MIN_RELATIVE_TOLERANCE};
+pub(crate) mod containment;
+pub(crate) mod intersect;
+pub(crate) mod sweep;
+pub(crate) mod sweep_status;
+
 use crate::kernel::{BBox, Point};
+use crate::shape::index::box_tree::BoxTree;
+use crate::shape::model::bulge_loop::{Loop, LoopKind};
+use crate::shape::model::element::Element;
+use crate::shape::model::error::{Degeneracy, ElementRef, ShapeError};
+use crate::shape::model::joints::{classify, turning_angle, JointKind};
+use crate::shape::model::options::ShapeOptions;
+use crate::shape::model::per_element;
+use crate::shape::validate::containment::check_holes;
+use crate::shape::validate::intersect::element_pair_approach;
+use crate::shape::validate::sweep::{sweep_intersections, SweepOutcome};
+use crate::shape::{MAX_COORDINATE, MIN_EXTENT, MIN_RELATIVE_TOLERANCE};
 use std::ops::ControlFlow;
 
 /// The result of validation: normalised loops and what was learned on the way.
@@ -362,7 +367,7 @@ fn tree_intersections(loops: &[Loop], index: &ElementIndex, tol: f64, budget: Op
 mod tests {
     use super::*;
     use crate::shape::samples;
-    use crate::shape::sweep::sweep_in_slabs;
+    use crate::shape::validate::sweep::sweep_in_slabs;
     use crate::shape::Vertex;
 
     /// The sweep and the exhaustive box-tree search must agree on whether a

@@ -1,8 +1,8 @@
 //! Deterministic sample shapes for tests, benchmarks and demos. Each
 //! returns bulge loops (outer first) that are valid by construction.
 
-use super::bulge_loop::Vertex;
 use crate::kernel::Point;
+use crate::shape::model::bulge_loop::Vertex;
 use crate::util::mix::Mix;
 use std::f64::consts::TAU;
 

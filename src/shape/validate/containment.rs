@@ -14,12 +14,12 @@
 //! vertex of one loop; the perturbed ray meets the one leaning further left
 //! (smaller dx/dy going up) first, which is the tie-break.
 
-use super::box_tree::BoxTree;
-use super::bulge_loop::{Loop, LoopKind};
-use super::element::Element;
-use super::error::ShapeError;
-use super::validate::ElementIndex;
 use crate::kernel::{BBox, Point};
+use crate::shape::index::box_tree::BoxTree;
+use crate::shape::model::bulge_loop::{Loop, LoopKind};
+use crate::shape::model::element::Element;
+use crate::shape::model::error::ShapeError;
+use crate::shape::validate::ElementIndex;
 use rayon::prelude::*;
 use std::ops::ControlFlow;
 

@@ -4,7 +4,7 @@
 //! small loops; splitting the global id range into fixed chunks keeps both
 //! parallel, and fixed chunks keep floating-point sums reproducible.
 
-use super::bulge_loop::Loop;
+use crate::shape::model::bulge_loop::Loop;
 use rayon::prelude::*;
 
 /// Elements per parallel task.
