@@ -24,19 +24,19 @@ pub(crate) mod model;
 pub(crate) mod shape2d;
 pub(crate) mod validate;
 
-pub use build::chain::{chain_loops, LooseElement};
+pub use build::chain::chain_loops;
 pub use build::import::sniff;
 pub use build::samples;
 pub use draw::{draw_joints, push_loop_path, shape_document, shape_path};
 pub use index::box_tree::BoxTree;
 pub use index::chain_tree::ChainTree;
+pub(crate) use index::element_index::ElementIndex;
 pub use model::bulge_loop::{winding_contribution, Loop, LoopKind, Vertex};
-pub use model::element::{Arc, Element, Segment};
+pub use model::element::{Arc, Element, LooseElement, Segment};
 pub use model::error::{Degeneracy, ElementRef, ShapeError};
 pub use model::joints::{classify, turning_angle, JointKind};
 pub use model::options::ShapeOptions;
 pub use shape2d::{ElementSpec, Shape2d};
-pub(crate) use validate::ElementIndex;
 
 /// Largest absolute coordinate medax accepts, in model units (vertices and
 /// arc extents). Within it, products of coordinates stay far from `f64`

@@ -1,8 +1,8 @@
 //! The validated 2D shape: one outer loop and any number of holes.
 
 use crate::kernel::{BBox, Point};
-use crate::shape::build::chain::LooseElement;
 use crate::shape::model::bulge_loop::{Loop, Vertex};
+use crate::shape::model::element::LooseElement;
 use crate::shape::model::error::{ElementRef, ShapeError};
 use crate::shape::model::joints::JointKind;
 use crate::shape::model::options::ShapeOptions;

@@ -16,10 +16,10 @@
 
 use crate::kernel::{BBox, Point};
 use crate::shape::index::box_tree::BoxTree;
+use crate::shape::index::element_index::ElementIndex;
 use crate::shape::model::bulge_loop::{Loop, LoopKind};
 use crate::shape::model::element::Element;
 use crate::shape::model::error::ShapeError;
-use crate::shape::validate::ElementIndex;
 use rayon::prelude::*;
 use std::ops::ControlFlow;
 
