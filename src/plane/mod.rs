@@ -16,7 +16,7 @@
 //!
 //! This module re-exports the public API; everything else is crate-private.
 //! Tests, fuzz targets and developer tools reach the algorithm's internals
-//! through [`internals`], compiled only with the `internals` feature.
+//! through `internals`, compiled only with the `internals` feature.
 
 pub(crate) mod axis;
 pub(crate) mod medial;
