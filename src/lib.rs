@@ -39,6 +39,7 @@ pub mod io;
 pub mod kernel;
 pub mod plane;
 pub mod shape;
+pub(crate) mod util;
 
 /// The crate version, `MAJOR.MINOR.PATCH`.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");

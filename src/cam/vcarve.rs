@@ -3,8 +3,8 @@
 //! both walls); where that would pass the maximum depth the bottom is flat
 //! and bounded by the offset at the capped radius.
 
-use crate::kernel::tolerance::Tolerance;
 use super::CamError;
+use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Point;
 use crate::plane::{MedialAxis2d, OffsetLayer, Offsets};
 use crate::shape::Shape2d;

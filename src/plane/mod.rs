@@ -16,7 +16,7 @@
 //!
 //! This module re-exports the public API; everything else is crate-private.
 //! Tests, fuzz targets and developer tools reach the algorithm's internals
-//! through [`internals`], compiled only with the `internals` feature.
+//! through `internals`, compiled only with the `internals` feature.
 
 pub(crate) mod axis;
 pub(crate) mod medial;
@@ -50,11 +50,11 @@ pub mod internals {
     pub mod leaf_text {
         pub use crate::plane::medial::decompose::leaf_text::{read_leaf, write_leaf, LeafTextError};
     }
-    pub use super::medial::conquer::{glue, solve_leaves};
-    pub use super::medial::decompose::augment::augment;
-    pub use super::medial::decompose::divide::{
+    pub use crate::plane::medial::conquer::{glue, solve_leaves};
+    pub use crate::plane::medial::decompose::augment::augment;
+    pub use crate::plane::medial::decompose::divide::{
         decompose, decompose_in, decompose_with, divide_into, leaf_size, Decomposition,
     };
-    pub use super::medial::decompose::leaf_text::{read_leaf, write_leaf};
-    pub use super::medial::decompose::subshape::ChainParts;
+    pub use crate::plane::medial::decompose::leaf_text::{read_leaf, write_leaf};
+    pub use crate::plane::medial::decompose::subshape::ChainParts;
 }

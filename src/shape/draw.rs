@@ -1,10 +1,10 @@
 //! Pictures of shapes as SVG.
 
-use super::bulge_loop::Vertex;
-use super::element::Element;
-use super::joints::JointKind;
-use super::shape2d::Shape2d;
 use crate::io::svg_writer::{PathCmd, Style, SvgDocument};
+use crate::shape::model::bulge_loop::Vertex;
+use crate::shape::model::element::Element;
+use crate::shape::model::joints::JointKind;
+use crate::shape::shape2d::Shape2d;
 
 /// SVG path commands for all loops of a shape (draw with the even-odd rule
 /// to show holes).

@@ -3,39 +3,40 @@
 //! Thesis Definition 2.1.1 (shapes with a circular-arc representation) and
 //! 2.2.1 (joint classification); holes as in 2.3. Built from bulge loops,
 //! explicit elements or files, validated once, immutable afterwards.
+//!
+//! The folders depend on each other in one direction only
+//! (`docs/ARCHITECTURE.md` draws the graph):
+//!
+//! * `model/`: the vocabulary: elements, bulge loops, joints, options,
+//!   errors, parallel maps over all elements.
+//! * `index/`: spatial indexes over elements: box tree, chain tree, pairs
+//!   of nearby boxes.
+//! * `validate/`: the validation pipeline: intersections (box pairs or a
+//!   plane sweep), holes' containment.
+//! * `shape2d.rs`: the validated [`Shape2d`] and its constructors.
+//! * `build/`: shapes from loose elements and files, generated test shapes.
+//! * `draw.rs`: SVG pictures of a shape.
 
-mod box_pairs;
-mod box_tree;
-mod bulge_loop;
-mod chain;
-mod chain_tree;
-mod containment;
-mod draw;
-mod element;
-mod error;
-mod import;
-mod intersect;
-mod joints;
-mod options;
-mod per_element;
-pub mod samples;
-mod shape2d;
-mod sweep;
-mod sweep_status;
-mod validate;
+pub(crate) mod build;
+pub(crate) mod draw;
+pub(crate) mod index;
+pub(crate) mod model;
+pub(crate) mod shape2d;
+pub(crate) mod validate;
 
-pub use box_tree::BoxTree;
-pub use bulge_loop::{winding_contribution, Loop, LoopKind, Vertex};
-pub use chain::{chain_loops, LooseElement};
-pub use chain_tree::ChainTree;
+pub use build::chain::chain_loops;
+pub use build::import::sniff;
+pub use build::samples;
 pub use draw::{draw_joints, push_loop_path, shape_document, shape_path};
-pub use element::{Arc, Element, Segment};
-pub use error::{Degeneracy, ElementRef, ShapeError};
-pub use import::sniff;
-pub use joints::{classify, turning_angle, JointKind};
-pub use options::ShapeOptions;
+pub use index::box_tree::BoxTree;
+pub use index::chain_tree::ChainTree;
+pub(crate) use index::element_index::ElementIndex;
+pub use model::bulge_loop::{winding_contribution, Loop, LoopKind, Vertex};
+pub use model::element::{Arc, Element, LooseElement, Segment};
+pub use model::error::{Degeneracy, ElementRef, ShapeError};
+pub use model::joints::{classify, turning_angle, JointKind};
+pub use model::options::ShapeOptions;
 pub use shape2d::{ElementSpec, Shape2d};
-pub(crate) use validate::ElementIndex;
 
 /// Largest absolute coordinate medax accepts, in model units (vertices and
 /// arc extents). Within it, products of coordinates stay far from `f64`

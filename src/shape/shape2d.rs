@@ -1,19 +1,19 @@
 //! The validated 2D shape: one outer loop and any number of holes.
 
-use super::bulge_loop::{Loop, Vertex};
-use super::chain::LooseElement;
-use super::error::{ElementRef, ShapeError};
-use super::joints::JointKind;
-use super::options::ShapeOptions;
-use super::validate::validate;
 use crate::kernel::{BBox, Point};
+use crate::shape::model::bulge_loop::{Loop, Vertex};
+use crate::shape::model::element::LooseElement;
+use crate::shape::model::error::{ElementRef, ShapeError};
+use crate::shape::model::joints::JointKind;
+use crate::shape::model::options::ShapeOptions;
+use crate::shape::validate::validate;
 use std::f64::consts::TAU;
 
 /// A shape bounded by segments and circular arcs: loop 0 is the outer
 /// boundary, loops 1.. are holes.
 ///
 /// Invariants (established by every constructor, relied on by every
-/// algorithm): all numbers finite and within ±[`MAX_COORDINATE`](super::MAX_COORDINATE);
+/// algorithm): all numbers finite and within ±[`MAX_COORDINATE`](crate::shape::MAX_COORDINATE);
 /// no element shorter than [`tolerance`](Self::tolerance); no two elements
 /// closer than the tolerance except consecutive ones at their shared vertex;
 /// no cusps; every hole inside the outer loop and outside every other hole;
@@ -116,9 +116,9 @@ impl Shape2d {
     /// boundary, then holes), and `curves`, open chains of k + 1 vertices
     /// each (the bulge of vertex i is that of element i, the last one's is
     /// ignored), which become the next loops, of kind
-    /// [`LoopKind::Curve`](super::LoopKind::Curve): 2k elements, the curve
+    /// [`LoopKind::Curve`](crate::shape::model::bulge_loop::LoopKind::Curve): 2k elements, the curve
     /// and its way back; then `points`, loops of kind
-    /// [`LoopKind::Point`](super::LoopKind::Point), one vertex each.
+    /// [`LoopKind::Point`](crate::shape::model::bulge_loop::LoopKind::Point), one vertex each.
     pub fn from_sites(
         loops: Vec<Vec<Vertex>>,
         curves: Vec<Vec<Vertex>>,
@@ -249,7 +249,7 @@ impl Shape2d {
     /// element they run over (see [`on_way_back`](Self::on_way_back)).
     pub fn input_element_index(&self, l: usize, k: usize) -> usize {
         let n = self.loops[l].len();
-        if self.loops[l].kind() == super::LoopKind::Curve {
+        if self.loops[l].kind() == crate::shape::model::bulge_loop::LoopKind::Curve {
             // The way back (stored elements n/2..n) runs over the curve's
             // elements in reverse: element n − 1 − k of the curve.
             return k.min(n - 1 - k);
@@ -265,7 +265,7 @@ impl Shape2d {
     /// stored element `v`).
     pub fn input_vertex_index(&self, l: usize, v: usize) -> usize {
         let n = self.loops[l].len();
-        if self.loops[l].kind() == super::LoopKind::Curve {
+        if self.loops[l].kind() == crate::shape::model::bulge_loop::LoopKind::Curve {
             // Vertex n/2 is the curve's far end; past it the way back.
             return v.min(n - v);
         }
@@ -281,11 +281,11 @@ impl Shape2d {
     /// way out and for every other kind of loop.
     pub fn on_way_back(&self, l: usize, k: usize) -> bool {
         let lp = &self.loops[l];
-        lp.kind() == super::LoopKind::Curve && 2 * k >= lp.len()
+        lp.kind() == crate::shape::model::bulge_loop::LoopKind::Curve && 2 * k >= lp.len()
     }
 
     /// What loop `l` bounds: a region or a curve site.
-    pub fn kind(&self, l: usize) -> super::LoopKind {
+    pub fn kind(&self, l: usize) -> crate::shape::model::bulge_loop::LoopKind {
         self.loops[l].kind()
     }
 

@@ -8,7 +8,7 @@ use crate::shape::Vertex;
 #[derive(Debug, Clone, PartialEq)]
 pub enum OffsetError {
     /// The distance is not finite, or an outer distance beyond
-    /// [`OffsetOptions::outer_reach`].
+    /// [`OffsetOptions::outer_reach`](crate::plane::OffsetOptions::outer_reach).
     BadDistance(f64),
     /// The reach for outer offsets is negative or not finite.
     BadReach(f64),
@@ -134,7 +134,7 @@ impl OffsetLayer {
     }
 
     /// The region of this layer that encloses region `r` of `deeper`, an
-    /// inner offset of the same [`Offsets`] at a larger distance. Read off
+    /// inner offset of the same [`Offsets`](crate::plane::Offsets) at a larger distance. Read off
     /// the axis: the piece of axis inside `r` lies above this layer's
     /// distance too, in exactly one of its regions.
     pub fn region_enclosing(&self, deeper: &OffsetLayer, r: usize) -> Option<usize> {

@@ -35,8 +35,8 @@ use crate::plane::medial::decompose::subshape::{
 use crate::plane::medial::decompose::tour::{Ranged, Span, Tour};
 use crate::plane::medial::disk::maximal::{DiskFinder, MaxDisk};
 use crate::plane::medial::disk::slide::slide_to_third;
-use crate::shape::samples::Mix;
 use crate::shape::{ElementRef, JointKind, Shape2d};
+use crate::util::mix::Mix;
 
 /// Attempts with different random points before a subshape counts as stuck.
 const ATTEMPTS: u32 = 12;

@@ -13,8 +13,8 @@ use crate::plane::medial::decompose::parts::{foot_at_convex_corner, parts_in, po
 use crate::plane::medial::decompose::subshape::{BoundaryPos, Cut, Piece};
 use crate::plane::medial::decompose::tour::{Ranged, Span, Tour};
 use crate::plane::medial::disk::maximal::DiskFinder;
-use crate::shape::samples::Mix;
 use crate::shape::{ElementRef, Shape2d};
+use crate::util::mix::Mix;
 
 /// A random reflex single point of `s` with its neighbouring auxiliary
 /// arcs' disks (before, after), or `None` (no such point, or one at the

@@ -3,6 +3,7 @@
 //! cycle by augmenting disks (2.3.1), random dividing disks down to leaves.
 
 pub(crate) mod augment;
+pub(crate) mod cut;
 pub(crate) mod divide;
 pub(crate) mod fan_cut;
 // Leaf dumps serve only the replay tools and tests.

@@ -15,8 +15,9 @@
 //! [`Subshape`]s.
 
 use crate::kernel::Point;
+use crate::plane::medial::decompose::cut::split_slots;
 use crate::plane::medial::decompose::subshape::{
-    along, chain_holds, split_slots, BoundaryPos, ChainParts, Cut, Piece, Slot, Subshape,
+    along, chain_holds, BoundaryPos, ChainParts, Cut, Piece, Slot, Subshape,
 };
 use crate::shape::{JointKind, Shape2d};
 use std::borrow::Cow;
@@ -341,7 +342,7 @@ mod tests {
         let tour = Tour::new(&shape, &aug.boundary);
         assert_eq!(tour.expand(&tour.root()), aug.boundary);
         let n = aug.boundary.pieces.len();
-        let mut rng = samples::Mix(5);
+        let mut rng = crate::util::mix::Mix(5);
         for _ in 0..200 {
             let (a, b) = (rng.below(n), rng.below(n));
             let (from, to) = (a.min(b), a.max(b));

@@ -13,12 +13,12 @@
 //! order while no two pieces in the set cross — and the first crossing ends
 //! the sweep.
 
-use super::bulge_loop::Loop;
-use super::element::Element;
-use super::error::ElementRef;
-use super::intersect::element_pair_approach;
-use super::sweep_status::SweepStatus;
 use crate::kernel::Point;
+use crate::shape::model::bulge_loop::Loop;
+use crate::shape::model::element::Element;
+use crate::shape::model::error::ElementRef;
+use crate::shape::validate::intersect::element_pair_approach;
+use crate::shape::validate::sweep_status::SweepStatus;
 use rayon::prelude::*;
 use std::cmp::Ordering;
 

@@ -6,21 +6,11 @@
 //! tolerance (reversing that element when needed) and snaps the gap shut by
 //! making the next element start exactly where the loop's vertex is.
 
-use super::bulge_loop::{Loop, Vertex};
-use super::error::{ElementRef, ShapeError};
 use crate::kernel::Point;
+use crate::shape::model::bulge_loop::{Loop, Vertex};
+use crate::shape::model::element::LooseElement;
+use crate::shape::model::error::{ElementRef, ShapeError};
 use std::collections::HashMap;
-
-/// An element with both end points and a bulge, not yet in a loop.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LooseElement {
-    /// Start point.
-    pub a: Point,
-    /// End point.
-    pub b: Point,
-    /// Bulge from `a` to `b` (0 = segment).
-    pub bulge: f64,
-}
 
 struct EndGrid {
     cell: f64,

@@ -1,6 +1,6 @@
 //! Classification of the joints between consecutive elements (thesis 2.2.1).
 
-use super::bulge_loop::Loop;
+use crate::shape::model::bulge_loop::Loop;
 
 /// What a loop does at a vertex, seen from the shape's interior.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

@@ -1,13 +1,13 @@
 //! Tolerances used when a shape is built and validated.
 
-/// Tolerances for building a [`Shape2d`](super::Shape2d). All lengths are in
+/// Tolerances for building a [`Shape2d`](crate::shape::shape2d::Shape2d). All lengths are in
 /// model units; `None` means "relative to the input's bounding-box diagonal".
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ShapeOptions {
     /// Elements closer than this count as touching, and elements shorter than
     /// this are degenerate. Default: `relative_tolerance × diagonal` of the
     /// vertices' bounding box. Never below
-    /// [`MIN_RELATIVE_TOLERANCE`](super::MIN_RELATIVE_TOLERANCE) × the largest
+    /// [`MIN_RELATIVE_TOLERANCE`](crate::shape::MIN_RELATIVE_TOLERANCE) × the largest
     /// coordinate magnitude (smaller values, 0 included, are raised to it).
     pub tolerance: Option<f64>,
     /// Relative tolerance used when `tolerance` is `None`. Default 1e-9.
@@ -70,8 +70,8 @@ impl ShapeOptions {
     }
 
     /// Checks that every tolerance is finite and non-negative and the angle below π/2.
-    pub fn check(&self) -> Result<(), super::ShapeError> {
-        let bad = |name: &str, v: f64| super::ShapeError::InvalidArgument {
+    pub fn check(&self) -> Result<(), crate::shape::model::error::ShapeError> {
+        let bad = |name: &str, v: f64| crate::shape::model::error::ShapeError::InvalidArgument {
             what: format!("option {name} = {v} must be finite and >= 0"),
         };
         for (name, v) in [
@@ -87,7 +87,7 @@ impl ShapeOptions {
             }
         }
         if self.max_radius_ratio.is_nan() || self.max_radius_ratio < 1.0 {
-            return Err(super::ShapeError::InvalidArgument {
+            return Err(crate::shape::model::error::ShapeError::InvalidArgument {
                 what: format!("option max_radius_ratio = {} must be >= 1", self.max_radius_ratio),
             });
         }
@@ -95,7 +95,7 @@ impl ShapeOptions {
             && self.angle_tolerance >= 0.0
             && self.angle_tolerance < std::f64::consts::FRAC_PI_2)
         {
-            return Err(super::ShapeError::InvalidArgument {
+            return Err(crate::shape::model::error::ShapeError::InvalidArgument {
                 what: format!("option angle_tolerance = {} must be in [0, π/2)", self.angle_tolerance),
             });
         }

@@ -17,12 +17,12 @@
 //! along its principal direction is as thin as the run (measured: axes 3×
 //! faster on stars of 3·10^4 vertices, 6× on combs of 2·10^4).
 
-use super::box_tree::Pending;
-use super::bulge_loop::Loop;
-use super::element::Element;
-use super::error::ElementRef;
 use crate::kernel::growing_disk::GrowingDisk;
 use crate::kernel::{BBox, Point};
+use crate::shape::index::box_tree::Pending;
+use crate::shape::model::bulge_loop::Loop;
+use crate::shape::model::element::Element;
+use crate::shape::model::error::ElementRef;
 
 /// Elements per leaf run: short enough that a leaf's capsule is tight,
 /// long enough that the tree costs little memory (a node is 144 bytes and
@@ -452,7 +452,7 @@ mod tests {
     fn first_contacts_agree_with_a_scan() {
         // Key: the radius at which the growing disk reaches an element's
         // start point, which lies in every box that holds the element.
-        let mut rng = samples::Mix(11);
+        let mut rng = crate::util::mix::Mix(11);
         for (s, t) in fixtures() {
             let lp = &s.loops()[0];
             for _ in 0..300 {
@@ -490,7 +490,7 @@ mod tests {
     }
 
     /// A random point in the shape's box and its distance to the boundary, by a scan.
-    fn probe(s: &Shape2d, rng: &mut samples::Mix) -> (Point, f64) {
+    fn probe(s: &Shape2d, rng: &mut crate::util::mix::Mix) -> (Point, f64) {
         let bb = s.bbox();
         let p = Point::new(bb.min.x + rng.next() * bb.width(), bb.min.y + rng.next() * bb.height());
         (p, s.loops()[0].elements().map(|e| e.closest_point(p).0).fold(f64::INFINITY, f64::min))
@@ -498,7 +498,7 @@ mod tests {
 
     #[test]
     fn closer_than_agrees_with_a_scan() {
-        let mut rng = samples::Mix(9);
+        let mut rng = crate::util::mix::Mix(9);
         for (s, t) in fixtures() {
             let (mut hits, mut misses) = (0, 0);
             for _ in 0..2000 {
@@ -529,7 +529,7 @@ mod tests {
 
     #[test]
     fn nearest_agrees_with_a_scan() {
-        let mut rng = samples::Mix(7);
+        let mut rng = crate::util::mix::Mix(7);
         for (s, t) in fixtures() {
             for _ in 0..500 {
                 let (p, scan) = probe(&s, &mut rng);

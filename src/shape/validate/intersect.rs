@@ -10,11 +10,11 @@
 //! discards spurious intersection points produced by ill-conditioned
 //! constructions (nearly tangent circles, nearly parallel lines).
 
-use super::bulge_loop::Loop;
-use super::bulge_loop::LoopKind;
-use super::element::Element;
-use super::error::ElementRef;
 use crate::kernel::{construct, Point};
+use crate::shape::model::bulge_loop::Loop;
+use crate::shape::model::bulge_loop::LoopKind;
+use crate::shape::model::element::Element;
+use crate::shape::model::error::ElementRef;
 
 /// Where elements `ra` and `rb` of `loops` cross or come within `tol`,
 /// ignoring the surroundings (64 × `tol`) of the vertices they share as

@@ -63,8 +63,8 @@ pub enum ShapeError {
         at: ElementRef,
     },
     /// A coordinate (of a vertex, or of an arc's extent, or an arc radius)
-    /// lies outside ±[`MAX_COORDINATE`](super::MAX_COORDINATE), or the whole
-    /// shape is smaller than [`MIN_EXTENT`](super::MIN_EXTENT) (then `value`
+    /// lies outside ±[`MAX_COORDINATE`](crate::shape::MAX_COORDINATE), or the whole
+    /// shape is smaller than [`MIN_EXTENT`](crate::shape::MIN_EXTENT) (then `value`
     /// is its diagonal and the element is loop 0 element 0).
     OutOfRange {
         /// The element.
@@ -173,8 +173,8 @@ impl fmt::Display for ShapeError {
                 write!(
                     f,
                     "{at}: value {value:e} is outside the supported range (coordinates and radii within ±{:e}, shape extent at least {:e})",
-                    super::MAX_COORDINATE,
-                    super::MIN_EXTENT
+                    crate::shape::MAX_COORDINATE,
+                    crate::shape::MIN_EXTENT
                 )
             }
             NotClosed { at, gap, position } => write!(

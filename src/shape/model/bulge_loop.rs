@@ -1,7 +1,7 @@
 //! A closed loop of elements stored as bulge vertices.
 
-use super::element::Element;
 use crate::kernel::{BBox, Kernel, Orientation, Point};
+use crate::shape::model::element::Element;
 
 /// A vertex of a loop: the start point of an element and that element's bulge.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -139,7 +139,7 @@ impl Loop {
         // Shoelace relative to the first vertex keeps the digits of shapes far
         // from the origin.
         let o = self.vertices.first().map(|v| v.p).unwrap_or_default();
-        super::per_element::chunked_sum(n, |i| {
+        crate::util::chunked::chunked_sum(n, |i| {
             let a = self.vertices[i].p - o;
             let b = self.vertices[(i + 1) % n].p - o;
             let chord = 0.5 * a.cross(b);
@@ -158,7 +158,7 @@ impl Loop {
 
     /// Total length.
     pub fn perimeter(&self) -> f64 {
-        super::per_element::chunked_sum(self.len(), |i| self.element(i).length())
+        crate::util::chunked::chunked_sum(self.len(), |i| self.element(i).length())
     }
 
     /// The same loop traversed the other way. Element `k` of the result is

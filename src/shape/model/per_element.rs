@@ -2,13 +2,11 @@
 //!
 //! Shapes come as one loop of a million elements or as half a million
 //! small loops; splitting the global id range into fixed chunks keeps both
-//! parallel, and fixed chunks keep floating-point sums reproducible.
+//! parallel (the chunks and the reproducible sums are `util::chunked`).
 
-use super::bulge_loop::Loop;
+use crate::shape::model::bulge_loop::Loop;
+use crate::util::chunked::CHUNK;
 use rayon::prelude::*;
-
-/// Elements per parallel task.
-const CHUNK: usize = 1 << 13;
 
 /// Global id of element 0 of each loop, plus the total at the end.
 pub(crate) fn offsets(loops: &[Loop]) -> Vec<usize> {
@@ -45,17 +43,6 @@ pub(crate) fn map_elements<T: Send>(loops: &[Loop], offsets: &[usize], f: impl F
         .collect()
 }
 
-/// Sum of `f(i)` over `0..n`, in fixed chunks summed in order, so the
-/// result does not depend on the number of threads.
-pub(crate) fn chunked_sum(n: usize, f: impl Fn(usize) -> f64 + Sync) -> f64 {
-    if n <= CHUNK {
-        return (0..n).map(f).sum();
-    }
-    let parts: Vec<f64> =
-        (0..n.div_ceil(CHUNK)).into_par_iter().map(|c| (c * CHUNK..((c + 1) * CHUNK).min(n)).map(&f).sum()).collect();
-    parts.into_iter().sum()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -72,13 +59,5 @@ mod tests {
         let want: Vec<(usize, usize)> =
             sizes.iter().enumerate().flat_map(|(l, &n)| (0..n).map(move |i| (l, i))).collect();
         assert_eq!(got, want);
-    }
-
-    #[test]
-    fn chunked_sum_matches_in_order_chunks() {
-        let f = |i: usize| 1.0 / (1.0 + i as f64);
-        let n = 100_000;
-        let want: f64 = (0..n).collect::<Vec<_>>().chunks(CHUNK).map(|c| c.iter().map(|&i| f(i)).sum::<f64>()).sum();
-        assert_eq!(chunked_sum(n, f), want);
     }
 }

@@ -5,18 +5,23 @@
 //! containment tests of holes (which then need only one point per hole).
 //! All positions and indices in errors refer to the loops as given.
 
-use super::box_tree::BoxTree;
-use super::bulge_loop::{Loop, LoopKind};
-use super::containment::check_holes;
-use super::element::Element;
-use super::error::{Degeneracy, ElementRef, ShapeError};
-use super::intersect::element_pair_approach;
-use super::joints::{classify, turning_angle, JointKind};
-use super::options::ShapeOptions;
-use super::per_element;
-use super::sweep::{sweep_intersections, SweepOutcome};
-use super::{MAX_COORDINATE, MIN_EXTENT, MIN_RELATIVE_TOLERANCE};
+pub(crate) mod containment;
+pub(crate) mod intersect;
+pub(crate) mod sweep;
+pub(crate) mod sweep_status;
+
 use crate::kernel::{BBox, Point};
+use crate::shape::index::element_index::ElementIndex;
+use crate::shape::model::bulge_loop::{Loop, LoopKind};
+use crate::shape::model::element::Element;
+use crate::shape::model::error::{Degeneracy, ElementRef, ShapeError};
+use crate::shape::model::joints::{classify, turning_angle, JointKind};
+use crate::shape::model::options::ShapeOptions;
+use crate::shape::model::per_element;
+use crate::shape::validate::containment::check_holes;
+use crate::shape::validate::intersect::element_pair_approach;
+use crate::shape::validate::sweep::{sweep_intersections, SweepOutcome};
+use crate::shape::{MAX_COORDINATE, MIN_EXTENT, MIN_RELATIVE_TOLERANCE};
 use std::ops::ControlFlow;
 
 /// The result of validation: normalised loops and what was learned on the way.
@@ -243,50 +248,6 @@ fn check_elements(loops: &mut [Loop], offsets: &[usize], tol: f64, flatten: &Fla
     Ok(flattened)
 }
 
-/// All elements of all loops in one box tree, with global ids.
-pub(crate) struct ElementIndex {
-    pub tree: BoxTree,
-    /// `offsets[l]` = global id of element 0 of loop `l`; one extra entry at the end.
-    pub offsets: Vec<usize>,
-    /// Loop of each global id, when there are many loops: a lookup is then
-    /// cheaper than a binary search over `offsets` (4 bytes per element).
-    loop_of: Option<Vec<u32>>,
-}
-
-/// From this many loops on, [`ElementIndex`] keeps a loop id per element.
-const LOOP_TABLE_MIN_LOOPS: usize = 16;
-
-impl ElementIndex {
-    /// Indexes elements with the given boxes (in global id order).
-    pub fn with_boxes(boxes: Vec<BBox>, offsets: Vec<usize>) -> ElementIndex {
-        let loop_of = (offsets.len() > LOOP_TABLE_MIN_LOOPS).then(|| {
-            offsets.windows(2).enumerate().flat_map(|(l, w)| std::iter::repeat_n(l as u32, w[1] - w[0])).collect()
-        });
-        ElementIndex { tree: BoxTree::new(boxes), offsets, loop_of }
-    }
-
-    /// Indexes every element of `loops`.
-    pub fn new(loops: &[Loop]) -> ElementIndex {
-        let offsets = per_element::offsets(loops);
-        let boxes = per_element::map_elements(loops, &offsets, |l, i| loops[l].element(i).bbox());
-        ElementIndex::with_boxes(boxes, offsets)
-    }
-
-    /// The global id of an element.
-    pub fn global(&self, r: ElementRef) -> usize {
-        self.offsets[r.loop_index] + r.element
-    }
-
-    /// Loop and element of a global id.
-    pub fn locate(&self, id: usize) -> ElementRef {
-        let l = match &self.loop_of {
-            Some(t) => t[id] as usize,
-            None => self.offsets.partition_point(|&o| o <= id) - 1,
-        };
-        at(l, id - self.offsets[l])
-    }
-}
-
 /// Mean candidate pairs per element the box tree may test before the sweep
 /// takes over: the tree is fast and parallel on ordinary boundaries, the
 /// sweep is O(n log n) on every boundary (dense spokes, combs) where element
@@ -362,7 +323,7 @@ fn tree_intersections(loops: &[Loop], index: &ElementIndex, tol: f64, budget: Op
 mod tests {
     use super::*;
     use crate::shape::samples;
-    use crate::shape::sweep::sweep_in_slabs;
+    use crate::shape::validate::sweep::sweep_in_slabs;
     use crate::shape::Vertex;
 
     /// The sweep and the exhaustive box-tree search must agree on whether a
@@ -374,7 +335,7 @@ mod tests {
         for seed in 0..300u64 {
             let n = 6 + (seed % 50) as usize;
             let mut l: Vec<Vertex> = samples::star_polygon(n, seed).remove(0);
-            let mut mix = samples::Mix(seed);
+            let mut mix = crate::util::mix::Mix(seed);
             let mut rnd = || mix.next();
             for v in l.iter_mut() {
                 if rnd() < 0.4 {
@@ -476,7 +437,7 @@ mod tests {
 
     #[test]
     fn random_holes_with_touches_agree_on_every_path() {
-        let mut mix = samples::Mix(0x2545_f491_4f6c_dd1d);
+        let mut mix = crate::util::mix::Mix(0x2545_f491_4f6c_dd1d);
         let mut rnd = || mix.next();
         let mut seen = [0usize; 2];
         for _ in 0..300 {

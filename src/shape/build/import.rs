@@ -1,11 +1,14 @@
 //! Building shapes from files: JSON, DXF and SVG.
 
-use super::chain::{chain_loops, outer_first, LooseElement};
-use super::shape2d::Shape2d;
-use super::{Loop, ShapeError, ShapeOptions, Vertex};
 use crate::io::svg_path::{PathSeg, SvgSubpath};
 use crate::io::{dxf, json, svg_path, Format, RawDrawing, RawPolyline};
 use crate::kernel::{BBox, Point};
+use crate::shape::build::chain::{chain_loops, outer_first};
+use crate::shape::model::bulge_loop::{Loop, Vertex};
+use crate::shape::model::element::LooseElement;
+use crate::shape::model::error::ShapeError;
+use crate::shape::model::options::ShapeOptions;
+use crate::shape::shape2d::Shape2d;
 use std::f64::consts::TAU;
 
 fn pt(p: [f64; 2]) -> Point {

@@ -361,6 +361,17 @@ impl Element {
     }
 }
 
+/// An element with both end points and a bulge, not yet in a loop.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LooseElement {
+    /// Start point.
+    pub a: Point,
+    /// End point.
+    pub b: Point,
+    /// Bulge from `a` to `b` (0 = segment).
+    pub bulge: f64,
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

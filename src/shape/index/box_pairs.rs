@@ -6,8 +6,8 @@
 //! a leaf, and a pair of nodes whose boxes are apart is dismissed with all
 //! the item pairs below it. The descent runs in parallel.
 
-use super::box_tree::BoxTree;
 use crate::kernel::BBox;
+use crate::shape::index::box_tree::BoxTree;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// More candidate pairs than the budget allowed were found.

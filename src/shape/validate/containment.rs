@@ -14,12 +14,12 @@
 //! vertex of one loop; the perturbed ray meets the one leaning further left
 //! (smaller dx/dy going up) first, which is the tie-break.
 
-use super::box_tree::BoxTree;
-use super::bulge_loop::{Loop, LoopKind};
-use super::element::Element;
-use super::error::ShapeError;
-use super::validate::ElementIndex;
 use crate::kernel::{BBox, Point};
+use crate::shape::index::box_tree::BoxTree;
+use crate::shape::index::element_index::ElementIndex;
+use crate::shape::model::bulge_loop::{Loop, LoopKind};
+use crate::shape::model::element::Element;
+use crate::shape::model::error::ShapeError;
 use rayon::prelude::*;
 use std::ops::ControlFlow;
 
@@ -357,7 +357,7 @@ mod tests {
 
     #[test]
     fn agrees_with_winding_numbers_on_aligned_grids() {
-        let mut mix = crate::shape::samples::Mix(99);
+        let mut mix = crate::util::mix::Mix(99);
         let mut rnd = || mix.next();
         let mut seen = [0usize; 3];
         for _ in 0..400 {

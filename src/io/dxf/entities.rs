@@ -1,0 +1,262 @@
+//! The entities read from the pairs: LWPOLYLINE, POLYLINE with its
+//! VERTEX records, LINE, ARC and CIRCLE, mirrored where the extrusion
+//! direction says so; sections other than ENTITIES skipped.
+
+use crate::io::dxf::pairs::{error, integer, number, Pair};
+use crate::io::{ParseError, RawArc, RawCircle, RawDrawing, RawLine, RawPolyline, RawVertex};
+
+/// POLYLINE flag bits of 3D polylines, polygon meshes and polyface meshes,
+/// which have no place in a 2D shape and are skipped.
+const POLYLINE_NOT_2D: i64 = 8 | 16 | 64;
+/// VERTEX flag bit of spline frame control points: they are not on the curve.
+const VERTEX_SPLINE_FRAME: i64 = 16;
+
+/// The groups of a simple entity that this reader uses. DXF assigns codes
+/// 10-59 to reals and 70-79 to integers in every entity, so parsing them all
+/// cannot reject a valid file.
+#[derive(Default)]
+struct Fields {
+    x: Option<f64>,
+    y: Option<f64>,
+    x2: Option<f64>,
+    y2: Option<f64>,
+    radius: Option<f64>,
+    bulge: Option<f64>,
+    start_deg: Option<f64>,
+    end_deg: Option<f64>,
+    flags: Option<i64>,
+    extrusion_z: Option<f64>,
+}
+
+impl Fields {
+    fn read(entity: &str, at: usize, groups: &[Pair]) -> Result<Fields, ParseError> {
+        let mut f = Fields::default();
+        for g in groups {
+            let slot = match g.code {
+                10 => &mut f.x,
+                20 => &mut f.y,
+                11 => &mut f.x2,
+                21 => &mut f.y2,
+                40 => &mut f.radius,
+                42 => &mut f.bulge,
+                50 => &mut f.start_deg,
+                51 => &mut f.end_deg,
+                230 => &mut f.extrusion_z,
+                70 => {
+                    f.flags = Some(integer(entity, at, g)?);
+                    continue;
+                }
+                _ => continue,
+            };
+            *slot = Some(number(entity, at, g)?);
+        }
+        Ok(f)
+    }
+
+    fn mirrored(&self) -> bool {
+        self.extrusion_z.is_some_and(|z| z < 0.0)
+    }
+}
+
+/// Unwraps a required group or says which one is missing.
+fn required(entity: &str, at: usize, value: Option<f64>, code: i32, what: &str) -> Result<f64, ParseError> {
+    value.ok_or_else(|| error(at, format!("{entity} at line {at} has no {what} (group {code})")))
+}
+
+/// A POLYLINE whose VERTEX entities are still being read.
+struct OpenPolyline {
+    polyline: RawPolyline,
+    /// 3D polyline or mesh: read past its vertices without keeping them.
+    skip: bool,
+    mirror: bool,
+}
+
+#[derive(Default, PartialEq)]
+enum Section {
+    /// Outside any SECTION: a bare entity list is read.
+    #[default]
+    None,
+    Entities,
+    /// Any other section: skipped.
+    Other,
+}
+
+#[derive(Default)]
+pub(crate) struct Reader {
+    pub(crate) out: RawDrawing,
+    section: Section,
+    polyline: Option<OpenPolyline>,
+}
+
+impl Reader {
+    /// Interprets one complete record: its `0` pair and the groups after it.
+    pub(crate) fn record(&mut self, head: &Pair, groups: &[Pair]) -> Result<(), ParseError> {
+        let name = head.value.trim().to_ascii_uppercase();
+        match name.as_str() {
+            "SECTION" => {
+                self.flush_polyline();
+                let is_entities = groups.iter().any(|g| g.code == 2 && g.value.trim().eq_ignore_ascii_case("ENTITIES"));
+                self.section = if is_entities { Section::Entities } else { Section::Other };
+                return Ok(());
+            }
+            "ENDSEC" => {
+                self.flush_polyline();
+                self.section = Section::None;
+                return Ok(());
+            }
+            _ => {}
+        }
+        if self.section == Section::Other {
+            return Ok(());
+        }
+        let at = head.line;
+        if name == "VERTEX" {
+            return self.vertex(at, groups);
+        }
+        // Any other entity ends a POLYLINE, also when its SEQEND is missing.
+        self.flush_polyline();
+        match name.as_str() {
+            "LWPOLYLINE" => self.lwpolyline(at, groups),
+            "POLYLINE" => {
+                let f = Fields::read("POLYLINE", at, groups)?;
+                let flags = f.flags.unwrap_or(0);
+                self.polyline = Some(OpenPolyline {
+                    polyline: RawPolyline { vertices: Vec::new(), closed: flags & 1 != 0, source: at },
+                    skip: flags & POLYLINE_NOT_2D != 0,
+                    mirror: f.mirrored(),
+                });
+                Ok(())
+            }
+            "LINE" => {
+                let f = Fields::read("LINE", at, groups)?;
+                // LINE endpoints are world coordinates: no mirroring.
+                let line = RawLine {
+                    a: [required("LINE", at, f.x, 10, "start x")?, required("LINE", at, f.y, 20, "start y")?],
+                    b: [required("LINE", at, f.x2, 11, "end x")?, required("LINE", at, f.y2, 21, "end y")?],
+                    source: at,
+                };
+                self.out.lines.push(line);
+                Ok(())
+            }
+            "ARC" => {
+                let f = Fields::read("ARC", at, groups)?;
+                let mut arc = RawArc {
+                    center: [required("ARC", at, f.x, 10, "centre x")?, required("ARC", at, f.y, 20, "centre y")?],
+                    radius: required("ARC", at, f.radius, 40, "radius")?,
+                    start_deg: required("ARC", at, f.start_deg, 50, "start angle")?,
+                    end_deg: required("ARC", at, f.end_deg, 51, "end angle")?,
+                    source: at,
+                };
+                if f.mirrored() {
+                    // Mirroring reverses the direction: the old end becomes the start.
+                    arc.center[0] = -arc.center[0];
+                    let (s, e) = (arc.start_deg, arc.end_deg);
+                    arc.start_deg = 180.0 - e;
+                    arc.end_deg = 180.0 - s;
+                }
+                self.out.arcs.push(arc);
+                Ok(())
+            }
+            "CIRCLE" => {
+                let f = Fields::read("CIRCLE", at, groups)?;
+                let mut circle = RawCircle {
+                    center: [
+                        required("CIRCLE", at, f.x, 10, "centre x")?,
+                        required("CIRCLE", at, f.y, 20, "centre y")?,
+                    ],
+                    radius: required("CIRCLE", at, f.radius, 40, "radius")?,
+                    source: at,
+                };
+                if f.mirrored() {
+                    circle.center[0] = -circle.center[0];
+                }
+                self.out.circles.push(circle);
+                Ok(())
+            }
+            // SEQEND only ends the POLYLINE, done above; the rest is not geometry we read.
+            _ => Ok(()),
+        }
+    }
+
+    fn vertex(&mut self, at: usize, groups: &[Pair]) -> Result<(), ParseError> {
+        // A VERTEX outside a POLYLINE is stray; a 3D one is skipped unread.
+        let Some(open) = self.polyline.as_mut() else {
+            return Ok(());
+        };
+        if open.skip {
+            return Ok(());
+        }
+        let f = Fields::read("VERTEX", at, groups)?;
+        if f.flags.unwrap_or(0) & VERTEX_SPLINE_FRAME != 0 {
+            return Ok(());
+        }
+        let mut v = RawVertex {
+            x: required("VERTEX", at, f.x, 10, "x")?,
+            y: required("VERTEX", at, f.y, 20, "y")?,
+            bulge: f.bulge.unwrap_or(0.0),
+        };
+        if open.mirror {
+            v.x = -v.x;
+            v.bulge = -v.bulge;
+        }
+        open.polyline.vertices.push(v);
+        Ok(())
+    }
+
+    fn lwpolyline(&mut self, at: usize, groups: &[Pair]) -> Result<(), ParseError> {
+        const E: &str = "LWPOLYLINE";
+        // Group 90 (vertex count) is not trusted: the 10 groups are the vertices.
+        let mut vertices: Vec<RawVertex> = Vec::new();
+        // Line of the latest 10 group while its 20 has not been seen.
+        let mut missing_y: Option<usize> = None;
+        let (mut closed, mut mirror) = (false, false);
+        for g in groups {
+            match g.code {
+                10 => {
+                    if let Some(l) = missing_y {
+                        return Err(error(l, format!("{E} at line {at}: vertex x (group 10) has no y (group 20)")));
+                    }
+                    vertices.push(RawVertex { x: number(E, at, g)?, y: 0.0, bulge: 0.0 });
+                    missing_y = Some(g.line);
+                }
+                20 | 42 => {
+                    let value = number(E, at, g)?;
+                    let Some(v) = vertices.last_mut() else {
+                        let msg =
+                            format!("{E} at line {at}: group {} comes before the first vertex x (group 10)", g.code);
+                        return Err(error(g.line, msg));
+                    };
+                    if g.code == 20 {
+                        v.y = value;
+                        missing_y = None;
+                    } else {
+                        v.bulge = value;
+                    }
+                }
+                70 => closed = integer(E, at, g)? & 1 != 0,
+                230 => mirror = number(E, at, g)? < 0.0,
+                _ => {}
+            }
+        }
+        if let Some(l) = missing_y {
+            return Err(error(l, format!("{E} at line {at}: vertex x (group 10) has no y (group 20)")));
+        }
+        if mirror {
+            for v in &mut vertices {
+                v.x = -v.x;
+                v.bulge = -v.bulge;
+            }
+        }
+        self.out.polylines.push(RawPolyline { vertices, closed, source: at });
+        Ok(())
+    }
+
+    /// Ends the open POLYLINE, if any, keeping it unless it is 3D.
+    pub(crate) fn flush_polyline(&mut self) {
+        if let Some(open) = self.polyline.take() {
+            if !open.skip {
+                self.out.polylines.push(open.polyline);
+            }
+        }
+    }
+}

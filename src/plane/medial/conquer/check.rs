@@ -1,0 +1,127 @@
+//! The result checked before it is returned (a breakdown is reported,
+//! never a wrong axis): connected with one independent cycle per hole, a
+//! corner node at every convex vertex, every disk maximal and touching
+//! the primitives of its edges.
+
+use crate::kernel::{AxisKernel, Contact, Point};
+use crate::plane::axis::{AxisEdge, MedialAxis2d, NodeKind};
+use crate::plane::medial::conquer::error::AxisError;
+use crate::plane::medial::disk::maximal::DiskFinder;
+use crate::shape::{JointKind, Shape2d};
+use rayon::prelude::*;
+
+/// Where along each edge (fractions of its parameter range) [`check_disks`]
+/// verifies the disk: the middle, and close to both ends, where a wrong
+/// footpoint range shows first.
+const EDGE_CHECKS: [f64; 3] = [1.0 / 64.0, 0.5, 63.0 / 64.0];
+
+/// Every node's disk and the disks at interior points of every edge must hold
+/// none of the boundary (emptiness queries on the shared index, independent
+/// of how the axis was built) and touch both primitives of the edge
+/// (distance to the primitive itself), which makes them touch the boundary;
+/// a node without edges must have its nearest element on its circle. A wrong
+/// pair of primitives on an edge, or a node placed off its edges, shows up
+/// here and is reported, not returned.
+pub(crate) fn check_disks<K: AxisKernel>(finder: &DiskFinder<K>, axis: &MedialAxis2d) -> Result<(), AxisError> {
+    let shape = finder.shape();
+    let slack = 64.0 * shape.tolerance();
+    let k = finder.kernel();
+    // Empty; that the disk touches the boundary follows from touching
+    // the primitives of its edges (checked below), and for a node without
+    // edges (a circle's centre) from its nearest element.
+    let bad = |c: Point, r: f64| finder.intruder(c, r, slack).is_some();
+    let deg = axis.degrees();
+    let untouched = |v: usize| {
+        let n = &axis.nodes[v];
+        deg[v] == 0 && finder.nearest(n.point).is_none_or(|(_, d)| k.contact(d, n.radius, slack) != Contact::Touching)
+    };
+    if let Some(n) = (0..axis.nodes.len())
+        .into_par_iter()
+        .find_any(|&v| bad(axis.nodes[v].point, axis.nodes[v].radius) || untouched(v))
+        .map(|v| &axis.nodes[v])
+    {
+        return Err(AxisError::Numerical(n.point, "a node's disk is not maximal"));
+    }
+    // Every disk of an edge, its end nodes' included, touches both of the
+    // edge's primitives (a node placed where only two of a branch's three
+    // primitives are touched is a maximal disk, but not that branch).
+    let apart = |e: &AxisEdge, c: Point, r: f64| {
+        e.sites.iter().any(|p| k.contact(p.distance(shape, c), r, slack) != Contact::Touching)
+    };
+    let astray = axis.edges.par_iter().find_map_any(|e| {
+        [e.from, e.to].into_iter().map(|v| &axis.nodes[v]).find(|n| apart(e, n.point, n.radius)).map(|n| n.point)
+    });
+    if let Some(p) = astray {
+        return Err(AxisError::Numerical(p, "a node's disk misses a primitive of its edge"));
+    }
+    let wrong = axis.edges.par_iter().find_map_any(|e| {
+        EDGE_CHECKS.iter().find_map(|&s| match e.eval(shape, &axis.nodes, s) {
+            Some((c, r)) if !bad(c, r) && !apart(e, c, r) => None,
+            Some((c, _)) => Some(c),
+            None => Some(axis.nodes[e.from].point),
+        })
+    });
+    match wrong {
+        Some(p) => Err(AxisError::Numerical(p, "an edge's disks are not maximal")),
+        None => Ok(()),
+    }
+}
+
+/// The representative of `x` in a union-find forest (with path halving).
+pub(crate) fn root(parent: &mut [usize], mut x: usize) -> usize {
+    while parent[x] != x {
+        parent[x] = parent[parent[x]];
+        x = parent[x];
+    }
+    x
+}
+
+/// The axis of a shape with h holes is connected with exactly h
+/// independent cycles (a tree when h = 0); anything else means the
+/// subshapes were glued from inconsistent pieces, which is reported rather
+/// than returned.
+pub(crate) fn check_graph(axis: &MedialAxis2d, holes: usize) -> Result<(), AxisError> {
+    let n = axis.nodes.len();
+    let mut parent: Vec<usize> = (0..n).collect();
+    let mut cycles = 0;
+    for e in &axis.edges {
+        let (a, b) = (root(&mut parent, e.from), root(&mut parent, e.to));
+        if a == b {
+            cycles += 1;
+            if cycles > holes {
+                return Err(AxisError::Numerical(axis.nodes[e.from].point, "the axis closed a cycle too many"));
+            }
+        }
+        parent[a] = b;
+    }
+    if n > 0 && axis.edges.len() + 1 != n + holes {
+        let lonely = (0..n).find(|&v| root(&mut parent, v) != root(&mut parent, 0)).unwrap_or(0);
+        return Err(AxisError::Numerical(axis.nodes[lonely].point, "the axis fell apart into pieces"));
+    }
+    Ok(())
+}
+
+/// Every subtree of the axis ends in leaves, and on a polygon every leaf
+/// is a convex corner: one corner node per convex vertex, each at its
+/// vertex, is what shows that no piece of the axis went missing between
+/// subshapes (the graph check cannot: the rest of a tree is a tree).
+pub(crate) fn check_corners(shape: &Shape2d, axis: &MedialAxis2d) -> Result<(), AxisError> {
+    let mut at: Vec<Point> = axis.nodes.iter().filter(|n| n.kind == NodeKind::Corner).map(|n| n.point).collect();
+    if at.len() == shape.joint_counts()[JointKind::Convex as usize] {
+        return Ok(());
+    }
+    // Report a convex vertex without its corner node (corners sorted by x).
+    let tol = shape.tolerance();
+    at.sort_by(|a, b| a.x.total_cmp(&b.x));
+    let has_corner = |p: Point| {
+        let first = at.partition_point(|q| q.x < p.x - tol);
+        at[first..].iter().take_while(|q| q.x <= p.x + tol).any(|q| q.dist(p) <= tol)
+    };
+    let missing = shape.loops().iter().enumerate().find_map(|(l, lp)| {
+        (0..lp.len())
+            .map(|v| lp.vertices()[v].p)
+            .enumerate()
+            .find_map(|(v, p)| (shape.joint(l, v) == JointKind::Convex && !has_corner(p)).then_some(p))
+    });
+    Err(AxisError::Numerical(missing.unwrap_or_default(), "a convex corner has no axis"))
+}

@@ -1,0 +1,131 @@
+//! Gluing (thesis 2.2.4): the leaves' axes become one graph, a node per
+//! dividing disk (a disk met twice, from both sides, is one node), then the
+//! graph surgery of `merge.rs`, node kinds from the final degrees and the
+//! graph check.
+
+use crate::kernel::AxisKernel;
+use crate::plane::axis::{edge_kind, AxisEdge, AxisNode, MedialAxis2d, NodeKind, Primitive};
+use crate::plane::medial::base_case::{EventKind, LocalAxis};
+use crate::plane::medial::conquer::check::check_graph;
+use crate::plane::medial::conquer::error::AxisError;
+use crate::plane::medial::conquer::merge::{merge_coinciding_branches, merge_pass_through, polish_branches};
+use crate::plane::medial::decompose::subshape::Cut;
+use crate::plane::medial::disk::maximal::DiskFinder;
+
+/// Dividing disks whose centres and radii agree within this many
+/// tolerances are one disk met twice.
+const SAME_DISK: f64 = 64.0;
+
+/// Glues the axes of the subshapes (`locals`) at the centres of the
+/// dividing disks `cuts`; `finder` indexes the shape they were made of.
+pub fn glue<K: AxisKernel>(
+    finder: &DiskFinder<K>,
+    cuts: &[Cut],
+    locals: &[LocalAxis],
+) -> Result<MedialAxis2d, AxisError> {
+    let shape = finder.shape();
+    let tol = shape.tolerance();
+    let mut nodes: Vec<AxisNode> = Vec::new();
+    let mut port_node: Vec<Option<usize>> = vec![None; cuts.len()];
+    // Dividing disks found by sliding (maxdisk*) agree to about 1e-8 of
+    // the diagonal; disks closer than this are one node.
+    let same_as = coinciding_cuts(cuts, SAME_DISK * tol);
+    let mut edges: Vec<AxisEdge> = Vec::new();
+    let mut is_port: Vec<bool> = Vec::new();
+    let mut is_joint: Vec<bool> = Vec::new();
+    for local in locals {
+        let ids: Vec<usize> = local
+            .nodes
+            .iter()
+            .map(|n| {
+                let make = |nodes: &mut Vec<AxisNode>, is_port: &mut Vec<bool>, port: bool| {
+                    // Kinds are settled from the degrees once all is glued.
+                    nodes.push(AxisNode { point: n.center, radius: n.radius, kind: NodeKind::Joint });
+                    is_port.push(port);
+                    nodes.len() - 1
+                };
+                match n.kind {
+                    EventKind::Port(c) => {
+                        *port_node[same_as[c]].get_or_insert_with(|| make(&mut nodes, &mut is_port, true))
+                    }
+                    _ => {
+                        let id = make(&mut nodes, &mut is_port, false);
+                        is_joint.resize(id + 1, false);
+                        is_joint[id] = n.kind == EventKind::Joint;
+                        id
+                    }
+                }
+            })
+            .collect();
+        for e in &local.edges {
+            edges.push(AxisEdge {
+                from: ids[e.from],
+                to: ids[e.to],
+                sites: e.sites,
+                params: e.params,
+                kind: edge_kind(shape, e.sites[0], e.sites[1]),
+            });
+        }
+    }
+    // Two subshapes that both hold the same stretch of axis (between two
+    // disks met twice) give the same edge twice: keep one.
+    let mut seen: std::collections::HashSet<(usize, usize, [Primitive; 2])> = std::collections::HashSet::new();
+    edges.retain(|e| {
+        let (a, b, s) = if e.from <= e.to { (e.from, e.to, e.sites) } else { (e.to, e.from, [e.sites[1], e.sites[0]]) };
+        e.from != e.to && seen.insert((a, b, s))
+    });
+    let mut axis = MedialAxis2d { nodes, edges };
+    is_joint.resize(axis.nodes.len(), false);
+    merge_pass_through(shape, &mut axis, &is_port, &is_joint);
+    classify(&mut axis, tol);
+    merge_coinciding_branches(shape, &mut axis, SAME_DISK * tol);
+    classify(&mut axis, tol);
+    polish_branches(finder.kernel(), shape, &mut axis);
+    check_graph(&axis, shape.loops().len() - 1)?;
+    Ok(axis)
+}
+
+/// For each dividing disk, the first one that is the same disk (centre and
+/// radius within `tol`): the divide step can meet one disk twice, from two
+/// sides, and both must be one node.
+fn coinciding_cuts(cuts: &[Cut], tol: f64) -> Vec<usize> {
+    use std::collections::HashMap;
+    let cell = |x: f64| (x / (4.0 * tol)).floor() as i64;
+    let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+    let mut out = Vec::with_capacity(cuts.len());
+    for (i, c) in cuts.iter().enumerate() {
+        let (gx, gy) = (cell(c.center.x), cell(c.center.y));
+        let found = (-1..=1)
+            .flat_map(|dx| (-1..=1).map(move |dy| (gx + dx, gy + dy)))
+            .filter_map(|k| grid.get(&k))
+            .flatten()
+            .copied()
+            .find(|&j| cuts[j].center.dist(c.center) <= tol && (cuts[j].radius - c.radius).abs() <= tol);
+        match found {
+            Some(j) => out.push(j),
+            None => {
+                grid.entry((gx, gy)).or_default().push(i);
+                out.push(i);
+            }
+        }
+    }
+    out
+}
+
+/// Node kinds from the final degrees. An end whose disk is within the
+/// tolerance `tol` of radius 0 is a convex corner (a dividing disk that
+/// small, in a needle's tip, is that corner's node).
+fn classify(axis: &mut MedialAxis2d, tol: f64) {
+    let deg = axis.degrees();
+    for (v, node) in axis.nodes.iter_mut().enumerate() {
+        node.kind = if node.radius == 0.0 || (deg[v] <= 1 && node.radius <= tol) {
+            NodeKind::Corner
+        } else if deg[v] >= 3 {
+            NodeKind::Branch
+        } else if deg[v] <= 1 {
+            NodeKind::Leaf
+        } else {
+            NodeKind::Joint
+        };
+    }
+}

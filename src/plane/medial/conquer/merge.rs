@@ -1,0 +1,251 @@
+//! Graph surgery on the glued axis: a dividing disk that only passes an
+//! edge through is no node (its two edges lie on one conic and become one),
+//! branch points a few tolerances apart are one node of higher valency
+//! (multi-branching), and branch points found by sliding are replaced by
+//! the tritangent disk where the two agree.
+
+use crate::kernel::Disk;
+use crate::kernel::{AxisKernel, Point};
+use crate::plane::axis::{AxisEdge, MedialAxis2d, NodeKind, Primitive};
+use crate::plane::medial::conquer::check::root;
+use crate::shape::Shape2d;
+
+/// Same unordered pair of primitives.
+fn same_pair(a: [Primitive; 2], b: [Primitive; 2]) -> bool {
+    a == b || a == [b[1], b[0]]
+}
+
+/// Removes dividing-disk nodes that only pass an edge through, merging the
+/// two edges, and compacts the node list.
+pub(crate) fn merge_pass_through(shape: &Shape2d, axis: &mut MedialAxis2d, is_port: &[bool], is_joint: &[bool]) {
+    let n = axis.nodes.len();
+    let mut at: Vec<Vec<usize>> = vec![Vec::new(); n];
+    for (i, e) in axis.edges.iter().enumerate() {
+        at[e.from].push(i);
+        at[e.to].push(i);
+    }
+    let mut alive = vec![true; axis.edges.len()];
+    let mut keep = vec![true; n];
+    for v in 0..n {
+        if !is_port[v] && !is_joint[v] {
+            continue;
+        }
+        let live: Vec<usize> = at[v].iter().copied().filter(|&i| alive[i]).collect();
+        if live.len() != 2 || live[0] == live[1] {
+            continue;
+        }
+        let (mut e1, mut e2) = (axis.edges[live[0]], axis.edges[live[1]]);
+        if !same_pair(e1.sites, e2.sites) {
+            continue;
+        }
+        // A joint with the same pair on both sides: only where a point
+        // site's fan was cut (base_case::POINT_SPLITS); other joints stay.
+        let point_site = |p: &Primitive| matches!(*p, Primitive::Vertex { loop_index, .. } if shape.kind(loop_index) == crate::shape::LoopKind::Point);
+        if !is_port[v] && !e1.sites.iter().any(point_site) {
+            continue;
+        }
+        // Orient e1 into v and e2 out of v, with e2's sites in e1's order.
+        if e1.to != v {
+            e1 = reversed(e1);
+        }
+        if e2.from != v {
+            e2 = reversed(e2);
+        }
+        if e1.sites != e2.sites {
+            // Left and right swapped: the walk turned back (never on a
+            // valid axis); leave the node in place.
+            continue;
+        }
+        // Angles (a vertex's or an arc's parameter) go on from e1 to e2
+        // without a jump of a whole turn: a point site's own augmenting
+        // disk sits where its fan's angles wrap round.
+        let on = |k: usize| {
+            let (end, start, stop) = (e1.params[k].1, e2.params[k].0, e2.params[k].1);
+            match e1.sites[k] {
+                Primitive::Vertex { .. } => {
+                    let turns = ((end - start) / std::f64::consts::TAU).round() * std::f64::consts::TAU;
+                    stop + turns
+                }
+                Primitive::Element(_) => stop,
+            }
+        };
+        let merged = AxisEdge {
+            from: e1.from,
+            to: e2.to,
+            sites: e1.sites,
+            params: [(e1.params[0].0, on(0)), (e1.params[1].0, on(1))],
+            kind: e1.kind,
+        };
+        alive[live[1]] = false;
+        axis.edges[live[0]] = merged;
+        keep[v] = false;
+        // The far end of e2 now sees the merged edge.
+        for end in [merged.from, merged.to] {
+            for slot in at[end].iter_mut() {
+                if *slot == live[1] {
+                    *slot = live[0];
+                }
+            }
+        }
+    }
+    let mut new_id = vec![usize::MAX; n];
+    let mut nodes = Vec::new();
+    for v in 0..n {
+        if keep[v] {
+            new_id[v] = nodes.len();
+            nodes.push(axis.nodes[v]);
+        }
+    }
+    let edges = axis
+        .edges
+        .iter()
+        .zip(&alive)
+        .filter(|(_, &a)| a)
+        .map(|(e, _)| AxisEdge { from: new_id[e.from], to: new_id[e.to], ..*e })
+        .collect();
+    axis.nodes = nodes;
+    axis.edges = edges;
+}
+
+/// Multi-branching (thesis 2.2.2.2): a disk touching m ≥ 4 primitives is
+/// one node of valency m. Where the m contacts are cocircular only within
+/// rounding (the centre of a shape with m-fold symmetry), the base cases
+/// find several branch points a few tolerances apart, joined by edges of
+/// that length: branch nodes joined by an edge whose disks agree within
+/// `tol` (centre and radius) are one node, the one of them (a disk that
+/// was constructed, not an average that would touch nothing) that best
+/// touches all the primitives of their other edges.
+pub(crate) fn merge_coinciding_branches(shape: &Shape2d, axis: &mut MedialAxis2d, tol: f64) {
+    let n = axis.nodes.len();
+    let mut parent: Vec<usize> = (0..n).collect();
+    let nodes = &axis.nodes;
+    let close = |a: usize, b: usize| {
+        let (p, q) = (&nodes[a], &nodes[b]);
+        p.kind == NodeKind::Branch
+            && q.kind == NodeKind::Branch
+            && p.point.dist(q.point) <= tol
+            && (p.radius - q.radius).abs() <= tol
+    };
+    let inner: Vec<bool> = axis.edges.iter().map(|e| close(e.from, e.to)).collect();
+    if !inner.contains(&true) {
+        return;
+    }
+    for (e, _) in axis.edges.iter().zip(&inner).filter(|(_, &i)| i) {
+        let (a, b) = (root(&mut parent, e.from), root(&mut parent, e.to));
+        parent[a.max(b)] = a.min(b);
+    }
+    // The group's node is the member whose disk fits every primitive of
+    // the group's outer edges best; a group that no member fits within
+    // half the final check's slack stays apart.
+    let prims = primitives_at(axis, |k| !inner[k], |v| root(&mut parent, v));
+    let misfit = |v: usize, ps: &[Primitive]| {
+        let node = &axis.nodes[v];
+        ps.iter().map(|p| (p.distance(shape, node.point) - node.radius).abs()).fold(0.0, f64::max)
+    };
+    let mut best: Vec<Option<(f64, usize)>> = vec![None; n];
+    for v in 0..n {
+        let g = root(&mut parent, v);
+        let m = misfit(v, &prims[g]);
+        if best[g].is_none_or(|(bm, _)| m < bm) {
+            best[g] = Some((m, v));
+        }
+    }
+    let fits = |g: usize| best[g].is_some_and(|(m, _)| m <= 0.5 * tol);
+    let mut new_id = vec![usize::MAX; n];
+    let mut kept = Vec::new();
+    for (v, id) in new_id.iter_mut().enumerate() {
+        let g = root(&mut parent, v);
+        let alone = !fits(g);
+        if alone || g == v {
+            *id = kept.len();
+            kept.push(axis.nodes[if alone { v } else { best[g].map_or(v, |b| b.1) }]);
+        }
+    }
+    let mut edges = Vec::with_capacity(axis.edges.len());
+    for (e, &i) in axis.edges.iter().zip(&inner) {
+        let (ga, gb) = (root(&mut parent, e.from), root(&mut parent, e.to));
+        if i && fits(ga) {
+            continue;
+        }
+        let id = |v: usize, g: usize| if fits(g) { new_id[g] } else { new_id[v] };
+        edges.push(AxisEdge { from: id(e.from, ga), to: id(e.to, gb), ..*e });
+    }
+    axis.edges = edges;
+    axis.nodes = kept;
+}
+
+/// The primitives of the edges `keep(edge index)` at each of their ends,
+/// gathered at `group(node)` (each primitive once, in edge order).
+fn primitives_at(
+    axis: &MedialAxis2d,
+    keep: impl Fn(usize) -> bool,
+    mut group: impl FnMut(usize) -> usize,
+) -> Vec<Vec<Primitive>> {
+    let mut prims: Vec<Vec<Primitive>> = vec![Vec::new(); axis.nodes.len()];
+    for (_, e) in axis.edges.iter().enumerate().filter(|(k, _)| keep(*k)) {
+        for v in [e.from, e.to] {
+            let g = group(v);
+            for p in e.sites {
+                if !prims[g].contains(&p) {
+                    prims[g].push(p);
+                }
+            }
+        }
+    }
+    prims
+}
+
+/// The edge walked the other way.
+fn reversed(e: AxisEdge) -> AxisEdge {
+    AxisEdge {
+        from: e.to,
+        to: e.from,
+        sites: [e.sites[1], e.sites[0]],
+        params: [(e.params[1].1, e.params[1].0), (e.params[0].1, e.params[0].0)],
+        kind: e.kind,
+    }
+}
+
+/// Branch points that are dividing disks come from `maxdisk*`'s slide,
+/// accurate to about 1e-8 of the diagonal; the disk tangent to three of
+/// the node's primitives (Apollonius) is accurate to rounding. Replaced
+/// when the two agree to within 1e-6 of the disk's radius and the new disk
+/// fits every primitive of the node (otherwise the triples are
+/// ill-conditioned and the slide's disk stays).
+pub(crate) fn polish_branches(kernel: &impl AxisKernel, shape: &Shape2d, axis: &mut MedialAxis2d) {
+    let prims = primitives_at(axis, |_| true, |v| v);
+    for (node, ps) in axis.nodes.iter_mut().zip(&prims) {
+        if node.kind != NodeKind::Branch || ps.len() < 3 {
+            continue;
+        }
+        // Of the disks tangent to three of the node's primitives (every
+        // triple of the first eight), the one nearest to fitting them all.
+        let sites: Vec<_> = ps.iter().take(8).map(|p| p.site(shape)).collect();
+        let misfit = |c: Point, r: f64| ps.iter().map(|p| p.site(shape).defect(c, r).abs()).fold(0.0, f64::max);
+        let near = |c: Point, r: f64| {
+            c.dist(node.point) <= 1e-6 * node.radius && (r - node.radius).abs() <= 1e-6 * node.radius
+        };
+        let mut best: Option<(f64, Point, f64)> = None;
+        for i in 0..sites.len() {
+            for j in i + 1..sites.len() {
+                for k in j + 1..sites.len() {
+                    for Disk { center: c, radius: r } in kernel.tritangent_disks([sites[i], sites[j], sites[k]]) {
+                        let m = misfit(c, r);
+                        if near(c, r) && best.is_none_or(|b| m < b.0) {
+                            best = Some((m, c, r));
+                        }
+                    }
+                }
+            }
+        }
+        // All of the node's primitives must fit the new disk (a node of
+        // four or more primitives cocircular only within the tolerance
+        // keeps its own).
+        if let Some((m, c, r)) = best {
+            if m <= shape.tolerance() {
+                node.point = c;
+                node.radius = r;
+            }
+        }
+    }
+}

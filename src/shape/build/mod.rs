@@ -1,0 +1,7 @@
+//! Shapes from what files and callers hold: loose elements chained into
+//! loops, files (JSON, DXF, SVG) read into shapes, and generated sample
+//! shapes for tests, benchmarks and demos.
+
+pub(crate) mod chain;
+pub(crate) mod import;
+pub mod samples;
