@@ -60,22 +60,40 @@ impl Tolerance {
         4.0 * self.touch
     }
 
-    /// Two dividing disks whose centres and radii agree within this are one
-    /// disk met twice by the conquer step, 64τ.
+    /// Two dividing disks (or two branch points) whose centres and radii
+    /// agree within this are one disk met twice by the conquer step, 64τ:
+    /// disks found by sliding (`maxdisk*`) agree to about 1e-8 of the
+    /// diagonal.
     pub fn same_disk(self) -> f64 {
         64.0 * self.touch
     }
 
-    /// The side of the grid cells that bucket disk centres when coinciding
-    /// nodes are merged, 4τ (neighbouring cells are searched too).
+    /// The side of the grid cells that bucket dividing disks' centres when
+    /// coinciding ones are found, four times [`same_disk`](Self::same_disk)
+    /// (neighbouring cells are searched too).
     pub fn merge_cell(self) -> f64 {
-        4.0 * self.touch
+        4.0 * self.same_disk()
     }
 
-    /// A gluing candidate within this of the node it is glued to fits,
-    /// τ/2.
-    pub fn glue_fit(self) -> f64 {
-        0.5 * self.touch
+    /// The overlap (model units) by which the final check lets a boundary
+    /// element enter a disk of the finished axis before it reports the
+    /// axis as wrong, 64τ.
+    pub fn final_check(self) -> f64 {
+        64.0 * self.touch
+    }
+
+    /// A group of coinciding branch points is one node when one member's
+    /// disk fits every primitive of the group within this (model units),
+    /// half the final check's slack.
+    pub fn branch_group_fit(self) -> f64 {
+        0.5 * self.final_check()
+    }
+
+    /// A disk tangent to three of a branch point's primitives replaces it
+    /// (polishing) only when centre and radius move by less than this
+    /// fraction of its radius, 1e-6.
+    pub fn polish_reach() -> f64 {
+        1e-6
     }
 
     /// How far outside the range it must lie in (in length along the

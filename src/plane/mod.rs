@@ -25,7 +25,7 @@ pub(crate) mod voronoi;
 
 pub use axis::draw::AxisPicture;
 pub use axis::json::site_json;
-pub use axis::{AxisEdge, AxisNode, MedialAxis2d, NodeKind, Primitive};
+pub use axis::{AxisEdge, AxisNode, MedialAxis2d, NodeKind, Primitive, MIN_RELATIVE_SAMPLE_TOLERANCE};
 pub use medial::conquer::{medial_axis, medial_axis_with, AxisError, AxisOptions};
 pub use medial::decompose::subshape::{BoundaryPos, Cut, Piece, Subshape};
 pub use medial::disk::maximal::{DiskFinder, Footpoint, MaxDisk};

@@ -3,6 +3,7 @@
 //! corner node at every convex vertex, every disk maximal and touching
 //! the primitives of its edges.
 
+use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{AxisKernel, Contact, Point};
 use crate::plane::axis::{AxisEdge, MedialAxis2d, NodeKind};
 use crate::plane::medial::conquer::error::AxisError;
@@ -24,7 +25,7 @@ const EDGE_CHECKS: [f64; 3] = [1.0 / 64.0, 0.5, 63.0 / 64.0];
 /// here and is reported, not returned.
 pub(crate) fn check_disks<K: AxisKernel>(finder: &DiskFinder<K>, axis: &MedialAxis2d) -> Result<(), AxisError> {
     let shape = finder.shape();
-    let slack = 64.0 * shape.tolerance();
+    let slack = Tolerance::new(shape.tolerance()).final_check();
     let k = finder.kernel();
     // Empty; that the disk touches the boundary follows from touching
     // the primitives of its edges (checked below), and for a node without

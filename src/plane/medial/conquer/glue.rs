@@ -3,6 +3,7 @@
 //! graph surgery of `merge.rs`, node kinds from the final degrees and the
 //! graph check.
 
+use crate::kernel::tolerance::Tolerance;
 use crate::kernel::AxisKernel;
 use crate::plane::axis::{edge_kind, AxisEdge, AxisNode, MedialAxis2d, NodeKind, Primitive};
 use crate::plane::medial::base_case::{EventKind, LocalAxis};
@@ -11,10 +12,6 @@ use crate::plane::medial::conquer::error::AxisError;
 use crate::plane::medial::conquer::merge::{merge_coinciding_branches, merge_pass_through, polish_branches};
 use crate::plane::medial::decompose::subshape::Cut;
 use crate::plane::medial::disk::maximal::DiskFinder;
-
-/// Dividing disks whose centres and radii agree within this many
-/// tolerances are one disk met twice.
-const SAME_DISK: f64 = 64.0;
 
 /// Glues the axes of the subshapes (`locals`) at the centres of the
 /// dividing disks `cuts`; `finder` indexes the shape they were made of.
@@ -27,9 +24,7 @@ pub fn glue<K: AxisKernel>(
     let tol = shape.tolerance();
     let mut nodes: Vec<AxisNode> = Vec::new();
     let mut port_node: Vec<Option<usize>> = vec![None; cuts.len()];
-    // Dividing disks found by sliding (maxdisk*) agree to about 1e-8 of
-    // the diagonal; disks closer than this are one node.
-    let same_as = coinciding_cuts(cuts, SAME_DISK * tol);
+    let same_as = coinciding_cuts(cuts, Tolerance::new(tol));
     let mut edges: Vec<AxisEdge> = Vec::new();
     let mut is_port: Vec<bool> = Vec::new();
     let mut is_joint: Vec<bool> = Vec::new();
@@ -78,7 +73,7 @@ pub fn glue<K: AxisKernel>(
     is_joint.resize(axis.nodes.len(), false);
     merge_pass_through(shape, &mut axis, &is_port, &is_joint);
     classify(&mut axis, tol);
-    merge_coinciding_branches(shape, &mut axis, SAME_DISK * tol);
+    merge_coinciding_branches(shape, &mut axis, Tolerance::new(tol));
     classify(&mut axis, tol);
     polish_branches(finder.kernel(), shape, &mut axis);
     check_graph(&axis, shape.loops().len() - 1)?;
@@ -86,11 +81,12 @@ pub fn glue<K: AxisKernel>(
 }
 
 /// For each dividing disk, the first one that is the same disk (centre and
-/// radius within `tol`): the divide step can meet one disk twice, from two
-/// sides, and both must be one node.
-fn coinciding_cuts(cuts: &[Cut], tol: f64) -> Vec<usize> {
+/// radius within [`Tolerance::same_disk`]): the divide step can meet one
+/// disk twice, from two sides, and both must be one node.
+fn coinciding_cuts(cuts: &[Cut], t: Tolerance) -> Vec<usize> {
     use std::collections::HashMap;
-    let cell = |x: f64| (x / (4.0 * tol)).floor() as i64;
+    let (tol, side) = (t.same_disk(), t.merge_cell());
+    let cell = |x: f64| (x / side).floor() as i64;
     let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
     let mut out = Vec::with_capacity(cuts.len());
     for (i, c) in cuts.iter().enumerate() {

@@ -4,6 +4,7 @@
 //! (multi-branching), and branch points found by sliding are replaced by
 //! the tritangent disk where the two agree.
 
+use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Disk;
 use crate::kernel::{AxisKernel, Point};
 use crate::plane::axis::{AxisEdge, MedialAxis2d, NodeKind, Primitive};
@@ -115,7 +116,8 @@ pub(crate) fn merge_pass_through(shape: &Shape2d, axis: &mut MedialAxis2d, is_po
 /// `tol` (centre and radius) are one node, the one of them (a disk that
 /// was constructed, not an average that would touch nothing) that best
 /// touches all the primitives of their other edges.
-pub(crate) fn merge_coinciding_branches(shape: &Shape2d, axis: &mut MedialAxis2d, tol: f64) {
+pub(crate) fn merge_coinciding_branches(shape: &Shape2d, axis: &mut MedialAxis2d, t: Tolerance) {
+    let tol = t.same_disk();
     let n = axis.nodes.len();
     let mut parent: Vec<usize> = (0..n).collect();
     let nodes = &axis.nodes;
@@ -150,7 +152,7 @@ pub(crate) fn merge_coinciding_branches(shape: &Shape2d, axis: &mut MedialAxis2d
             best[g] = Some((m, v));
         }
     }
-    let fits = |g: usize| best[g].is_some_and(|(m, _)| m <= 0.5 * tol);
+    let fits = |g: usize| best[g].is_some_and(|(m, _)| m <= t.branch_group_fit());
     let mut new_id = vec![usize::MAX; n];
     let mut kept = Vec::new();
     for (v, id) in new_id.iter_mut().enumerate() {
@@ -223,7 +225,8 @@ pub(crate) fn polish_branches(kernel: &impl AxisKernel, shape: &Shape2d, axis: &
         let sites: Vec<_> = ps.iter().take(8).map(|p| p.site(shape)).collect();
         let misfit = |c: Point, r: f64| ps.iter().map(|p| p.site(shape).defect(c, r).abs()).fold(0.0, f64::max);
         let near = |c: Point, r: f64| {
-            c.dist(node.point) <= 1e-6 * node.radius && (r - node.radius).abs() <= 1e-6 * node.radius
+            let reach = Tolerance::polish_reach() * node.radius;
+            c.dist(node.point) <= reach && (r - node.radius).abs() <= reach
         };
         let mut best: Option<(f64, Point, f64)> = None;
         for i in 0..sites.len() {

@@ -4,6 +4,8 @@
 //! the pieces between consecutive footpoints closed by an auxiliary arc
 //! of the disk.
 
+use crate::kernel::direction::{heading, Heading};
+use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Point;
 use crate::plane::medial::decompose::subshape::{chain_holds, BoundaryPos, Cut, Piece, Slot, Subshape};
 use crate::shape::{JointKind, Shape2d};
@@ -66,8 +68,8 @@ fn locate_foot<P: Slot>(
         Piece::Chain { .. } => None,
     };
     // Directions within this much (radians) of a fan part's end are
-    // that end: disks found by sliding meet a vertex to about 1e-8.
-    const FAN_SLACK: f64 = 1e-7;
+    // that end.
+    let fan_slack = Tolerance::fan_angle();
     let aux = |j: usize| match pieces[j % m_len].piece()? {
         Piece::Aux { disk } => Some(disk),
         Piece::Chain { .. } => None,
@@ -82,13 +84,13 @@ fn locate_foot<P: Slot>(
     // turn, i.e. its other end is opposite `d` too.
     let beside = |d: Point, m: Point, sign: f64, start: Point, end: Point| {
         let cross = sign * d.cross(m);
-        if cross.abs() > FAN_SLACK || d.dot(m) >= 0.0 {
-            return cross <= FAN_SLACK;
+        if cross.abs() > fan_slack || heading(d, m) != Heading::Backward {
+            return cross <= fan_slack;
         }
         let width = crate::kernel::fan::cw_angle(start, end);
         // A part narrower than a half turn whose ends rounding swapped
         // reads as almost a whole turn: it is empty.
-        (std::f64::consts::PI - FAN_SLACK..1.5 * std::f64::consts::PI).contains(&width)
+        (std::f64::consts::PI - fan_slack..1.5 * std::f64::consts::PI).contains(&width)
     };
     let point = shape.kind(p.loop_index) == crate::shape::LoopKind::Point;
     let holds = |j: usize, at: BoundaryPos| {
@@ -102,7 +104,7 @@ fn locate_foot<P: Slot>(
                 return true;
             }
             let (x, w) = (crate::kernel::fan::cw_angle(a, m), crate::kernel::fan::cw_angle(a, b));
-            return x <= w + FAN_SLACK || x >= std::f64::consts::TAU - FAN_SLACK;
+            return x <= w + fan_slack || x >= std::f64::consts::TAU - fan_slack;
         }
         // The part's ends: the arcs' disks where the chain starts or ends
         // at the vertex, else the normals of the chain's own elements.

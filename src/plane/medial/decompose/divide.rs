@@ -20,6 +20,7 @@
 //! in 140 leaves on smooth biarc shapes and 1 in 80 on random star
 //! polygons).
 
+use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Disk;
 use crate::kernel::{AxisKernel, Contact, Point};
 use crate::plane::medial::decompose::augment::Augmentation;
@@ -29,9 +30,7 @@ use crate::plane::medial::decompose::fan_cut::fan_cut;
 use crate::plane::medial::decompose::parts::{
     foot_at_convex_corner, original_parts, parts_in, points_in, position, reflex_point,
 };
-use crate::plane::medial::decompose::subshape::{
-    hugged_disk, BoundaryPos, ChainParts, Cut, Piece, Subshape, HUGGED_TIP,
-};
+use crate::plane::medial::decompose::subshape::{hugged_disk, BoundaryPos, ChainParts, Cut, Piece, Subshape};
 use crate::plane::medial::decompose::tour::{Ranged, Span, Tour};
 use crate::plane::medial::disk::maximal::{DiskFinder, MaxDisk};
 use crate::plane::medial::disk::slide::slide_to_third;
@@ -334,7 +333,9 @@ fn divide_along<K: AxisKernel>(
         // bands of rounding between nearly equal disks.
         // A range holds many pieces: never a lobe's tip.
         if parts + points_in(shape, &s, tour) <= leaf_parts
-            || s.plain().is_some_and(|p| hugged_disk(shape, &p, &out.cuts, HUGGED_TIP * shape.tolerance()).is_some())
+            || s.plain().is_some_and(|p| {
+                hugged_disk(shape, &p, &out.cuts, Tolerance::new(shape.tolerance()).hugged_tip()).is_some()
+            })
         {
             out.leaves.push(tour.expand(&s));
             continue;

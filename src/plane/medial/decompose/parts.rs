@@ -2,7 +2,8 @@
 //! points), and where a footpoint lies on the boundary: the measures the
 //! divide step and the cuts at reflex points both decide by.
 
-use crate::plane::medial::decompose::subshape::{BoundaryPos, ChainParts, Piece, Subshape, SLIVER_END};
+use crate::kernel::tolerance::Tolerance;
+use crate::plane::medial::decompose::subshape::{BoundaryPos, ChainParts, Piece, Subshape};
 use crate::plane::medial::decompose::tour::{Ranged, Span, Tour};
 use crate::plane::medial::disk::maximal::Footpoint;
 use crate::shape::{JointKind, Shape2d};
@@ -64,7 +65,7 @@ pub(crate) fn position(shape: &Shape2d, f: &Footpoint) -> BoundaryPos {
 /// each other.
 pub(crate) fn foot_at_convex_corner(shape: &Shape2d, feet: &[BoundaryPos], r: f64) -> bool {
     let tol = shape.tolerance();
-    let near = SLIVER_END * tol;
+    let near = Tolerance::new(tol).sliver_end();
     r > tol
         && feet.iter().any(|f| {
             let lp = &shape.loops()[f.loop_index];

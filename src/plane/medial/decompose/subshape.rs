@@ -210,17 +210,6 @@ impl ChainParts {
     }
 }
 
-/// Tolerances within which the boundary of a subshape must stay of its one
-/// dividing disk's circle for the disk to be the subshape's whole axis
-/// ([`hugged_disk`]). Measured on flowers of 3·10^4 to 10^5 arcs: lobe
-/// tips 2–8·10^-5 long whose boundary lies 1–5 tolerances from the cut.
-pub(crate) const HUGGED_TIP: f64 = 16.0;
-
-/// A chain end this many tolerances (in length) past a vertex is at the
-/// vertex: the base cases move such ends back to it, and the divide step
-/// makes no cut with a footpoint this close to a convex corner.
-pub(crate) const SLIVER_END: f64 = 4.0;
-
 /// The dividing disk (an index into `cuts`) of a subshape cut off by that
 /// one disk alone whose boundary has no convex corner and stays within
 /// `slack` (model units) of the disk's circle: the tip of a smooth lobe cut at nearly its osculating
@@ -295,7 +284,7 @@ impl Subshape {
                     let c = cuts[disk];
                     let (Some(a), Some(b)) = (end(j + m - 1), start(j + 1)) else { continue };
                     let (u, v) = (a - c.center, b - c.center);
-                    let mut sweep = u.cross(v).atan2(u.dot(v));
+                    let mut sweep = crate::kernel::direction::signed_angle(u, v);
                     if sweep <= 0.0 {
                         sweep += std::f64::consts::TAU;
                     }
