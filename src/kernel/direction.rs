@@ -24,6 +24,7 @@ pub enum Heading {
 }
 
 /// Where `v` points relative to the direction `n` (see [`Heading`]).
+#[inline]
 pub fn heading(n: Point, v: Point) -> Heading {
     let d = n.dot(v);
     if d > 0.0 {
@@ -38,6 +39,7 @@ pub fn heading(n: Point, v: Point) -> Heading {
 /// Which way direction `b` turns from direction `a`: [`Orientation::Left`]
 /// counter-clockwise (`a × b > 0`), [`Orientation::Right`] clockwise,
 /// [`Orientation::Collinear`] along or opposite it (or not a number).
+#[inline]
 pub fn turn(a: Point, b: Point) -> Orientation {
     let c = a.cross(b);
     if c > 0.0 {
@@ -51,18 +53,21 @@ pub fn turn(a: Point, b: Point) -> Orientation {
 
 /// The angle of direction `v` from the positive x axis, radians in
 /// (−π, π] (0 for the zero vector).
+#[inline]
 pub fn angle_of(v: Point) -> f64 {
     v.y.atan2(v.x)
 }
 
 /// The signed angle from direction `a` to direction `b`, radians in
 /// (−π, π]: positive counter-clockwise.
+#[inline]
 pub fn signed_angle(a: Point, b: Point) -> f64 {
     a.cross(b).atan2(a.dot(b))
 }
 
 /// The counter-clockwise angle from direction `a` to direction `b`,
 /// radians in [0, 2π).
+#[inline]
 pub fn ccw_angle(a: Point, b: Point) -> f64 {
     signed_angle(a, b).rem_euclid(std::f64::consts::TAU)
 }

@@ -15,17 +15,20 @@ pub struct Disk {
 
 impl Disk {
     /// The disk of radius `radius` around `center`.
+    #[inline]
     pub fn new(center: Point, radius: f64) -> Disk {
         Disk { center, radius }
     }
 
     /// Whether this disk and `other` are one disk within `tol` (model
     /// units): centres and radii each within `tol`.
+    #[inline]
     pub fn same_as(&self, other: &Disk, tol: f64) -> bool {
         self.center.dist(other.center) <= tol && (self.radius - other.radius).abs() <= tol
     }
 
     /// Centre and radius, in that order.
+    #[inline]
     pub fn parts(self) -> (Point, f64) {
         (self.center, self.radius)
     }

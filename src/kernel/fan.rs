@@ -7,6 +7,7 @@ use super::Point;
 /// [0, 2π): the order of directions round a fan of normals, whatever its
 /// width. Neither direction needs unit length; a zero direction gives an
 /// arbitrary but finite angle.
+#[inline]
 pub fn cw_angle(a: Point, b: Point) -> f64 {
     (a.y.atan2(a.x) - b.y.atan2(b.x)).rem_euclid(std::f64::consts::TAU)
 }
@@ -23,6 +24,7 @@ pub struct Fan {
 
 impl Fan {
     /// The fan clockwise from direction `start` to direction `end`.
+    #[inline]
     pub fn clockwise(start: Point, end: Point) -> Fan {
         Fan { start, width: cw_angle(start, end) }
     }
@@ -30,6 +32,7 @@ impl Fan {
     /// The fan clockwise from `start` to `end`, or the whole turn from
     /// `start` when the two are one direction within `min_width` radians
     /// (a point between the two arcs of one disk).
+    #[inline]
     pub fn clockwise_or_whole(start: Point, end: Point, min_width: f64) -> Fan {
         let fan = Fan::clockwise(start, end);
         if fan.width <= min_width {
@@ -40,28 +43,33 @@ impl Fan {
     }
 
     /// The whole turn of directions, starting at `start`.
+    #[inline]
     pub fn whole_turn(start: Point) -> Fan {
         Fan { start, width: std::f64::consts::TAU }
     }
 
     /// The start direction.
+    #[inline]
     pub fn start(&self) -> Point {
         self.start
     }
 
     /// The width, radians in [0, 2π].
+    #[inline]
     pub fn width(&self) -> f64 {
         self.width
     }
 
     /// How far clockwise from the start direction `d` lies, radians in
     /// [0, 2π).
+    #[inline]
     pub fn offset_of(&self, d: Point) -> f64 {
         cw_angle(self.start, d)
     }
 
     /// The direction `fraction` (0 to 1) of the way through the fan, with
     /// the start direction's length.
+    #[inline]
     pub fn direction_at(&self, fraction: f64) -> Point {
         let (s, c) = (-self.width * fraction).sin_cos();
         Point::new(c * self.start.x - s * self.start.y, s * self.start.x + c * self.start.y)

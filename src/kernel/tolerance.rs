@@ -21,12 +21,14 @@ pub struct Tolerance {
 impl Tolerance {
     /// The tolerances for a shape whose touching tolerance is `touch`
     /// (model units, ≥ 0).
+    #[inline]
     pub fn new(touch: f64) -> Tolerance {
         Tolerance { touch }
     }
 
     /// `τ`, the shape's touching tolerance (model units): closer than this
     /// is touching; a disk within it of a primitive touches it.
+    #[inline]
     pub fn touch(self) -> f64 {
         self.touch
     }
@@ -35,6 +37,7 @@ impl Tolerance {
     /// is at the vertex, 4τ: the base cases move such ends back to it and
     /// the divide step cuts no disk with a footpoint this close to a convex
     /// corner (the footpoints of a disk at a nearly flat corner merge).
+    #[inline]
     pub fn sliver_end(self) -> f64 {
         4.0 * self.touch
     }
@@ -42,6 +45,7 @@ impl Tolerance {
     /// A pocket of a base case holding less boundary than this (in length)
     /// is a sliver left by cuts within rounding of a vertex, 64τ: the axis
     /// in it is shorter than the same.
+    #[inline]
     pub fn sliver_pocket(self) -> f64 {
         64.0 * self.touch
     }
@@ -50,12 +54,14 @@ impl Tolerance {
     /// disk's circle for the disk to be the tip's whole axis, 16τ.
     /// Measured on flowers of 3·10^4 to 10^5 arcs: lobe tips 2–8·10^-5
     /// long whose boundary lies 1–5τ from the cut.
+    #[inline]
     pub fn hugged_tip(self) -> f64 {
         16.0 * self.touch
     }
 
     /// Two event disks of a base case whose centres and radii agree within
     /// this are one event, 4τ.
+    #[inline]
     pub fn same_event(self) -> f64 {
         4.0 * self.touch
     }
@@ -64,6 +70,7 @@ impl Tolerance {
     /// agree within this are one disk met twice by the conquer step, 64τ:
     /// disks found by sliding (`maxdisk*`) agree to about 1e-8 of the
     /// diagonal.
+    #[inline]
     pub fn same_disk(self) -> f64 {
         64.0 * self.touch
     }
@@ -71,6 +78,7 @@ impl Tolerance {
     /// The side of the grid cells that bucket dividing disks' centres when
     /// coinciding ones are found, four times [`same_disk`](Self::same_disk)
     /// (neighbouring cells are searched too).
+    #[inline]
     pub fn merge_cell(self) -> f64 {
         4.0 * self.same_disk()
     }
@@ -78,6 +86,7 @@ impl Tolerance {
     /// The overlap (model units) by which the final check lets a boundary
     /// element enter a disk of the finished axis before it reports the
     /// axis as wrong, 64τ.
+    #[inline]
     pub fn final_check(self) -> f64 {
         64.0 * self.touch
     }
@@ -85,6 +94,7 @@ impl Tolerance {
     /// A group of coinciding branch points is one node when one member's
     /// disk fits every primitive of the group within this (model units),
     /// half the final check's slack.
+    #[inline]
     pub fn branch_group_fit(self) -> f64 {
         0.5 * self.final_check()
     }
@@ -92,6 +102,7 @@ impl Tolerance {
     /// A disk tangent to three of a branch point's primitives replaces it
     /// (polishing) only when centre and radius move by less than this
     /// fraction of its radius, 1e-6.
+    #[inline]
     pub fn polish_reach() -> f64 {
         1e-6
     }
@@ -100,18 +111,21 @@ impl Tolerance {
     /// boundary) a branch point's contact may fall, 16τ: near-degenerate
     /// triples (many disks nearly alike, as at the centre of a symmetric
     /// shape) place contacts a few τ off.
+    #[inline]
     pub fn branch_contact_slack(self) -> f64 {
         16.0 * self.touch
     }
 
     /// The branch-point contact slack is at most this fraction of a site's
     /// parameter range (short sites), 1/2.
+    #[inline]
     pub fn branch_contact_slack_cap() -> f64 {
         0.5
     }
 
     /// A fan of normals whose arc at the disk's radius is no longer than
     /// this (model units) is rounding, not a fan, 4τ.
+    #[inline]
     pub fn fan_arc(self) -> f64 {
         4.0 * self.touch
     }
@@ -120,6 +134,7 @@ impl Tolerance {
     /// and a direction this close to a fan part's end is at that end,
     /// 1e-7: disks found by sliding (`maxdisk*`) meet a vertex in a
     /// direction accurate to about 1e-8.
+    #[inline]
     pub fn fan_angle() -> f64 {
         1e-7
     }
@@ -127,24 +142,28 @@ impl Tolerance {
     /// How far outside a reflex vertex's fan (in length at the disk's
     /// radius) a disk through the vertex may come and still touch it from
     /// inside, 4τ; farther out it touches the element beside it.
+    #[inline]
     pub fn fan_slack(self) -> f64 {
         4.0 * self.touch
     }
 
     /// How far (model units) a site may stray from a disk's circle and
     /// still hug it (one footpoint smeared by rounding into two), 4τ.
+    #[inline]
     pub fn hug(self) -> f64 {
         4.0 * self.touch
     }
 
     /// The overlap (model units) by which a boundary element must enter a
     /// constructed disk to make it not empty for the whole shape, 4τ.
+    #[inline]
     pub fn intruder(self) -> f64 {
         4.0 * self.touch
     }
 
     /// A growing disk's contact radius below this (model units) is its
     /// start point's own element, τ/4.
+    #[inline]
     pub fn least_growth(self) -> f64 {
         0.25 * self.touch
     }
@@ -154,12 +173,14 @@ impl Tolerance {
     /// coordinate `magnitude`, and never above τ: their residuals are a few
     /// ulps, while τ itself would let a disk inside a nearly circular
     /// stretch of arcs (a rounded tip) touch all of them at once.
+    #[inline]
     pub fn constructed_touch(self, magnitude: f64) -> f64 {
         (1e-3 * self.touch).max(256.0 * f64::EPSILON * magnitude).min(self.touch)
     }
 
     /// A disk found by sliding along a bisector is the one looked for when
     /// its centre and radius agree within this, 16τ.
+    #[inline]
     pub fn slide_match(self) -> f64 {
         16.0 * self.touch
     }
@@ -168,36 +189,42 @@ impl Tolerance {
     /// comes closer than its radius by more than 1e-12 of the shape's
     /// `diagonal` (model units): the slide must stop at the first real
     /// contact, which τ would blur.
+    #[inline]
     pub fn slide_emptiness(diagonal: f64) -> f64 {
         1e-12 * diagonal
     }
 
     /// The first probe step of a slide, 1e-3: radians on an angular
     /// parameter, a fraction of the radius on a line's.
+    #[inline]
     pub fn slide_probe() -> f64 {
         1e-3
     }
 
     /// The step (radians, or a fraction of the radius on a line) that
     /// tells which way each contact moves as the disk slides, 1e-6.
+    #[inline]
     pub fn slide_direction_step() -> f64 {
         1e-6
     }
 
     /// A march step this small (parameter units) is no step: the slide
     /// stops halving it, 1e-15.
+    #[inline]
     pub fn least_step() -> f64 {
         1e-15
     }
 
     /// A disk found ahead on an angular parameter by less than this
     /// (radians) is the start disk itself, 1e-12.
+    #[inline]
     pub fn least_turn() -> f64 {
         1e-12
     }
 
     /// Two unit directions whose dot product exceeds 1 minus this are one
     /// direction, 1e-12 (about 1.4e-6 radians).
+    #[inline]
     pub fn same_direction() -> f64 {
         1e-12
     }
@@ -205,6 +232,7 @@ impl Tolerance {
     /// An inner extremum of an axis edge's radius this close to an end
     /// (fraction of the edge's parameter range) is at the node itself,
     /// 1e-9: the edge is then monotonic.
+    #[inline]
     pub fn extremum_at_node() -> f64 {
         1e-9
     }
@@ -213,18 +241,21 @@ impl Tolerance {
     /// outside its monotonic piece (fraction of the piece's parameter
     /// range) is still on the piece, 1e-6; farther out, bisection finds
     /// the disk instead.
+    #[inline]
     pub fn offset_piece_slack() -> f64 {
         1e-6
     }
 
     /// An offset piece's turn is kept this far (radians) short of a whole
     /// turn, 1e-9, so that its bulge tan(turn/4) stays finite.
+    #[inline]
     pub fn whole_turn_margin() -> f64 {
         1e-9
     }
 
     /// A distance counts as the offsets' outer reach when it exceeds it by
     /// at most this fraction, 1e-12 (a reach computed as r·k/k).
+    #[inline]
     pub fn reach_rounding() -> f64 {
         1e-12
     }
@@ -232,11 +263,13 @@ impl Tolerance {
     /// Below this (radians, or a fraction of a length) a footpoint
     /// parameter range is a single point when choosing how to parametrise
     /// an axis edge, 1e-12.
+    #[inline]
     pub fn point_range() -> f64 {
         1e-12
     }
 
     /// Two cut fractions along one element this close are one cut, 1e-12.
+    #[inline]
     pub fn same_cut() -> f64 {
         1e-12
     }
@@ -244,6 +277,7 @@ impl Tolerance {
     /// Loose ends of pieces within this (model units) of each other are
     /// linked into one loop when the uncut area is closed, 64τ: the ends
     /// come from separate constructions of one point.
+    #[inline]
     pub fn link_ends(self) -> f64 {
         64.0 * self.touch.max(f64::MIN_POSITIVE)
     }
@@ -252,6 +286,7 @@ impl Tolerance {
     /// direction it leaves a node in is taken, 1e-3: far enough that the
     /// curve's own rounding does not turn it, close enough to be its
     /// tangent for ordering edges round a node.
+    #[inline]
     pub fn leaving_direction() -> f64 {
         1e-3
     }
@@ -260,6 +295,7 @@ impl Tolerance {
     /// tolerances against), model units: 1e-6 of their coordinates'
     /// `magnitude` and at least 1, so that the tolerance derived from it
     /// keeps the coordinates' digits.
+    #[inline]
     pub fn unit_at(magnitude: f64) -> f64 {
         1.0_f64.max(1e-6 * magnitude)
     }
@@ -267,6 +303,7 @@ impl Tolerance {
     /// The default chordal tolerance (model units) of V-carve paths sampled
     /// along the axis, 1000τ (1e-6 of the diagonal by default): well
     /// below any machine's resolution, coarse enough to keep paths short.
+    #[inline]
     pub fn vcarve_sampling(self) -> f64 {
         1000.0 * self.touch
     }
@@ -274,18 +311,21 @@ impl Tolerance {
     /// Fraction of a site's parameter range by which coinciding contacts
     /// of a branch point are pulled into their own primitives, and by which
     /// a contact where only the dividing disk touches is moved inside.
+    #[inline]
     pub fn nudge() -> f64 {
         1e-12
     }
 
     /// Two footpoint fractions on one site closer than this are one
     /// footpoint.
+    #[inline]
     pub fn same_fraction() -> f64 {
         1e-12
     }
 
     /// Positions along a base case's cycle (offsets) closer than this are
     /// one position when a pocket's content is measured.
+    #[inline]
     pub fn cycle_position() -> f64 {
         1e-12
     }
