@@ -13,11 +13,13 @@
 //! round, overflow or underflow. So the sign is exact for every finite input,
 //! without the exponent limits of floating-point expansion arithmetic.
 //!
-//! Cost: inputs span at most ~2100 bits, so a predicate costs a few
-//! microseconds in the worst case; it only runs for nearly degenerate input.
+//! Cost: inputs span at most ~2100 bits (33 limbs), so even the worst case
+//! is a few thousand limb multiplications; it only runs for nearly
+//! degenerate input, where the filter cannot decide.
 //!
-//! With the `gmp` feature, `super::exact` evaluates the same determinants
-//! with GMP rationals; the tests below cross-check both.
+//! With the `gmp` feature the kernel uses `super::exact` (GMP rationals)
+//! instead and this module is built only for its tests, which cross-check
+//! the two.
 
 use super::bigint::BigInt;
 use super::{CircleSide, Orientation, Point};
