@@ -1,4 +1,4 @@
-# cmake -DCARGO=... -DMANIFEST=.../Cargo.toml -DTARGET_DIR=... -DEXPECTED=a,b,c -P CheckNativeLibs.cmake
+# cmake -DCARGO=... -DMANIFEST=.../Cargo.toml -DTARGET_DIR=... -DEXPECTED=a,b,c [-DFEATURES=gmp] -P CheckNativeLibs.cmake
 #
 # Asks rustc which native libraries the medax staticlib needs and fails when
 # they differ from EXPECTED (MEDAX_STATIC_NATIVE_LIBS, which goes into
@@ -9,9 +9,15 @@ foreach(_v CARGO MANIFEST TARGET_DIR)
     message(FATAL_ERROR "CheckNativeLibs.cmake: -D${_v}=... is required")
   endif()
 endforeach()
+# The same cargo features as the package build (MEDAX_WITH_GMP), since they
+# decide the native libraries.
+set(_features "")
+if(FEATURES)
+  set(_features --features "${FEATURES}")
+endif()
 execute_process(
   COMMAND "${CMAKE_COMMAND}" -E env "CARGO_TARGET_DIR=${TARGET_DIR}"
-          "${CARGO}" rustc --release --lib --crate-type staticlib --manifest-path "${MANIFEST}"
+          "${CARGO}" rustc --release --lib --crate-type staticlib --manifest-path "${MANIFEST}" ${_features}
           -- --print native-static-libs
   RESULT_VARIABLE _rc
   OUTPUT_VARIABLE _out

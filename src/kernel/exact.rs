@@ -1,5 +1,7 @@
-//! Exact predicate evaluation with GMP rationals. Every finite `f64` is a
-//! dyadic rational, so converting inputs loses nothing and the sign is exact.
+//! Exact predicate evaluation with GMP rationals (feature `gmp`): then the
+//! fallback of `FilteredKernel` instead of the pure-Rust `exact_int`, and a
+//! cross-check of it in tests. Every finite `f64` is a dyadic
+//! rational, so converting inputs loses nothing and the sign is exact.
 
 use super::{CircleSide, Orientation, Point};
 use rug::Rational;

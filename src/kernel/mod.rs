@@ -9,8 +9,11 @@
 //!   for nearly degenerate input, which its name makes visible.
 //! * [`FilteredKernel`]: the same `f64` evaluation guarded by a forward error
 //!   bound (Shewchuk's static filter); only when the bound cannot certify the
-//!   sign is the predicate recomputed exactly with GMP rationals. Its answers
-//!   are exact for the `f64` inputs it is given.
+//!   sign is the predicate recomputed exactly, with integers in pure Rust
+//!   (`exact_int`: no system library needed). Its answers are exact for every
+//!   finite `f64` input. With the `gmp` feature the fallback is evaluated
+//!   with GMP rationals instead (`exact`); the answers are the same (a test
+//!   cross-checks the two), only the dependency differs.
 //!
 //! The medial-axis algorithms ask more than signs: [`AxisKernel`] (in
 //! [`axis_kernel`]) adds the constructions and tolerance decisions they
@@ -23,11 +26,17 @@
 pub mod apollonius;
 pub mod axis_kernel;
 mod bbox;
+// With `gmp` the pure-Rust evaluation is only built for the cross-check tests.
+#[cfg(any(test, not(feature = "gmp")))]
+mod bigint;
 pub mod bisector;
 pub mod construct;
 pub mod direction;
 mod disk;
+#[cfg(feature = "gmp")]
 mod exact;
+#[cfg(any(test, not(feature = "gmp")))]
+mod exact_int;
 pub mod fan;
 pub mod growing_disk;
 mod point;
@@ -37,6 +46,13 @@ pub use axis_kernel::{AxisKernel, Contact};
 pub use bbox::BBox;
 pub use disk::Disk;
 pub use point::Point;
+
+// The exact fallback of `FilteredKernel`: both evaluations are exact, so the
+// choice changes no answer; GMP only when the caller opted into it.
+#[cfg(feature = "gmp")]
+use exact as fallback;
+#[cfg(not(feature = "gmp"))]
+use exact_int as fallback;
 
 /// Where a point lies relative to a directed line.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -75,8 +91,10 @@ pub trait Kernel: Send + Sync {
 #[derive(Debug, Clone, Copy, Default)]
 pub struct FloatKernel;
 
-/// `f64` predicates certified by an error bound, falling back to exact GMP
-/// rational arithmetic when the bound cannot decide. Exact for `f64` inputs.
+/// `f64` predicates certified by an error bound, falling back to exact big
+/// integer arithmetic (GMP rationals with the `gmp` feature) when the bound
+/// cannot decide. Exact for all finite `f64` inputs (no overflow or
+/// underflow limits).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct FilteredKernel;
 
@@ -147,7 +165,7 @@ impl Kernel for FilteredKernel {
         if det.abs() > ORIENT_ERRBOUND * sum && sum.is_finite() && sum > f64::MIN_POSITIVE * 1e20 {
             return orientation_of(det);
         }
-        exact::orientation(p, q, r)
+        fallback::orientation(p, q, r)
     }
 
     fn circle_side(&self, a: Point, b: Point, c: Point, d: Point) -> CircleSide {
@@ -155,7 +173,7 @@ impl Kernel for FilteredKernel {
         if det.abs() > INCIRCLE_ERRBOUND * permanent && permanent.is_finite() && permanent > f64::MIN_POSITIVE * 1e40 {
             return circle_side_of(det);
         }
-        exact::circle_side(a, b, c, d)
+        fallback::circle_side(a, b, c, d)
     }
 }
 
@@ -176,7 +194,7 @@ mod tests {
         for i in 0..256 {
             for j in 0..256 {
                 let p = Point::new(0.5 + i as f64 * u, 0.5 + j as f64 * u);
-                let exact = exact::orientation(p, q, r);
+                let exact = exact_int::orientation(p, q, r);
                 assert_eq!(k.orientation(p, q, r), exact, "at {i},{j}");
                 if FloatKernel.orientation(p, q, r) != exact {
                     disagreements_float += 1;
@@ -196,6 +214,6 @@ mod tests {
         assert_eq!(k.circle_side(a, b, c, Point::new(0.0, -1.0)), CircleSide::On);
         assert_eq!(k.circle_side(a, b, c, Point::new(0.0, 0.0)), CircleSide::Inside);
         assert_eq!(k.circle_side(a, b, c, Point::new(2.0, 0.0)), CircleSide::Outside);
-        assert_eq!(k.circle_side(a, b, c, Point::new(0.6, 0.8)), exact::circle_side(a, b, c, Point::new(0.6, 0.8)));
+        assert_eq!(k.circle_side(a, b, c, Point::new(0.6, 0.8)), exact_int::circle_side(a, b, c, Point::new(0.6, 0.8)));
     }
 }
