@@ -17,6 +17,7 @@
 //! parallel lines).
 
 use super::apollonius::Site;
+use super::direction::angle_of;
 use super::growing_disk::GrowingDisk;
 use super::Point;
 
@@ -84,6 +85,33 @@ pub fn footpoint(a: &Site, u: f64) -> (Point, Point) {
             // way round): the centre lies on the other side of the centre.
             (o + dir * r, if outside { dir } else { -dir })
         }
+    }
+}
+
+/// The footpoint parameter of the disk centred `c` of radius `r` tangent
+/// to `a`: the inverse of [`footpoint`] (for a line the distance along it,
+/// for a point or circle the angle of the centre's direction, radians in
+/// (−π, π]: a caller with a range of angles unwraps it there). Radius 0
+/// gives the parameter of the centre's projection on a line.
+#[inline]
+pub fn footpoint_param(a: &Site, c: Point, r: f64) -> f64 {
+    match *a {
+        Site::Line { a, n } => (c - n * r - a).dot(-n.perp()),
+        Site::Point(q) => angle_of(c - q),
+        Site::Circle { o, .. } => angle_of(c - o),
+    }
+}
+
+/// The footpoint parameter of `foot`, a point of `a` where a disk centred
+/// `c` touches it: the inverse of [`footpoint`] from the touching point
+/// itself (only a point site needs the centre, whose direction is the
+/// parameter).
+#[inline]
+pub fn footpoint_param_at(a: &Site, c: Point, foot: Point) -> f64 {
+    match *a {
+        Site::Line { a, n } => (foot - a).dot(-n.perp()),
+        Site::Point(q) => angle_of(c - q),
+        Site::Circle { o, .. } => angle_of(foot - o),
     }
 }
 

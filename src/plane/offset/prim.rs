@@ -6,8 +6,8 @@
 
 use crate::kernel::apollonius::Site;
 use crate::kernel::bisector::footpoint;
+use crate::kernel::bisector::footpoint_param;
 use crate::kernel::construct::unwrap_near;
-use crate::kernel::direction::angle_of;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Point;
 use crate::plane::axis::Primitive;
@@ -76,10 +76,7 @@ impl OffsetPrim {
     /// The footpoint parameter of a disk centred at `c` tangent to the
     /// primitive (the angle is in (−π, π]).
     pub fn param_of(&self, c: Point) -> f64 {
-        match self.site {
-            Site::Line { a, n } => (c - a).dot(-n.perp()),
-            Site::Point(o) | Site::Circle { o, .. } => angle_of(c - o),
-        }
+        footpoint_param(&self.site, c, 0.0)
     }
 
     /// How far the offset runs from parameter `u0` to `u1` along the

@@ -3,6 +3,7 @@
 
 use super::Builder;
 use crate::kernel::apollonius::Site;
+use crate::kernel::bisector::footpoint_param;
 use crate::kernel::construct::unwrap_near;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{AxisKernel, Point};
@@ -50,10 +51,10 @@ impl<K: AxisKernel> Builder<'_, K> {
     pub(super) fn param(&self, i: usize, c: Point, r: f64) -> f64 {
         let s = &self.sites[i];
         let mid = 0.5 * (s.u0 + s.u1);
+        let u = footpoint_param(&s.site, c, r);
         match s.site {
-            Site::Line { a, n } => (c - n * r - a).dot(-n.perp()),
-            Site::Point(q) => unwrap_near(angle(c - q), mid),
-            Site::Circle { o, .. } => unwrap_near(angle(c - o), mid),
+            Site::Line { .. } => u,
+            Site::Point(_) | Site::Circle { .. } => unwrap_near(u, mid),
         }
     }
 

@@ -19,6 +19,7 @@
 //! at 3·10^4).
 
 use crate::kernel::apollonius::Site;
+use crate::kernel::bisector::footpoint_param_at;
 use crate::kernel::construct::unwrap_near;
 use crate::kernel::direction::angle_of;
 use crate::kernel::tolerance::Tolerance;
@@ -51,16 +52,6 @@ pub fn site_of<K: AxisKernel>(finder: &DiskFinder<K>, f: &Footpoint) -> Site {
     Primitive::Element(f.element).site(shape)
 }
 
-/// The footpoint parameter of a disk centred `c` on site `a` (inverse of
-/// [`footpoint`](crate::kernel::bisector::footpoint)).
-fn param_on(a: &Site, c: Point, touch: Point) -> f64 {
-    match *a {
-        Site::Line { a, n } => (touch - a).dot(-n.perp()),
-        Site::Point(q) => angle_of(c - q),
-        Site::Circle { o, .. } => angle_of(touch - o),
-    }
-}
-
 /// Slides the disk (`c`, `r`) touching `fa` and `fb` along their bisector,
 /// away from `junction` (a point between the two footpoints on the side
 /// the redundant cut came from), to the first disk that touches a third
@@ -78,7 +69,7 @@ pub fn slide_to_third<K: AxisKernel>(
 ) -> Option<(Point, f64)> {
     let k = finder.kernel();
     let (sa, sb) = (site_of(finder, fa), site_of(finder, fb));
-    let u0 = param_on(&sa, c, fa.point);
+    let u0 = footpoint_param_at(&sa, c, fa.point);
     let empty_tol = Tolerance::slide_emptiness(finder.shape().bbox().diagonal());
     let shape = finder.shape();
     let element = |f: &Footpoint| shape.loops()[f.element.loop_index].element(f.element.element);
@@ -191,7 +182,7 @@ fn jump_to_third<K: AxisKernel>(
     let min_ahead = if angular { Tolerance::least_turn() } else { tol };
     // A disk (c, r) counts if it lies on this branch of the bisector.
     let on_branch = |c: Point, r: f64| -> Option<f64> {
-        let u = param_on(sa, c, sa.contact(c, r));
+        let u = footpoint_param_at(sa, c, sa.contact(c, r));
         let (cb, rb) = k.bisector_point(sa, sb, u)?.parts();
         let near = Tolerance::new(tol).slide_match();
         (cb.dist(c) <= near && (rb - r).abs() <= near).then_some(u)
@@ -217,8 +208,8 @@ fn jump_to_third<K: AxisKernel>(
     let mut best = (f64::INFINITY, Point::default(), 0.0);
     for &(f, s, other) in [(fa, sa, sb), (fb, sb, sa)].iter() {
         let turns = !matches!(s, Site::Line { .. });
-        let here = param_on(s, c0, s.contact(c0, r0));
-        let forward = wrap(turns, param_on(s, c1, s.contact(c1, r1)) - here).signum();
+        let here = footpoint_param_at(s, c0, s.contact(c0, r0));
+        let forward = wrap(turns, footpoint_param_at(s, c1, s.contact(c1, r1)) - here).signum();
         // A point site's fan is a whole turn: a contact there never leaves it.
         if shape.kind(f.element.loop_index) == crate::shape::LoopKind::Point {
             continue;
@@ -310,7 +301,7 @@ mod tests {
             for u in [-2.0, -0.3, 0.0, 0.7, 2.5] {
                 let (p, n) = fp(&s, u);
                 let c = p + n * 0.75;
-                assert!((param_on(&s, c, p) - u).abs() < 1e-12, "{s:?} {u}");
+                assert!((footpoint_param_at(&s, c, p) - u).abs() < 1e-12, "{s:?} {u}");
             }
         }
     }
