@@ -32,7 +32,9 @@
 
 use super::apollonius::{self, Site};
 use super::bisector;
+use super::element::Element;
 use super::growing_disk::GrowingDisk;
+use super::SitePiece;
 use super::{construct, Disk, Kernel, Orientation, Point};
 
 /// How a disk meets a boundary primitive, decided with a length tolerance.
@@ -111,6 +113,23 @@ pub trait AxisKernel: Kernel + Copy + Send + Sync + 'static {
         } else {
             Contact::Apart
         }
+    }
+
+    /// How `disk` meets the point `p`, with tolerance `tol` (model units).
+    fn point_contact(&self, disk: Disk, p: Point, tol: f64) -> Contact {
+        self.contact(disk.center.dist(p), disk.radius, tol)
+    }
+
+    /// How `disk` meets the element `e` (anywhere along it), with tolerance
+    /// `tol` (model units).
+    fn element_contact(&self, disk: Disk, e: &Element, tol: f64) -> Contact {
+        self.contact(e.closest_point(disk.center).0, disk.radius, tol)
+    }
+
+    /// How `disk` meets the carrier piece `piece`, with tolerance `tol`
+    /// (model units).
+    fn piece_contact(&self, disk: Disk, piece: &SitePiece, tol: f64) -> Contact {
+        self.contact(piece.distance(disk.center).0, disk.radius, tol)
     }
 }
 

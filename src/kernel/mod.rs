@@ -33,6 +33,7 @@ pub mod bisector;
 pub mod construct;
 pub mod direction;
 mod disk;
+pub mod element;
 #[cfg(feature = "gmp")]
 mod exact;
 #[cfg(any(test, not(feature = "gmp")))]
@@ -40,12 +41,14 @@ mod exact_int;
 pub mod fan;
 pub mod growing_disk;
 mod point;
+mod site_piece;
 pub mod tolerance;
 
 pub use axis_kernel::{AxisKernel, Contact};
 pub use bbox::BBox;
 pub use disk::Disk;
 pub use point::Point;
+pub use site_piece::SitePiece;
 
 // The exact fallback of `FilteredKernel`: both evaluations are exact, so the
 // choice changes no answer; GMP only when the caller opted into it.

@@ -1,8 +1,8 @@
 //! Pictures of shapes as SVG.
 
 use crate::io::svg_writer::{PathCmd, Style, SvgDocument};
+use crate::kernel::element::Element;
 use crate::shape::model::bulge_loop::Vertex;
-use crate::shape::model::element::Element;
 use crate::shape::model::joints::JointKind;
 use crate::shape::shape2d::Shape2d;
 

@@ -24,6 +24,7 @@ pub(crate) mod model;
 pub(crate) mod shape2d;
 pub(crate) mod validate;
 
+pub use crate::kernel::element::{Arc, Element, Segment};
 pub use build::chain::chain_loops;
 pub use build::import::sniff;
 pub use build::samples;
@@ -32,9 +33,9 @@ pub use index::box_tree::BoxTree;
 pub use index::chain_tree::ChainTree;
 pub(crate) use index::element_index::ElementIndex;
 pub use model::bulge_loop::{winding_contribution, Loop, LoopKind, Vertex};
-pub use model::element::{Arc, Element, LooseElement, Segment};
 pub use model::error::{Degeneracy, ElementRef, ShapeError};
 pub use model::joints::{classify, turning_angle, JointKind};
+pub use model::loose::LooseElement;
 pub use model::options::ShapeOptions;
 pub use shape2d::{ElementSpec, Shape2d};
 

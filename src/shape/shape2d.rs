@@ -2,9 +2,9 @@
 
 use crate::kernel::{BBox, Point};
 use crate::shape::model::bulge_loop::{Loop, Vertex};
-use crate::shape::model::element::LooseElement;
 use crate::shape::model::error::{ElementRef, ShapeError};
 use crate::shape::model::joints::JointKind;
+use crate::shape::model::loose::LooseElement;
 use crate::shape::model::options::ShapeOptions;
 use crate::shape::validate::validate;
 use std::f64::consts::TAU;

@@ -8,8 +8,8 @@
 
 use crate::kernel::Point;
 use crate::shape::model::bulge_loop::{Loop, Vertex};
-use crate::shape::model::element::LooseElement;
 use crate::shape::model::error::{ElementRef, ShapeError};
+use crate::shape::model::loose::LooseElement;
 use std::collections::HashMap;
 
 struct EndGrid {

@@ -17,11 +17,11 @@
 //! along its principal direction is as thin as the run (measured: axes 3×
 //! faster on stars of 3·10^4 vertices, 6× on combs of 2·10^4).
 
+use crate::kernel::element::Element;
 use crate::kernel::growing_disk::GrowingDisk;
 use crate::kernel::{BBox, Point};
 use crate::shape::index::box_tree::Pending;
 use crate::shape::model::bulge_loop::Loop;
-use crate::shape::model::element::Element;
 use crate::shape::model::error::ElementRef;
 
 /// Elements per leaf run: short enough that a leaf's capsule is tight,

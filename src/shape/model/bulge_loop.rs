@@ -1,7 +1,7 @@
 //! A closed loop of elements stored as bulge vertices.
 
+use crate::kernel::element::Element;
 use crate::kernel::{BBox, Kernel, Orientation, Point};
-use crate::shape::model::element::Element;
 
 /// A vertex of a loop: the start point of an element and that element's bulge.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]

@@ -14,11 +14,11 @@
 //! vertex of one loop; the perturbed ray meets the one leaning further left
 //! (smaller dx/dy going up) first, which is the tie-break.
 
+use crate::kernel::element::Element;
 use crate::kernel::{BBox, Point};
 use crate::shape::index::box_tree::BoxTree;
 use crate::shape::index::element_index::ElementIndex;
 use crate::shape::model::bulge_loop::{Loop, LoopKind};
-use crate::shape::model::element::Element;
 use crate::shape::model::error::ShapeError;
 use rayon::prelude::*;
 use std::ops::ControlFlow;

@@ -10,10 +10,10 @@
 //! discards spurious intersection points produced by ill-conditioned
 //! constructions (nearly tangent circles, nearly parallel lines).
 
+use crate::kernel::element::Element;
 use crate::kernel::{construct, Point};
 use crate::shape::model::bulge_loop::Loop;
 use crate::shape::model::bulge_loop::LoopKind;
-use crate::shape::model::element::Element;
 use crate::shape::model::error::ElementRef;
 
 /// Where elements `ra` and `rb` of `loops` cross or come within `tol`,

@@ -10,10 +10,10 @@ pub(crate) mod intersect;
 pub(crate) mod sweep;
 pub(crate) mod sweep_status;
 
+use crate::kernel::element::Element;
 use crate::kernel::{BBox, Point};
 use crate::shape::index::element_index::ElementIndex;
 use crate::shape::model::bulge_loop::{Loop, LoopKind};
-use crate::shape::model::element::Element;
 use crate::shape::model::error::{Degeneracy, ElementRef, ShapeError};
 use crate::shape::model::joints::{classify, turning_angle, JointKind};
 use crate::shape::model::options::ShapeOptions;

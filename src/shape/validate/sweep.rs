@@ -13,9 +13,9 @@
 //! order while no two pieces in the set cross — and the first crossing ends
 //! the sweep.
 
+use crate::kernel::element::Element;
 use crate::kernel::Point;
 use crate::shape::model::bulge_loop::Loop;
-use crate::shape::model::element::Element;
 use crate::shape::model::error::ElementRef;
 use crate::shape::validate::intersect::element_pair_approach;
 use crate::shape::validate::sweep_status::SweepStatus;

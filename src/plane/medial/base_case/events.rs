@@ -38,7 +38,7 @@ impl<K: AxisKernel> Builder<'_, K> {
 
     /// How the circle (`c`, `r`) meets site `i`'s piece, within `tol`.
     pub(super) fn contact(&self, i: usize, c: Point, r: f64, tol: f64) -> Contact {
-        self.k().contact(self.distance(i, c).0, r, tol)
+        self.k().piece_contact(Disk::new(c, r), &self.piece(i), tol)
     }
 
     /// True when the disk (`c`, `r`) crosses one of the auxiliary arcs.
@@ -307,7 +307,8 @@ impl<K: AxisKernel> Builder<'_, K> {
         }
         (0..=8).all(|k| {
             let w = w0 + (w1 - w0) * k as f64 / 8.0;
-            self.k().contact(c.dist(self.point_of(i, self.u_at(i, w))), r, self.tol.hug()) == Contact::Touching
+            self.k().point_contact(Disk::new(c, r), self.point_of(i, self.u_at(i, w)), self.tol.hug())
+                == Contact::Touching
         })
     }
 }

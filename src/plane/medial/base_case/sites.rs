@@ -3,9 +3,8 @@
 
 use super::Builder;
 use crate::kernel::apollonius::Site;
-use crate::kernel::bisector::footpoint_param;
-use crate::kernel::construct::unwrap_near;
 use crate::kernel::tolerance::Tolerance;
+use crate::kernel::SitePiece;
 use crate::kernel::{AxisKernel, Point};
 use crate::plane::axis::Primitive;
 use crate::shape::Element;
@@ -47,15 +46,16 @@ impl<K: AxisKernel> Builder<'_, K> {
         self.sites.len()
     }
 
+    /// Site `i` as the kernel sees it: its carrier between its parameters.
+    #[inline]
+    pub(super) fn piece(&self, i: usize) -> SitePiece {
+        let s = &self.sites[i];
+        SitePiece { site: s.site, u0: s.u0, u1: s.u1 }
+    }
+
     /// Parameter of the disk (`c`, `r`) on site `i`, unwrapped into its range.
     pub(super) fn param(&self, i: usize, c: Point, r: f64) -> f64 {
-        let s = &self.sites[i];
-        let mid = 0.5 * (s.u0 + s.u1);
-        let u = footpoint_param(&s.site, c, r);
-        match s.site {
-            Site::Line { .. } => u,
-            Site::Point(_) | Site::Circle { .. } => unwrap_near(u, mid),
-        }
+        self.piece(i).param(c, r)
     }
 
     pub(super) fn fraction(&self, i: usize, u: f64) -> f64 {
@@ -65,34 +65,13 @@ impl<K: AxisKernel> Builder<'_, K> {
 
     /// The boundary point at parameter `u` of site `i`.
     pub(super) fn point_of(&self, i: usize, u: f64) -> Point {
-        crate::kernel::bisector::footpoint(&self.sites[i].site, u).0
+        self.piece(i).point_at(u)
     }
 
     /// Distance from `c` to site `i`'s piece and the parameter of the
     /// closest point (clamped to the range).
     pub(super) fn distance(&self, i: usize, c: Point) -> (f64, f64) {
-        let s = &self.sites[i];
-        let (lo, hi) = (s.u0.min(s.u1), s.u0.max(s.u1));
-        match s.site {
-            Site::Point(q) => (c.dist(q), self.param(i, c, 0.0).clamp(lo, hi)),
-            Site::Line { a, n } => {
-                let u = (c - a).dot(-n.perp()).clamp(lo, hi);
-                (c.dist(self.point_of(i, u)), u)
-            }
-            Site::Circle { o, r, .. } => {
-                let u = self.param(i, c, 0.0);
-                if (lo..=hi).contains(&u) && c.dist(o) > 0.0 {
-                    ((c.dist(o) - r).abs(), u)
-                } else {
-                    let (pa, pb) = (self.point_of(i, lo), self.point_of(i, hi));
-                    if c.dist(pa) <= c.dist(pb) {
-                        (c.dist(pa), lo)
-                    } else {
-                        (c.dist(pb), hi)
-                    }
-                }
-            }
-        }
+        self.piece(i).distance(c)
     }
 
     /// The cycle key of parameter `u` on site `i`: ends snapped when within

@@ -4,7 +4,9 @@
 //! the primitives of its edges.
 
 use crate::kernel::tolerance::Tolerance;
+use crate::kernel::Disk;
 use crate::kernel::{AxisKernel, Contact, Point};
+use crate::plane::axis::Primitive;
 use crate::plane::axis::{AxisEdge, MedialAxis2d, NodeKind};
 use crate::plane::medial::conquer::error::AxisError;
 use crate::plane::medial::disk::maximal::DiskFinder;
@@ -47,7 +49,18 @@ pub(crate) fn check_disks<K: AxisKernel>(finder: &DiskFinder<K>, axis: &MedialAx
     // edge's primitives (a node placed where only two of a branch's three
     // primitives are touched is a maximal disk, but not that branch).
     let apart = |e: &AxisEdge, c: Point, r: f64| {
-        e.sites.iter().any(|p| k.contact(p.distance(shape, c), r, slack) != Contact::Touching)
+        e.sites.iter().any(|p| {
+            let disk = Disk::new(c, r);
+            let contact = match *p {
+                Primitive::Vertex { loop_index, vertex } => {
+                    k.point_contact(disk, shape.loops()[loop_index].vertices()[vertex].p, slack)
+                }
+                Primitive::Element(er) => {
+                    k.element_contact(disk, &shape.loops()[er.loop_index].element(er.element), slack)
+                }
+            };
+            contact != Contact::Touching
+        })
     };
     let astray = axis.edges.par_iter().find_map_any(|e| {
         [e.from, e.to].into_iter().map(|v| &axis.nodes[v]).find(|n| apart(e, n.point, n.radius)).map(|n| n.point)

@@ -248,7 +248,7 @@ fn cluster_cut<K: AxisKernel>(
                 continue;
             }
             let Some(Disk { center: c, radius: rad }) = kernel.circumcircle(p, q, r) else { continue };
-            if pts.iter().any(|&x| kernel.contact(x.dist(c), rad, tol) == Contact::Overlapping) {
+            if pts.iter().any(|&x| kernel.point_contact(Disk::new(c, rad), x, tol) == Contact::Overlapping) {
                 continue;
             }
             if finder.intruder(c, rad, tol).is_some() {

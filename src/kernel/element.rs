@@ -4,8 +4,8 @@
 //! cavalier_contours convention) because the endpoints are what the user gave
 //! exactly; centre and radius are derived once, at construction.
 
-use crate::kernel::construct;
-use crate::kernel::{BBox, Point};
+use super::construct;
+use super::{BBox, Point};
 
 /// A straight segment from `a` to `b`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -359,17 +359,6 @@ impl Element {
             }
         }
     }
-}
-
-/// An element with both end points and a bulge, not yet in a loop.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LooseElement {
-    /// Start point.
-    pub a: Point,
-    /// End point.
-    pub b: Point,
-    /// Bulge from `a` to `b` (0 = segment).
-    pub bulge: f64,
 }
 
 #[cfg(test)]

@@ -1,0 +1,93 @@
+//! A piece of a carrier: the part of a point's fan, a line or a circle
+//! between two footpoint parameters, as the base cases see a primitive.
+
+use super::apollonius::Site;
+use super::bisector::{footpoint, footpoint_param};
+use super::construct::unwrap_near;
+use super::Point;
+
+/// The part of `site` between footpoint parameters `u0` and `u1` (either
+/// order; see [`footpoint`] for what a parameter is).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SitePiece {
+    /// The carrier.
+    pub site: Site,
+    /// Parameter at the piece's start.
+    pub u0: f64,
+    /// Parameter at the piece's end.
+    pub u1: f64,
+}
+
+impl SitePiece {
+    /// The footpoint parameter of the disk centred `c` of radius `r`
+    /// tangent to the carrier, an angle unwrapped to within π of the
+    /// piece's middle.
+    #[inline]
+    pub fn param(&self, c: Point, r: f64) -> f64 {
+        let u = footpoint_param(&self.site, c, r);
+        match self.site {
+            Site::Line { .. } => u,
+            Site::Point(_) | Site::Circle { .. } => unwrap_near(u, 0.5 * (self.u0 + self.u1)),
+        }
+    }
+
+    /// The boundary point at parameter `u`.
+    #[inline]
+    pub fn point_at(&self, u: f64) -> Point {
+        footpoint(&self.site, u).0
+    }
+
+    /// Distance (model units) from `c` to the piece, and the parameter of
+    /// the piece's point nearest to it (clamped to the piece).
+    pub fn distance(&self, c: Point) -> (f64, f64) {
+        let (lo, hi) = (self.u0.min(self.u1), self.u0.max(self.u1));
+        match self.site {
+            Site::Point(q) => (c.dist(q), self.param(c, 0.0).clamp(lo, hi)),
+            Site::Line { a, n } => {
+                let u = (c - a).dot(-n.perp()).clamp(lo, hi);
+                (c.dist(self.point_at(u)), u)
+            }
+            Site::Circle { o, r, .. } => {
+                let u = self.param(c, 0.0);
+                if (lo..=hi).contains(&u) && c.dist(o) > 0.0 {
+                    ((c.dist(o) - r).abs(), u)
+                } else {
+                    let (pa, pb) = (self.point_at(lo), self.point_at(hi));
+                    if c.dist(pa) <= c.dist(pb) {
+                        (c.dist(pa), lo)
+                    } else {
+                        (c.dist(pb), hi)
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn distances_to_pieces_of_each_carrier() {
+        // The segment from (0, 0) to (4, 0), normal up.
+        let line =
+            SitePiece { site: Site::Line { a: Point::new(0.0, 0.0), n: Point::new(0.0, 1.0) }, u0: 0.0, u1: 4.0 };
+        assert_eq!(line.distance(Point::new(1.5, 0.75)), (0.75, 1.5));
+        assert_eq!(line.distance(Point::new(7.0, 4.0)), (5.0, 4.0));
+        // The upper half of the unit circle, seen from inside.
+        let arc = SitePiece {
+            site: Site::Circle { o: Point::new(0.0, 0.0), r: 1.0, outside: false },
+            u0: 0.0,
+            u1: std::f64::consts::PI,
+        };
+        let (d, u) = arc.distance(Point::new(0.0, 0.25));
+        assert!((d - 0.75).abs() < 1e-15 && (u - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+        // Below the arc its nearer end is nearest.
+        let (d, u) = arc.distance(Point::new(0.9, -0.1));
+        assert!((d - Point::new(0.1, 0.1).norm()).abs() < 1e-15 && u == 0.0);
+        // A point's fan: the distance to the point, the parameter clamped.
+        let fan = SitePiece { site: Site::Point(Point::new(0.0, 0.0)), u0: 0.0, u1: 1.0 };
+        assert_eq!(fan.distance(Point::new(0.0, 2.0)), (2.0, 1.0));
+    }
+}
