@@ -36,7 +36,11 @@ pub(crate) fn check_disks<K: AxisKernel>(finder: &DiskFinder<K>, axis: &MedialAx
     let deg = axis.degrees();
     let untouched = |v: usize| {
         let n = &axis.nodes[v];
-        deg[v] == 0 && finder.nearest(n.point).is_none_or(|(_, d)| k.contact(d, n.radius, slack) != Contact::Touching)
+        deg[v] == 0
+            && finder.nearest(n.point).is_none_or(|(near, _)| {
+                let e = shape.loops()[near.loop_index].element(near.element);
+                k.element_contact(Disk::new(n.point, n.radius), &e, slack) != Contact::Touching
+            })
     };
     if let Some(n) = (0..axis.nodes.len())
         .into_par_iter()

@@ -196,7 +196,10 @@ fn cut_with<K: AxisKernel>(
     let (c, r) = slide_to_third(finder, &d.footpoints[0], &d.footpoints[1], d.center, d.radius, junction)?;
     // Only an empty disk that touches the boundary can cut.
     let touch = finder.touching(c, r);
-    let empty = finder.nearest(c).is_some_and(|(_, dist)| finder.kernel().contact(dist, r, tol) == Contact::Touching);
+    let empty = finder.nearest(c).is_some_and(|(near, _)| {
+        let e = shape.loops()[near.loop_index].element(near.element);
+        finder.kernel().element_contact(Disk::new(c, r), &e, tol) == Contact::Touching
+    });
     if touch.len() < 2 || r <= tol || !empty {
         return None;
     }

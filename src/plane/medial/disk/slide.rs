@@ -79,9 +79,10 @@ pub fn slide_to_third<K: AxisKernel>(
     // (not only their supporting lines or circles).
     let empty = |u: f64| -> Option<(Point, f64, bool)> {
         let (c, r) = k.bisector_point(&sa, &sb, u)?.parts();
-        let (_, d) = finder.nearest(c)?;
+        let (near, _) = finder.nearest(c)?;
         let touches = on(&ea, sa.contact(c, r)) && on(&eb, sb.contact(c, r));
-        Some((c, r, k.contact(d, r, empty_tol) != Contact::Overlapping && touches))
+        let nearest = shape.loops()[near.loop_index].element(near.element);
+        Some((c, r, k.element_contact(Disk::new(c, r), &nearest, empty_tol) != Contact::Overlapping && touches))
     };
     // The direction that moves the centre away from the junction.
     let h0 = match sa {
@@ -233,8 +234,8 @@ fn jump_to_third<K: AxisKernel>(
         if !bound.is_finite() {
             return None;
         }
-        let (hit, d) = finder.nearest(c)?;
-        if k.contact(d, r, tol) != Contact::Overlapping {
+        let (hit, _) = finder.nearest(c)?;
+        if k.element_contact(Disk::new(c, r), &element(hit), tol) != Contact::Overlapping {
             // Empty; the contacts stay on their elements by construction,
             // checked again against rounding.
             return (on(&ea, sa.contact(c, r)) && on(&eb, sb.contact(c, r))).then_some((c, r));
