@@ -36,6 +36,7 @@ use super::element::Element;
 use super::growing_disk::GrowingDisk;
 use super::SitePiece;
 use super::{construct, Disk, Kernel, Orientation, Point};
+use super::{CircleArc, Crossing};
 
 /// How a disk meets a boundary primitive, decided with a length tolerance.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -113,6 +114,12 @@ pub trait AxisKernel: Kernel + Copy + Send + Sync + 'static {
         } else {
             Contact::Apart
         }
+    }
+
+    /// Whether `disk`'s circle passes through `arc` (by more than `tol`,
+    /// model units): such a disk leaves the subshape the arc bounds.
+    fn arc_crossing(&self, arc: &CircleArc, disk: Disk, tol: f64) -> Crossing {
+        super::circle_arc::arc_crossing(arc, disk, tol)
     }
 
     /// How `disk` meets the point `p`, with tolerance `tol` (model units).

@@ -30,6 +30,7 @@ mod bbox;
 #[cfg(any(test, not(feature = "gmp")))]
 mod bigint;
 pub mod bisector;
+mod circle_arc;
 pub mod construct;
 pub mod direction;
 mod disk;
@@ -46,6 +47,7 @@ pub mod tolerance;
 
 pub use axis_kernel::{AxisKernel, Contact};
 pub use bbox::BBox;
+pub use circle_arc::{CircleArc, Crossing};
 pub use disk::Disk;
 pub use point::Point;
 pub use site_piece::SitePiece;

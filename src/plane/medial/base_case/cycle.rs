@@ -2,13 +2,14 @@
 //! fans (the thesis's zero-length arcs) and point-site fans cut into
 //! quarter turns, with where auxiliary arcs separate them.
 
-use super::aux_arc::Port;
+use super::port::Port;
 use super::prepare::{drop_sliver_ends, merge_touching_chains, same_position};
 use super::sites::{angle, element_param};
-use super::{AuxArc, Builder, LocalSite, POINT_SPLITS};
+use super::{Builder, LocalSite, POINT_SPLITS};
 use crate::kernel::apollonius::Site;
 use crate::kernel::fan::Fan;
 use crate::kernel::tolerance::Tolerance;
+use crate::kernel::CircleArc;
 use crate::kernel::{AxisKernel, Point};
 use crate::plane::axis::Primitive;
 use crate::plane::medial::decompose::subshape::{ChainParts, Cut, Piece, Subshape};
@@ -138,7 +139,7 @@ impl<K: AxisKernel> Builder<'_, K> {
                     self.aux.push(Port {
                         disk,
                         site_after: self.sites.len(),
-                        arc: AuxArc { c: c.center, r: c.radius, a, b },
+                        arc: CircleArc { center: c.center, radius: c.radius, from: a, to: b },
                     });
                 }
                 continue;

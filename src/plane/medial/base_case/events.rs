@@ -1,12 +1,13 @@
 //! Events: the disks known without search (ports, corners, joints, fan
 //! ends, leaf arcs), each with its footpoints on the cycle.
 
-use super::aux_arc::Port;
+use super::port::Port;
 use super::{BaseCaseError, Builder, EventKind, Key};
 use crate::kernel::apollonius::Site;
 use crate::kernel::direction::{heading, Heading};
 use crate::kernel::growing_disk::GrowingDisk;
 use crate::kernel::tolerance::Tolerance;
+use crate::kernel::Crossing;
 use crate::kernel::Disk;
 use crate::kernel::{AxisKernel, Contact, Point};
 use crate::plane::axis::Primitive;
@@ -43,7 +44,7 @@ impl<K: AxisKernel> Builder<'_, K> {
 
     /// True when the disk (`c`, `r`) crosses one of the auxiliary arcs.
     pub(super) fn leaves_subshape(&self, c: Point, r: f64) -> bool {
-        self.aux.iter().any(|p| p.arc.crossed_by(c, r, self.tol.touch()))
+        self.aux.iter().any(|p| self.k().arc_crossing(&p.arc, Disk::new(c, r), self.tol.touch()) == Crossing::Crosses)
     }
 
     /// Every site the circle (`c`, `r`) touches within the tolerance.
@@ -209,12 +210,12 @@ impl<K: AxisKernel> Builder<'_, K> {
         // A dividing disk tangent at `p` is the maximal disk there (its
         // other contacts may lie outside this subshape).
         for Port { arc, .. } in &self.aux {
-            let v = arc.c - p;
-            if (v.norm() - arc.r).abs() <= self.tol.touch()
+            let v = arc.center - p;
+            if (v.norm() - arc.radius).abs() <= self.tol.touch()
                 && v.cross(nrm).abs() <= self.tol.touch()
                 && heading(v, nrm) == Heading::Forward
             {
-                best = best.min(arc.r);
+                best = best.min(arc.radius);
             }
         }
         best.is_finite().then(|| Disk::new(g.center(best), best))

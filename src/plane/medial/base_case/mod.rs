@@ -35,16 +35,16 @@ use crate::plane::medial::decompose::subshape::{hugged_disk, Cut, Piece, Subshap
 use crate::plane::medial::disk::maximal::DiskFinder;
 use crate::shape::Shape2d;
 
-mod aux_arc;
 mod branch;
 mod cycle;
 mod events;
+mod port;
 mod prepare;
 mod sites;
 mod walk;
 
-use aux_arc::{AuxArc, Port};
 use events::Event;
+use port::Port;
 use sites::{Key, LocalSite};
 
 /// The directions (angles) where a point site's fan is cut into sites of
