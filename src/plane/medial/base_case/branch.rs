@@ -1,6 +1,8 @@
 //! The branch point of a pocket: the empty Apollonius disk touching the
 //! pocket's two sides and a third site in between.
 
+use super::events::EventRef;
+use super::sites::SiteRef;
 use super::{Builder, Key};
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Disk;
@@ -21,15 +23,15 @@ pub(super) struct Branch {
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Pocket {
     /// The event whose disk bounds the pocket.
-    pub(super) event: usize,
+    pub(super) event: EventRef,
     /// The footpoint the pocket starts at.
     pub(super) start: Key,
     /// Its length along the cycle (offsets; a whole turn for an event
     /// with one footpoint).
     pub(super) span: f64,
     /// The site just after the start and the one just before the end.
-    pub(super) first_site: usize,
-    pub(super) last_site: usize,
+    pub(super) first_site: SiteRef,
+    pub(super) last_site: SiteRef,
 }
 
 /// A disk tangent to the pocket's two sides and a third site, before the
@@ -39,7 +41,7 @@ struct Candidate {
     /// Offset of its contact on the pocket's first site: the candidates are
     /// tried in this order.
     first_offset: f64,
-    third: usize,
+    third: SiteRef,
     center: Point,
     radius: f64,
 }
@@ -60,7 +62,7 @@ impl<K: AxisKernel> Builder<'_, K> {
         // the pocket, by where they touch `s1`; the first empty one wins.
         // (Emptiness costs O(n) each, so it is tested last and in order.)
         let mut candidates: Vec<Candidate> = Vec::new();
-        for t in 0..self.n() {
+        for t in self.site_refs() {
             if t == s1 || t == s2 {
                 continue;
             }
@@ -83,10 +85,10 @@ impl<K: AxisKernel> Builder<'_, K> {
                 // Near-degenerate triples (many disks nearly alike, as at
                 // the centre of a symmetric shape) place contacts a few
                 // tolerances off: allow that much, in length, per site.
-                let slack = |i: usize| {
+                let slack = |i: SiteRef| {
                     (self.tol.branch_contact_slack() / self.length(i, 0.0, 1.0, r).max(f64::MIN_POSITIVE)).min(cap)
                 };
-                let at = |i: usize| {
+                let at = |i: SiteRef| {
                     let u = self.param(i, c, r);
                     let w = self.fraction(i, u);
                     let sl = slack(i);
@@ -116,10 +118,10 @@ impl<K: AxisKernel> Builder<'_, K> {
                 // Empty: no site closer than the radius, inside the subshape,
                 // and for the whole shape (a subshape's own primitives do not
                 // see past its auxiliary arcs).
-                !(0..self.n()).any(|i| self.contact(i, c, r, self.tol.touch()) == Contact::Overlapping)
+                !self.site_refs().any(|i| self.contact(i, c, r, self.tol.touch()) == Contact::Overlapping)
                     && self.finder.intruder(c, r, self.tol.intruder()).is_none()
             })?;
-        let key = |i: usize| self.key(i, self.param(i, c, r), r);
+        let key = |i: SiteRef| self.key(i, self.param(i, c, r), r);
         let raw = [key(s1), key(s2), key(t)];
         let mut keys = raw;
         let sites = [s1, s2, t];
@@ -173,7 +175,7 @@ mod tests {
             let n = bld.n();
             let (s1, _) = bld.site_after(start);
             let (s2, _) = bld.site_before(start);
-            let pocket = Pocket { event: d, start, span: 2.0 * n as f64, first_site: s1, last_site: s2 };
+            let pocket = Pocket { event: EventRef(d), start, span: 2.0 * n as f64, first_site: s1, last_site: s2 };
             assert!(bld.branch(&pocket, -1.0, 2.0 * n as f64).is_none());
         });
     }

@@ -2,6 +2,7 @@
 //! ends, leaf arcs), each with its footpoints on the cycle.
 
 use super::port::Port;
+use super::sites::SiteRef;
 use super::{BaseCaseError, Builder, EventKind, Key};
 use crate::kernel::apollonius::Site;
 use crate::kernel::direction::{heading, Heading};
@@ -14,6 +15,26 @@ use crate::plane::axis::Primitive;
 use crate::plane::medial::decompose::subshape::Cut;
 use crate::shape::{JointKind, Shape2d};
 
+/// An event of the base case: its index in the builder's events (and in
+/// the local axis's nodes, which keep the events' order).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub(super) struct EventRef(pub(super) usize);
+
+impl std::ops::Index<EventRef> for Vec<Event> {
+    type Output = Event;
+    #[inline]
+    fn index(&self, e: EventRef) -> &Event {
+        &self[e.0]
+    }
+}
+
+impl std::ops::IndexMut<EventRef> for Vec<Event> {
+    #[inline]
+    fn index_mut(&mut self, e: EventRef) -> &mut Event {
+        &mut self[e.0]
+    }
+}
+
 pub(super) struct Event {
     pub(super) center: Point,
     pub(super) radius: f64,
@@ -22,7 +43,7 @@ pub(super) struct Event {
     pub(super) feet: Vec<Key>,
     /// Primitives the disk touches along their whole range (an arc and its
     /// own circle): pockets made only of these are empty.
-    pub(super) whole: Vec<usize>,
+    pub(super) whole: Vec<SiteRef>,
 }
 
 impl<K: AxisKernel> Builder<'_, K> {
@@ -38,7 +59,7 @@ impl<K: AxisKernel> Builder<'_, K> {
     }
 
     /// How the circle (`c`, `r`) meets site `i`'s piece, within `tol`.
-    pub(super) fn contact(&self, i: usize, c: Point, r: f64, tol: f64) -> Contact {
+    pub(super) fn contact(&self, i: SiteRef, c: Point, r: f64, tol: f64) -> Contact {
         self.k().piece_contact(Disk::new(c, r), &self.piece(i), tol)
     }
 
@@ -48,10 +69,10 @@ impl<K: AxisKernel> Builder<'_, K> {
     }
 
     /// Every site the circle (`c`, `r`) touches within the tolerance.
-    pub(super) fn touching(&self, c: Point, r: f64) -> (Vec<Key>, Vec<usize>) {
+    pub(super) fn touching(&self, c: Point, r: f64) -> (Vec<Key>, Vec<SiteRef>) {
         let mut feet = Vec::new();
         let mut whole = Vec::new();
-        for i in 0..self.n() {
+        for i in self.site_refs() {
             if let Site::Circle { o, r: rc, outside: false } = self.sites[i].site {
                 if c.dist(o) <= self.tol.touch() && (rc - r).abs() <= self.tol.touch() {
                     feet.push((i, self.key(i, self.sites[i].u0, r)));
@@ -85,14 +106,14 @@ impl<K: AxisKernel> Builder<'_, K> {
         // seen within the tolerance (nearly concentric arcs smear one
         // contact over a range): one footpoint, not two.
         let n = self.n();
-        let has = |j: usize, feet: &[(usize, Key)]| feet.iter().any(|&(s, k)| s == j && k.w > 0.0 && k.w < 1.0);
+        let has = |j: SiteRef, feet: &[(SiteRef, Key)]| feet.iter().any(|&(s, k)| s == j && k.w > 0.0 && k.w < 1.0);
         let keep: Vec<bool> = feet
             .iter()
             .map(|&(i, k)| {
                 let at_start = k.site == i && k.w == 0.0;
                 let at_end = k.site != i || k.w == 1.0;
-                let prev = (i + n - 1) % n;
-                let next = (i + 1) % n;
+                let prev = i.prev(n);
+                let next = i.next(n);
                 let start_taken = at_start && self.sites[prev].joined_next && has(prev, &feet) && !has(i, &feet);
                 let end_taken = at_end && self.sites[i].joined_next && has(next, &feet) && !has(i, &feet);
                 !(start_taken || end_taken)
@@ -113,16 +134,16 @@ impl<K: AxisKernel> Builder<'_, K> {
 
     /// True when key `k`, found on element site `i`, is an end of `i`
     /// where a reflex vertex's fan joins it.
-    pub(super) fn fan_owns(&self, i: usize, k: Key) -> bool {
+    pub(super) fn fan_owns(&self, i: SiteRef, k: Key) -> bool {
         let n = self.n();
-        let is_fan = |j: usize| matches!(self.sites[j].prim, Primitive::Vertex { .. });
+        let is_fan = |j: SiteRef| matches!(self.sites[j].prim, Primitive::Vertex { .. });
         if is_fan(i) {
             return false;
         }
-        let prev = (i + n - 1) % n;
+        let prev = i.prev(n);
         // `k` may already be the next site's start (a joined end).
         let at_start = k.site == i && k.w == 0.0 && self.sites[prev].joined_next && is_fan(prev);
-        let at_end = k.site == (i + 1) % n && k.w == 0.0 && k.site != i && is_fan(k.site);
+        let at_end = k.site == i.next(n) && k.w == 0.0 && k.site != i && is_fan(k.site);
         at_start || at_end
     }
 
@@ -132,8 +153,8 @@ impl<K: AxisKernel> Builder<'_, K> {
         radius: f64,
         kind: EventKind,
         mut feet: Vec<Key>,
-        whole: Vec<usize>,
-    ) -> usize {
+        whole: Vec<SiteRef>,
+    ) -> EventRef {
         // The same disk found twice (a joint disk that is also a branch
         // point or a leaf circle) is one event with all its footpoints.
         // The two auxiliary arcs of one augmenting disk (thesis 2.3.1) are
@@ -141,7 +162,7 @@ impl<K: AxisKernel> Builder<'_, K> {
         // into one node only with the other subshapes.
         let twin = |e: &Event| matches!((e.kind, kind), (EventKind::Port(a), EventKind::Port(b)) if a == b);
         let same = self.events.iter().position(|e| self.same_disk(e, center, radius) && !twin(e));
-        let id = match same {
+        let id = EventRef(match same {
             Some(i) => {
                 let e = &mut self.events[i];
                 feet.append(&mut e.feet);
@@ -155,7 +176,7 @@ impl<K: AxisKernel> Builder<'_, K> {
                 self.events.push(Event { center, radius, kind, feet: Vec::new(), whole });
                 self.events.len() - 1
             }
-        };
+        });
         feet.sort_by(|a, b| self.pos(*a).total_cmp(&self.pos(*b)));
         feet.dedup_by(|a, b| a.site == b.site && (a.w - b.w).abs() <= Tolerance::same_fraction());
         let e = &mut self.events[id];
@@ -169,11 +190,11 @@ impl<K: AxisKernel> Builder<'_, K> {
     /// previous site), tangent with normal `nrm`; `own` are the sites whose
     /// supporting curve is tangent there (skipped, but an arc among them
     /// curving inwards caps the radius at its own).
-    pub(super) fn grow(&self, p: Point, nrm: Point, own: &[usize]) -> Option<Disk> {
+    pub(super) fn grow(&self, p: Point, nrm: Point, own: &[SiteRef]) -> Option<Disk> {
         let g = GrowingDisk { p, n: nrm };
         let t_min = self.tol.least_growth();
         let mut best = f64::INFINITY;
-        for i in 0..self.n() {
+        for i in self.site_refs() {
             let s = &self.sites[i];
             if own.contains(&i) {
                 if let Site::Circle { o, r, outside: false } = s.site {
@@ -226,16 +247,16 @@ impl<K: AxisKernel> Builder<'_, K> {
         // Ports: the auxiliary arcs, between the site before and after.
         for &Port { disk, site_after: next, .. } in &self.aux.clone() {
             let c = cuts[disk];
-            let next = next % n;
-            let feet = vec![Key { site: (next + n - 1) % n, w: 1.0 }, Key { site: next, w: 0.0 }];
+            let next = SiteRef(next % n);
+            let feet = vec![Key { site: next.prev(n), w: 1.0 }, Key { site: next, w: 0.0 }];
             self.add_event(c.center, c.radius, EventKind::Port(disk), feet, Vec::new());
         }
         // Joints between consecutive sites.
-        for i in 0..n {
+        for i in self.site_refs() {
             if !self.sites[i].joined_next {
                 continue;
             }
-            let j = (i + 1) % n;
+            let j = i.next(n);
             let (a, b) = (self.sites[i], self.sites[j]);
             let key = Key { site: j, w: 0.0 };
             let p = self.point_of(j, b.u0);
@@ -283,7 +304,7 @@ impl<K: AxisKernel> Builder<'_, K> {
             self.add_event(c, r, EventKind::Joint, feet, whole);
         }
         // Arcs whose own circle is the maximal disk at their middle.
-        for i in 0..n {
+        for i in self.site_refs() {
             let Site::Circle { o, r, outside: false } = self.sites[i].site else { continue };
             let um = 0.5 * (self.sites[i].u0 + self.sites[i].u1);
             let (p, nrm) = crate::kernel::bisector::footpoint(&self.sites[i].site, um);
@@ -300,7 +321,7 @@ impl<K: AxisKernel> Builder<'_, K> {
     /// True when site `i` between fractions `w0` and `w1` stays within the
     /// tolerance of the circle (`c`, `r`): a footpoint smeared by rounding
     /// into two (a disk through a vertex just beside its tangency point).
-    pub(super) fn hugs(&self, i: usize, w0: f64, w1: f64, c: Point, r: f64) -> bool {
+    pub(super) fn hugs(&self, i: SiteRef, w0: f64, w1: f64, c: Point, r: f64) -> bool {
         if let Site::Point(_) = self.sites[i].site {
             // A disk through the vertex touches it in one direction only;
             // the rest of the fan is real boundary for the axis.
@@ -350,7 +371,7 @@ mod tests {
         with_events(&rectangle(), |b| {
             // The disk of radius 1 at (1, 1) touches the bottom, top and left.
             let (feet, whole) = b.touching(Point::new(1.0, 1.0), 1.0);
-            let mut sites: Vec<usize> = feet.iter().map(|k| k.site).collect();
+            let mut sites: Vec<usize> = feet.iter().map(|k| k.site.0).collect();
             sites.sort_unstable();
             assert_eq!(sites, vec![0, 2, 3]);
             assert!(whole.is_empty());

@@ -21,11 +21,38 @@ pub(super) struct LocalSite {
     pub(super) joined_next: bool,
 }
 
-/// A position on the subshape's boundary cycle: primitive index and the
-/// fraction `w` ∈ [0, 1] of its parameter range.
+/// A site of the cycle: its index in the builder's sites. Valid for one
+/// builder; the cycle wraps ([`next`](Self::next), [`prev`](Self::prev)).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub(super) struct SiteRef(pub(super) usize);
+
+impl SiteRef {
+    /// The site after this one in a cycle of `n`.
+    #[inline]
+    pub(super) fn next(self, n: usize) -> SiteRef {
+        SiteRef((self.0 + 1) % n)
+    }
+
+    /// The site before this one in a cycle of `n`.
+    #[inline]
+    pub(super) fn prev(self, n: usize) -> SiteRef {
+        SiteRef((self.0 + n - 1) % n)
+    }
+}
+
+impl std::ops::Index<SiteRef> for Vec<LocalSite> {
+    type Output = LocalSite;
+    #[inline]
+    fn index(&self, i: SiteRef) -> &LocalSite {
+        &self[i.0]
+    }
+}
+
+/// A position on the subshape's boundary cycle: the site and the fraction
+/// `w` ∈ [0, 1] of its parameter range.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct Key {
-    pub(super) site: usize,
+    pub(super) site: SiteRef,
     pub(super) w: f64,
 }
 
@@ -46,38 +73,43 @@ impl<K: AxisKernel> Builder<'_, K> {
         self.sites.len()
     }
 
+    /// Every site of the cycle, in order.
+    pub(super) fn site_refs(&self) -> impl Iterator<Item = SiteRef> {
+        (0..self.sites.len()).map(SiteRef)
+    }
+
     /// Site `i` as the kernel sees it: its carrier between its parameters.
     #[inline]
-    pub(super) fn piece(&self, i: usize) -> SitePiece {
+    pub(super) fn piece(&self, i: SiteRef) -> SitePiece {
         let s = &self.sites[i];
         SitePiece { site: s.site, u0: s.u0, u1: s.u1 }
     }
 
     /// Parameter of the disk (`c`, `r`) on site `i`, unwrapped into its range.
-    pub(super) fn param(&self, i: usize, c: Point, r: f64) -> f64 {
+    pub(super) fn param(&self, i: SiteRef, c: Point, r: f64) -> f64 {
         self.piece(i).param(c, r)
     }
 
-    pub(super) fn fraction(&self, i: usize, u: f64) -> f64 {
+    pub(super) fn fraction(&self, i: SiteRef, u: f64) -> f64 {
         let s = &self.sites[i];
         (u - s.u0) / (s.u1 - s.u0)
     }
 
     /// The boundary point at parameter `u` of site `i`.
-    pub(super) fn point_of(&self, i: usize, u: f64) -> Point {
+    pub(super) fn point_of(&self, i: SiteRef, u: f64) -> Point {
         self.piece(i).point_at(u)
     }
 
     /// Distance from `c` to site `i`'s piece and the parameter of the
     /// closest point (clamped to the range).
-    pub(super) fn distance(&self, i: usize, c: Point) -> (f64, f64) {
+    pub(super) fn distance(&self, i: SiteRef, c: Point) -> (f64, f64) {
         self.piece(i).distance(c)
     }
 
     /// The cycle key of parameter `u` on site `i`: ends snapped when within
     /// the tolerance (in length, for a disk of radius `r`), and the end of
     /// a primitive joined to the next stored as the next one's start.
-    pub(super) fn key(&self, i: usize, u: f64, r: f64) -> Key {
+    pub(super) fn key(&self, i: SiteRef, u: f64, r: f64) -> Key {
         let s = &self.sites[i];
         let scale = match s.site {
             Site::Line { .. } => 1.0,
@@ -92,14 +124,14 @@ impl<K: AxisKernel> Builder<'_, K> {
             w = 1.0;
         }
         if w == 1.0 && s.joined_next {
-            return Key { site: (i + 1) % self.n(), w: 0.0 };
+            return Key { site: i.next(self.n()), w: 0.0 };
         }
         // Where a site meets an auxiliary arc only the dividing disk itself
         // touches (a maximal disk tangent there lies on the same normal,
         // so it is that disk or not maximal): any other disk's contact
         // there is rounding of one just inside the site.
         let n = self.n();
-        if w == 0.0 && !self.sites[(i + n - 1) % n].joined_next {
+        if w == 0.0 && !self.sites[i.prev(n)].joined_next {
             w = Tolerance::nudge();
         } else if w == 1.0 && !s.joined_next {
             w = 1.0 - Tolerance::nudge();
@@ -111,7 +143,7 @@ impl<K: AxisKernel> Builder<'_, K> {
     /// strictly inside the site's piece from the site's outer side: the
     /// two sides of a curve site lie on each other, and a disk touching
     /// one touches the other there from behind.
-    pub(super) fn faces_inside(&self, i: usize, c: Point, u: f64) -> bool {
+    pub(super) fn faces_inside(&self, i: SiteRef, c: Point, u: f64) -> bool {
         let s = &self.sites[i];
         let w = self.fraction(i, u);
         if !(w > 0.0 && w < 1.0) {
@@ -127,7 +159,7 @@ impl<K: AxisKernel> Builder<'_, K> {
     }
 
     pub(super) fn pos(&self, k: Key) -> f64 {
-        2.0 * k.site as f64 + k.w
+        2.0 * k.site.0 as f64 + k.w
     }
 
     /// Offset of `k` after `a` along the cycle, in [0, 2n).
@@ -145,7 +177,7 @@ impl<K: AxisKernel> Builder<'_, K> {
 
     /// Length (model units) of the part of site `i` between fractions
     /// `w0` and `w1`, for a disk of radius `r` at a vertex.
-    pub(super) fn length(&self, i: usize, w0: f64, w1: f64, r: f64) -> f64 {
+    pub(super) fn length(&self, i: SiteRef, w0: f64, w1: f64, r: f64) -> f64 {
         let s = &self.sites[i];
         let du = (s.u1 - s.u0).abs() * (w1 - w0).abs();
         match s.site {
@@ -156,24 +188,24 @@ impl<K: AxisKernel> Builder<'_, K> {
     }
 
     /// The site just after `k` and its fraction there.
-    pub(super) fn site_after(&self, k: Key) -> (usize, f64) {
+    pub(super) fn site_after(&self, k: Key) -> (SiteRef, f64) {
         if k.w < 1.0 {
             (k.site, k.w)
         } else {
-            ((k.site + 1) % self.n(), 0.0)
+            (k.site.next(self.n()), 0.0)
         }
     }
 
     /// The site just before `k` and its fraction there.
-    pub(super) fn site_before(&self, k: Key) -> (usize, f64) {
+    pub(super) fn site_before(&self, k: Key) -> (SiteRef, f64) {
         if k.w > 0.0 {
             (k.site, k.w)
         } else {
-            ((k.site + self.n() - 1) % self.n(), 1.0)
+            (k.site.prev(self.n()), 1.0)
         }
     }
 
-    pub(super) fn u_at(&self, i: usize, w: f64) -> f64 {
+    pub(super) fn u_at(&self, i: SiteRef, w: f64) -> f64 {
         let s = &self.sites[i];
         s.u0 + (s.u1 - s.u0) * w
     }
@@ -189,16 +221,16 @@ mod tests {
         with_events(&rectangle(), |b| {
             let tol = b.tol.touch();
             // Site 0 is the bottom edge, parameters 0..4 along it.
-            assert_eq!(b.key(0, 2.0, 1.0), Key { site: 0, w: 0.5 });
-            assert_eq!(b.key(0, 0.5 * tol, 1.0), Key { site: 0, w: 0.0 });
-            assert_eq!(b.key(0, 4.0 - 0.5 * tol, 1.0), Key { site: 1, w: 0.0 });
+            assert_eq!(b.key(SiteRef(0), 2.0, 1.0), Key { site: SiteRef(0), w: 0.5 });
+            assert_eq!(b.key(SiteRef(0), 0.5 * tol, 1.0), Key { site: SiteRef(0), w: 0.0 });
+            assert_eq!(b.key(SiteRef(0), 4.0 - 0.5 * tol, 1.0), Key { site: SiteRef(1), w: 0.0 });
         });
     }
 
     #[test]
     fn offsets_run_forwards_round_the_cycle() {
         with_events(&rectangle(), |b| {
-            let (a, k) = (Key { site: 3, w: 0.5 }, Key { site: 0, w: 0.25 });
+            let (a, k) = (Key { site: SiteRef(3), w: 0.5 }, Key { site: SiteRef(0), w: 0.25 });
             // Site i lies at [2i, 2i + 1]: from 6.5 round to 8.25.
             assert_eq!(b.offset(a, k), 1.75);
             assert_eq!(b.offset(k, a), 8.0 - 1.75);
@@ -208,10 +240,10 @@ mod tests {
     #[test]
     fn distance_and_parameter_of_the_nearest_point() {
         with_events(&rectangle(), |b| {
-            let (d, u) = b.distance(0, Point::new(1.5, 0.75));
+            let (d, u) = b.distance(SiteRef(0), Point::new(1.5, 0.75));
             assert!((d - 0.75).abs() < 1e-15 && (u - 1.5).abs() < 1e-15);
             // Beyond the segment's end the end is nearest.
-            let (d, u) = b.distance(0, Point::new(5.0, -1.0));
+            let (d, u) = b.distance(SiteRef(0), Point::new(5.0, -1.0));
             assert!((d - 2f64.sqrt()).abs() < 1e-15 && u == 4.0);
         });
     }

@@ -2,6 +2,8 @@
 //! an edge to the one event met from both ends, or a branch point first.
 
 use super::branch::Pocket;
+use super::events::EventRef;
+use super::sites::SiteRef;
 use super::{BaseCaseError, Builder, EventKind, Key, LocalAxis, LocalEdge, LocalNode};
 use crate::kernel::apollonius::Site;
 use crate::kernel::tolerance::Tolerance;
@@ -13,7 +15,7 @@ struct Met {
     /// Offset along the cycle from the pocket's start.
     offset: f64,
     /// The event it belongs to.
-    event: usize,
+    event: EventRef,
     /// Where it lies.
     key: Key,
 }
@@ -22,7 +24,7 @@ impl<K: AxisKernel> Builder<'_, K> {
     /// True when the pocket of event `d` from `a` to `b` holds no more
     /// boundary than a sliver of [`SLIVER`] tolerances, besides the sites the
     /// disk touches along their whole range or hugs.
-    pub(super) fn pocket_is_empty(&self, d: usize, a: Key, b: Key) -> bool {
+    pub(super) fn pocket_is_empty(&self, d: EventRef, a: Key, b: Key) -> bool {
         let ev = &self.events[d];
         let n = self.n();
         let len = if a == b { 2.0 * n as f64 } else { self.offset(a, b) };
@@ -33,7 +35,7 @@ impl<K: AxisKernel> Builder<'_, K> {
         let end = x + len;
         while x < end - eps {
             let block = (x / 2.0).floor();
-            let i = block as usize % n;
+            let i = SiteRef(block as usize % n);
             let (lo, hi) = (x - 2.0 * block, (end - 2.0 * block).min(1.0));
             if hi > lo && !ev.whole.contains(&i) && !self.hugs(i, lo, hi, ev.center, ev.radius) {
                 content += self.length(i, lo, hi, ev.radius);
@@ -48,8 +50,8 @@ impl<K: AxisKernel> Builder<'_, K> {
     /// range, and a clamped end would send the edge's curve past its node.
     /// A corner (radius 0) or a disk concentric with an arc has no
     /// direction: its key (fractions `w`) stands in.
-    pub(super) fn params_between(&self, i: usize, d: usize, e: usize, w: (f64, f64)) -> (f64, f64) {
-        let at = |ev: usize, w: f64| {
+    pub(super) fn params_between(&self, i: SiteRef, d: EventRef, e: EventRef, w: (f64, f64)) -> (f64, f64) {
+        let at = |ev: EventRef, w: f64| {
             let (c, r) = (self.events[ev].center, self.events[ev].radius);
             let degenerate = match self.sites[i].site {
                 Site::Point(q) => c.dist(q) <= self.tol.touch(),
@@ -67,10 +69,11 @@ impl<K: AxisKernel> Builder<'_, K> {
 
     pub(super) fn walk(mut self) -> Result<LocalAxis, BaseCaseError> {
         let mut edges: Vec<LocalEdge> = Vec::new();
-        let mut linked: Vec<(usize, usize)> = Vec::new();
-        let mut work: Vec<(usize, usize)> = Vec::new();
+        let mut linked: Vec<(EventRef, EventRef)> = Vec::new();
+        // (event, index of the footpoint that starts the pocket)
+        let mut work: Vec<(EventRef, usize)> = Vec::new();
         for (d, e) in self.events.iter().enumerate() {
-            work.extend((0..e.feet.len()).map(|j| (d, j)));
+            work.extend((0..e.feet.len()).map(|j| (EventRef(d), j)));
         }
         // Every pocket is walked a few times (once more per branch point
         // found in it); far more steps means the walk is going round.
@@ -86,7 +89,7 @@ impl<K: AxisKernel> Builder<'_, K> {
             let span = if a == b { 2.0 * self.n() as f64 } else { self.offset(a, b) };
             // The first footpoints of other events met from either end.
             let (mut first, mut last): (Option<Met>, Option<Met>) = (None, None);
-            for (id, e) in self.events.iter().enumerate() {
+            for (id, e) in self.events.iter().enumerate().map(|(i, e)| (EventRef(i), e)) {
                 if id == d {
                     continue;
                 }
@@ -125,8 +128,8 @@ impl<K: AxisKernel> Builder<'_, K> {
                     }
                     // Walking from d into the pocket, s1 (after a) is on the right.
                     edges.push(LocalEdge {
-                        from: d,
-                        to: e,
+                        from: d.0,
+                        to: e.0,
                         sites: [self.sites[s2].prim, self.sites[s1].prim],
                         params: [self.params_between(s2, d, e, (w2b, w2e)), self.params_between(s1, d, e, (w1a, w1e))],
                     });
@@ -186,9 +189,9 @@ mod tests {
             // which is not empty; a pocket from a key to a key just after
             // it holds nothing.
             let a = b.events[0].feet[0];
-            assert!(!b.pocket_is_empty(0, a, a));
+            assert!(!b.pocket_is_empty(EventRef(0), a, a));
             let just_after = Key { site: a.site, w: a.w + 1e-15 };
-            assert!(b.pocket_is_empty(0, a, just_after));
+            assert!(b.pocket_is_empty(EventRef(0), a, just_after));
         });
     }
 }
