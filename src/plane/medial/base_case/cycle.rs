@@ -218,7 +218,7 @@ impl<K: AxisKernel> Builder<'_, K> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::fixtures::{rectangle, shape, with_events};
+    use super::super::fixtures::{l_shape, rectangle, with_events};
     use crate::plane::axis::Primitive;
 
     #[test]
@@ -233,14 +233,7 @@ mod tests {
 
     #[test]
     fn a_reflex_vertex_is_a_fan_site_between_its_elements() {
-        let l = shape(&[
-            (0.0, 0.0, 0.0),
-            (4.0, 0.0, 0.0),
-            (4.0, 1.0, 0.0),
-            (2.0, 1.0, 0.0),
-            (2.0, 3.0, 0.0),
-            (0.0, 3.0, 0.0),
-        ]);
+        let l = l_shape();
         with_events(&l, |b| {
             let fans: Vec<usize> = (0..b.sites.len())
                 .filter(|&i| matches!(b.sites[i].prim, Primitive::Vertex { vertex: 3, .. }))

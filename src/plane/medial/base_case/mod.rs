@@ -199,6 +199,11 @@ pub(super) mod fixtures {
         shape(&[(0.0, 0.0, 0.0), (4.0, 0.0, 0.0), (4.0, 2.0, 0.0), (0.0, 2.0, 0.0)])
     }
 
+    /// An L of width 4 and height 3 whose vertex (2, 1), index 3, is reflex.
+    pub(in crate::plane::medial::base_case) fn l_shape() -> Shape2d {
+        shape(&[(0.0, 0.0, 0.0), (4.0, 0.0, 0.0), (4.0, 1.0, 0.0), (2.0, 1.0, 0.0), (2.0, 3.0, 0.0), (0.0, 3.0, 0.0)])
+    }
+
     /// Runs `f` on the builder of the whole of `shape`'s outer loop, with
     /// its sites and events collected (not yet walked).
     pub(in crate::plane::medial::base_case) fn with_events<T>(

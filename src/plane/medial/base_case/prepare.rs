@@ -148,15 +148,8 @@ mod tests {
 
     #[test]
     fn a_chain_end_a_sliver_past_a_reflex_vertex_moves_onto_it() {
-        // An L: the vertex (2, 1) (index 3) is reflex.
-        let shape = super::super::fixtures::shape(&[
-            (0.0, 0.0, 0.0),
-            (4.0, 0.0, 0.0),
-            (4.0, 1.0, 0.0),
-            (2.0, 1.0, 0.0),
-            (2.0, 3.0, 0.0),
-            (0.0, 3.0, 0.0),
-        ]);
+        // The vertex (2, 1) (index 3) of the L is reflex.
+        let shape = super::super::fixtures::l_shape();
         let tol = shape.tolerance();
         let near = BoundaryPos { loop_index: 0, element: 2, t: 1.0 - tol / 4.0 };
         assert_eq!(short_of_reflex(&shape, near, 2.0 * tol, true).t, 1.0);
