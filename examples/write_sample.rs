@@ -1,12 +1,13 @@
 //! Writes a sample shape as medax JSON: `cargo run --release --example
-//! write_sample -- KIND N OUT.json` with KIND = star | flower | plate | comb.
+//! write_sample -- KIND N OUT.json` with KIND = star | flower | plate | comb |
+//! holes | fourier (seed from `MEDAX_SEED`, default 1).
 
 use medax::shape::{samples, Shape2d, ShapeOptions};
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     if args.len() != 4 {
-        eprintln!("usage: write_sample star|flower|plate|comb|holes N OUT.json");
+        eprintln!("usage: write_sample star|flower|plate|comb|holes|fourier N OUT.json");
         std::process::exit(2);
     }
     let n: usize = args[2].parse().expect("N must be a whole number");
@@ -16,6 +17,9 @@ fn main() {
         "plate" => samples::perforated_plate(((n as f64) / 2.0).sqrt().ceil() as usize),
         "comb" => samples::slanted_comb(n / 4, (n / 8) as f64),
         "holes" => samples::random_holes(n, 1),
+        "fourier" => {
+            samples::fourier_biarcs(n, std::env::var("MEDAX_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(1))
+        }
         other => panic!("unknown kind {other}"),
     };
     let shape = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).expect("samples are valid");

@@ -78,6 +78,54 @@ pub fn flower_arcs(n: usize) -> Vec<Vec<Vertex>> {
     vec![verts]
 }
 
+/// A smooth random closed curve of `n` arcs (n rounded up to even): the
+/// radial Fourier series r(θ) = 1 + Σ_{k=1..7} a_k cos(kθ + φ_k) with a_k
+/// normal of deviation 0.35/k and φ_k uniform (scaled down, if need be, so
+/// that r ≥ 0.2: star-shaped about the origin, hence simple), sampled at
+/// `n/2` uniform angles and interpolated by biarcs with the curve's exact
+/// tangents. Every joint is tangent-continuous up to rounding. The family
+/// issue 17 found breaking down at 10^5 arcs.
+pub fn fourier_biarcs(n: usize, seed: u64) -> Vec<Vec<Vertex>> {
+    let mut rng = Mix(seed);
+    let mut gauss = || {
+        // Box–Muller; 1 − u keeps the logarithm finite.
+        let (u, v) = (1.0 - rng.next(), rng.next());
+        (-2.0 * u.ln()).sqrt() * (TAU * v).cos()
+    };
+    let mut terms: Vec<(f64, f64, f64)> = (1..=7)
+        .map(|k| {
+            let a = gauss() * 0.35 / k as f64;
+            (k as f64, a, 0.0)
+        })
+        .collect();
+    for t in terms.iter_mut() {
+        t.2 = TAU * rng.next();
+    }
+    // The lowest radius bounds how far the series may reach below 1.
+    let reach: f64 = terms.iter().map(|t| t.1.abs()).sum();
+    let scale = if reach > 0.8 { 0.8 / reach } else { 1.0 };
+    let radius = |t: f64| 1.0 + scale * terms.iter().map(|&(k, a, phi)| a * (k * t + phi).cos()).sum::<f64>();
+    let slope = |t: f64| -scale * terms.iter().map(|&(k, a, phi)| a * k * (k * t + phi).sin()).sum::<f64>();
+    let m = n.max(8).div_ceil(2);
+    let samples: Vec<(Point, Point)> = (0..m)
+        .map(|i| TAU * i as f64 / m as f64)
+        .map(|t| {
+            let (r, dr) = (radius(t), slope(t));
+            let (s, c) = t.sin_cos();
+            (Point::new(r * c, r * s), Point::new(dr * c - r * s, dr * s + r * c).unit())
+        })
+        .collect();
+    let mut verts = Vec::with_capacity(2 * m);
+    for i in 0..m {
+        let (p0, t0) = samples[i];
+        let (p1, t1) = samples[(i + 1) % m];
+        let (joint, b1, b2) = biarc(p0, t0, p1, t1);
+        verts.push(Vertex { p: p0, bulge: b1 });
+        verts.push(Vertex { p: joint, bulge: b2 });
+    }
+    vec![verts]
+}
+
 /// A plate with a `k × k` grid of circular holes, each hole two half arcs:
 /// `2·k²` hole arcs plus the 4 outer segments.
 pub fn perforated_plate(k: usize) -> Vec<Vec<Vertex>> {
