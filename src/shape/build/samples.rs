@@ -254,3 +254,28 @@ pub fn spike_holes(twin: bool, many: bool) -> Vec<Vec<Vertex>> {
     }
     loops
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shape::{JointKind, Shape2d, ShapeOptions};
+
+    #[test]
+    fn fourier_curves_are_valid_smooth_and_follow_their_series() {
+        for seed in 1..6 {
+            let shape = Shape2d::from_bulge_loops(fourier_biarcs(2000, seed), &ShapeOptions::default())
+                .unwrap_or_else(|e| panic!("seed {seed}: {e}"));
+            assert_eq!(shape.element_count(), 2000);
+            // Every joint is tangent-continuous, and the curve stays round
+            // the origin within the radii the scaling allows.
+            assert!((0..2000).all(|k| shape.joint(0, k) == JointKind::Smooth), "seed {seed}");
+            for v in shape.loops()[0].vertices() {
+                let r = v.p.norm();
+                assert!((0.2 - 1e-9..=1.8 + 1e-9).contains(&r), "seed {seed}: radius {r}");
+            }
+        }
+        // The same seed gives the same curve, another seed another one.
+        assert_eq!(fourier_biarcs(100, 3), fourier_biarcs(100, 3));
+        assert_ne!(fourier_biarcs(100, 3), fourier_biarcs(100, 4));
+    }
+}
