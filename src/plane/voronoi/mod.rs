@@ -5,7 +5,7 @@
 //! the medial axis of that shape is the closure of the Voronoi edge graph
 //! of the sites and Γ. Γ is either the caller's (then it is a site like
 //! any other) or chosen here: a circle around the sites, grown until every
-//! Voronoi vertex of the sites alone lies inside it (`voronoi_frame`).
+//! Voronoi vertex of the sites alone lies inside it (`frame.rs`).
 //!
 //! Each edge of the axis separates two primitives; an edge whose two
 //! primitives belong to one site is a *self-edge* (points with two nearest

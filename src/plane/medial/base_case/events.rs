@@ -52,7 +52,7 @@ impl<K: AxisKernel> Builder<'_, K> {
     }
 
     /// True when the disk (`c`, `r`) is event `e`'s own (centres and radii
-    /// within [`SAME_EVENT`] tolerances): one event, not two.
+    /// within [`Tolerance::same_event`]): one event, not two.
     pub(super) fn same_disk(&self, e: &Event, c: Point, r: f64) -> bool {
         let near = self.tol.same_event();
         e.center.dist(c) <= near && (e.radius - r).abs() <= near

@@ -56,7 +56,7 @@ pub(crate) fn position(shape: &Shape2d, f: &Footpoint) -> BoundaryPos {
 }
 
 /// True when a footpoint of a disk of radius `r` lies within
-/// [`SLIVER_END`] tolerances of a convex corner. Only a disk of radius 0
+/// [`Tolerance::sliver_end`] of a convex corner. Only a disk of radius 0
 /// touches a convex corner; a larger one comes that close at a nearly flat
 /// corner, where its contacts on the two elements merge into one footpoint
 /// at the vertex (or leave a sliver of a few tolerances past it), and a
