@@ -41,14 +41,7 @@ pub fn heading(n: Point, v: Point) -> Heading {
 /// [`Orientation::Collinear`] along or opposite it (or not a number).
 #[inline]
 pub fn turn(a: Point, b: Point) -> Orientation {
-    let c = a.cross(b);
-    if c > 0.0 {
-        Orientation::Left
-    } else if c < 0.0 {
-        Orientation::Right
-    } else {
-        Orientation::Collinear
-    }
+    super::orientation_of(a.cross(b))
 }
 
 /// The angle of direction `v` from the positive x axis, radians in

@@ -126,7 +126,8 @@ fn incircle_det(a: Point, b: Point, c: Point, d: Point) -> (f64, f64) {
     (det, permanent)
 }
 
-fn orientation_of(det: f64) -> Orientation {
+/// The orientation a determinant's sign stands for (positive: left).
+pub(crate) fn orientation_of(det: f64) -> Orientation {
     if det > 0.0 {
         Orientation::Left
     } else if det < 0.0 {

@@ -50,6 +50,21 @@ fn biarc(p0: Point, t0: Point, p1: Point, t1: Point) -> (Point, f64, f64) {
     (joint, b1, b2)
 }
 
+/// The closed loop of biarcs through `samples` (point, unit tangent), two
+/// arcs per sample, tangent-continuous at every joint up to rounding.
+fn biarc_loop(samples: &[(Point, Point)]) -> Vec<Vertex> {
+    let m = samples.len();
+    let mut verts = Vec::with_capacity(2 * m);
+    for i in 0..m {
+        let (p0, t0) = samples[i];
+        let (p1, t1) = samples[(i + 1) % m];
+        let (joint, b1, b2) = biarc(p0, t0, p1, t1);
+        verts.push(Vertex { p: p0, bulge: b1 });
+        verts.push(Vertex { p: joint, bulge: b2 });
+    }
+    verts
+}
+
 /// A smooth (C1) closed curve of `n` circular arcs (n rounded up to even):
 /// biarcs between `n/2` points of the flower r(θ) = 1 + 0.3·sin(k·θ), with
 /// k = max(7, n/20000) lobes so that arcs keep bulging beyond the default
@@ -67,15 +82,7 @@ pub fn flower_arcs(n: usize) -> Vec<Vec<Vertex>> {
     };
     let samples: Vec<(Point, Point)> =
         (0..m).map(|i| TAU * i as f64 / m as f64).map(|t| (curve(t), tangent(t))).collect();
-    let mut verts = Vec::with_capacity(2 * m);
-    for i in 0..m {
-        let (p0, t0) = samples[i];
-        let (p1, t1) = samples[(i + 1) % m];
-        let (joint, b1, b2) = biarc(p0, t0, p1, t1);
-        verts.push(Vertex { p: p0, bulge: b1 });
-        verts.push(Vertex { p: joint, bulge: b2 });
-    }
-    vec![verts]
+    vec![biarc_loop(&samples)]
 }
 
 /// A smooth random closed curve of `n` arcs (n rounded up to even): the
@@ -115,15 +122,7 @@ pub fn fourier_biarcs(n: usize, seed: u64) -> Vec<Vec<Vertex>> {
             (Point::new(r * c, r * s), Point::new(dr * c - r * s, dr * s + r * c).unit())
         })
         .collect();
-    let mut verts = Vec::with_capacity(2 * m);
-    for i in 0..m {
-        let (p0, t0) = samples[i];
-        let (p1, t1) = samples[(i + 1) % m];
-        let (joint, b1, b2) = biarc(p0, t0, p1, t1);
-        verts.push(Vertex { p: p0, bulge: b1 });
-        verts.push(Vertex { p: joint, bulge: b2 });
-    }
-    vec![verts]
+    vec![biarc_loop(&samples)]
 }
 
 /// A plate with a `k × k` grid of circular holes, each hole two half arcs:
