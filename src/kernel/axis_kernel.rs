@@ -136,8 +136,46 @@ pub trait AxisKernel: Kernel + Copy + Send + Sync + 'static {
     /// How `disk` meets the carrier piece `piece`, with tolerance `tol`
     /// (model units).
     fn piece_contact(&self, disk: Disk, piece: &SitePiece, tol: f64) -> Contact {
-        self.contact(piece.distance(disk.center).0, disk.radius, tol)
+        self.piece_contact_at(disk, piece, tol).0
     }
+
+    /// [`piece_contact`](Self::piece_contact) with the parameter of the
+    /// piece's point nearest to the disk's centre (clamped to the piece),
+    /// where the contact is.
+    fn piece_contact_at(&self, disk: Disk, piece: &SitePiece, tol: f64) -> (Contact, f64) {
+        let (d, u) = piece.distance(disk.center);
+        (self.contact(d, disk.radius, tol), u)
+    }
+
+    /// Which side of `site`'s carrier the point `c` lies on: a point is
+    /// faced from every direction, a line from the side its normal points
+    /// to, a circle from outside or inside as the site says.
+    fn carrier_side(&self, site: &Site, c: Point) -> CarrierSide {
+        let signed = match *site {
+            Site::Point(_) => return CarrierSide::Front,
+            Site::Line { a, n } => (c - a).dot(n),
+            Site::Circle { o, r, outside: true } => c.dist(o) - r,
+            Site::Circle { o, r, outside: false } => r - c.dist(o),
+        };
+        match signed.partial_cmp(&0.0) {
+            Some(std::cmp::Ordering::Greater) => CarrierSide::Front,
+            Some(std::cmp::Ordering::Equal) => CarrierSide::On,
+            _ => CarrierSide::Behind,
+        }
+    }
+}
+
+/// Which side of a site's carrier a point lies on, as the site is seen
+/// from the shape: `Front` is the side the medial disks touch it from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum CarrierSide {
+    /// On the disks' side, strictly.
+    Front,
+    /// On the carrier (within rounding of the f64 evaluation).
+    On,
+    /// Behind the carrier: a disk centred there touches it from the
+    /// wrong side.
+    Behind,
 }
 
 /// The first two contacts of `hits`, packed from the front.

@@ -67,6 +67,30 @@ impl Fan {
         cw_angle(self.start, d)
     }
 
+    /// Whether direction `d` lies in the fan, its ends widened by `slack`
+    /// radians on either side.
+    #[inline]
+    pub fn contains(&self, d: Point, slack: f64) -> bool {
+        let x = self.offset_of(d);
+        x <= self.width + slack || x >= std::f64::consts::TAU - slack
+    }
+
+    /// How far clockwise from the start direction `d` lies, radians, with
+    /// the gap outside the fan cut in its middle: a direction just before
+    /// the start reads as a small negative offset, one just past the end
+    /// as a little more than the width. A direction a hair outside either
+    /// end thus stays on that end's side, whichever of two neighbouring
+    /// fans (sharing the end up to rounding) it is measured in.
+    #[inline]
+    pub fn signed_offset_of(&self, d: Point) -> f64 {
+        let x = self.offset_of(d);
+        if x > self.width && std::f64::consts::TAU - x < x - self.width {
+            x - std::f64::consts::TAU
+        } else {
+            x
+        }
+    }
+
     /// The direction `fraction` (0 to 1) of the way through the fan, with
     /// the start direction's length.
     #[inline]
@@ -90,6 +114,12 @@ mod tests {
         assert_eq!(whole.width(), std::f64::consts::TAU);
         assert!(whole.direction_at(0.5).dist(Point::new(-1.0, 0.0)) < 1e-15);
         assert!((whole.offset_of(Point::new(0.0, 1.0)) - 1.5 * std::f64::consts::PI).abs() < 1e-15);
+        let north = Point::new(0.0, 1.0);
+        assert!(quarter.contains(Point::new(1.0, -1.0), 0.0) && !quarter.contains(north, 0.1));
+        assert!(quarter.contains(Point::new(1.0, 1e-9), 1e-8));
+        // Just before the start: negative; just past the end: past the width.
+        assert!((quarter.signed_offset_of(Point::new(1.0, 1e-3)) + 1e-3).abs() < 1e-9);
+        assert!(quarter.signed_offset_of(Point::new(-1e-3, -1.0)) > quarter.width());
     }
 
     #[test]

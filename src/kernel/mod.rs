@@ -45,7 +45,7 @@ mod point;
 mod site_piece;
 pub mod tolerance;
 
-pub use axis_kernel::{AxisKernel, Contact};
+pub use axis_kernel::{AxisKernel, CarrierSide, Contact};
 pub use bbox::BBox;
 pub use circle_arc::{CircleArc, Crossing};
 pub use disk::Disk;

@@ -357,7 +357,7 @@ impl ChainTree {
         loops: &[Loop],
         p: Point,
         d: f64,
-        accept: impl Fn(f64) -> bool,
+        accept: impl Fn(&Element) -> bool,
     ) -> Option<(ElementRef, f64)> {
         let mut stack: Vec<u32> = Vec::with_capacity(64);
         stack.extend(self.roots.iter().rev().filter(|&&r| self.nodes[r as usize].bound_below(p, d).is_some()));
@@ -365,8 +365,9 @@ impl ChainTree {
             let n = &self.nodes[id as usize];
             if n.left == u32::MAX {
                 for r in n.elements() {
-                    let e = loops[r.loop_index].element(r.element).closest_point(p).0;
-                    if e < d && accept(e) {
+                    let element = loops[r.loop_index].element(r.element);
+                    let e = element.closest_point(p).0;
+                    if e < d && accept(&element) {
                         return Some((r, e));
                     }
                 }
@@ -509,7 +510,7 @@ mod tests {
                 // count, and the search must go on past the others.
                 let inner = 0.99 * d;
                 let ring = s.loops()[0].elements().any(|e| (inner..d).contains(&e.closest_point(p).0));
-                let found = t.closer_than(s.loops(), p, d, |e| e >= inner);
+                let found = t.closer_than(s.loops(), p, d, |e| e.closest_point(p).0 >= inner);
                 assert_eq!(found.is_some(), ring, "{p:?} {d}");
                 match t.closer_than(s.loops(), p, d, |_| true) {
                     Some((r, e)) => {

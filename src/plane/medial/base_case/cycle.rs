@@ -14,7 +14,6 @@ use crate::kernel::{AxisKernel, Point};
 use crate::plane::axis::Primitive;
 use crate::plane::medial::decompose::subshape::{ChainParts, Cut, Piece, Subshape};
 use crate::shape::{ElementRef, JointKind};
-use std::f64::consts::TAU;
 
 impl<K: AxisKernel> Builder<'_, K> {
     pub(super) fn push_site(&mut self, prim: Primitive, site: Site, u0: f64, u1: f64) {
@@ -35,23 +34,13 @@ impl<K: AxisKernel> Builder<'_, K> {
         let n_prev = lp.element((v + n - 1) % n).end_tangent().perp();
         let n_next = lp.element(v).start_tangent().perp();
         let base = angle(n_prev);
-        let raw = |d: Point| (base - angle(d)).rem_euclid(TAU);
-        let width = raw(n_next);
+        let fan = Fan::clockwise(n_prev, n_next);
         // A dividing disk may meet the vertex from a direction just outside
         // its fan: it touches the element beside the vertex within the
-        // tolerance there. Angles are cut in the middle of the gap between
-        // the fan's ends, so that such a direction stays on its own side
-        // of the end (a fan of this subshape a hair wider, or one of the
+        // tolerance there. Such a direction stays on its own side of the
+        // end (a fan of this subshape a hair wider, or one of the
         // neighbouring subshape a hair narrower), ordered as the disks are.
-        let cw = |d: Point| {
-            let x = raw(d);
-            if x > width && TAU - x < x - width {
-                x - TAU
-            } else {
-                x
-            }
-        };
-        let (d0, d1) = (cw(from), cw(to));
+        let (d0, d1) = (fan.signed_offset_of(from), fan.signed_offset_of(to));
         // Dividing disks found by sliding (maxdisk*) meet a vertex in a
         // direction accurate to about 1e-8 rad; narrower fans are that.
         if d1 - d0 <= Tolerance::fan_angle() || (d1 - d0) * r <= self.tol.fan_arc() {

@@ -81,8 +81,8 @@ impl<K: AxisKernel> Builder<'_, K> {
                     continue;
                 }
             }
-            let (d, u) = self.distance(i, c);
-            if self.k().contact(d, r, self.touch) == Contact::Touching && self.faces_inside(i, c, u) {
+            let (contact, u) = self.k().piece_contact_at(Disk::new(c, r), &self.piece(i), self.touch);
+            if contact == Contact::Touching && self.faces_inside(i, c, u) {
                 if let Site::Point(q) = self.sites[i].site {
                     // A disk through a reflex vertex from outside its fan
                     // (in this subshape) touches the element beside it.

@@ -5,7 +5,7 @@ use super::Builder;
 use crate::kernel::apollonius::Site;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::SitePiece;
-use crate::kernel::{AxisKernel, Point};
+use crate::kernel::{AxisKernel, CarrierSide, Point};
 use crate::plane::axis::Primitive;
 use crate::shape::Element;
 
@@ -100,12 +100,6 @@ impl<K: AxisKernel> Builder<'_, K> {
         self.piece(i).point_at(u)
     }
 
-    /// Distance from `c` to site `i`'s piece and the parameter of the
-    /// closest point (clamped to the range).
-    pub(super) fn distance(&self, i: SiteRef, c: Point) -> (f64, f64) {
-        self.piece(i).distance(c)
-    }
-
     /// The cycle key of parameter `u` on site `i`: ends snapped when within
     /// the tolerance (in length, for a disk of radius `r`), and the end of
     /// a primitive joined to the next stored as the next one's start.
@@ -149,13 +143,7 @@ impl<K: AxisKernel> Builder<'_, K> {
         if !(w > 0.0 && w < 1.0) {
             return true;
         }
-        let signed = match s.site {
-            Site::Point(_) => return true,
-            Site::Line { a, n } => (c - a).dot(n),
-            Site::Circle { o, r, outside: true } => c.dist(o) - r,
-            Site::Circle { o, r, outside: false } => r - c.dist(o),
-        };
-        signed >= 0.0
+        self.k().carrier_side(&s.site, c) != CarrierSide::Behind
     }
 
     pub(super) fn pos(&self, k: Key) -> f64 {
@@ -240,10 +228,10 @@ mod tests {
     #[test]
     fn distance_and_parameter_of_the_nearest_point() {
         with_events(&rectangle(), |b| {
-            let (d, u) = b.distance(SiteRef(0), Point::new(1.5, 0.75));
+            let (d, u) = b.piece(SiteRef(0)).distance(Point::new(1.5, 0.75));
             assert!((d - 0.75).abs() < 1e-15 && (u - 1.5).abs() < 1e-15);
             // Beyond the segment's end the end is nearest.
-            let (d, u) = b.distance(SiteRef(0), Point::new(5.0, -1.0));
+            let (d, u) = b.piece(SiteRef(0)).distance(Point::new(5.0, -1.0));
             assert!((d - 2f64.sqrt()).abs() < 1e-15 && u == 4.0);
         });
     }

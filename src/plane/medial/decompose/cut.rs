@@ -5,6 +5,7 @@
 //! of the disk.
 
 use crate::kernel::direction::{heading, Heading};
+use crate::kernel::fan::Fan;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Point;
 use crate::plane::medial::decompose::subshape::{chain_holds, BoundaryPos, Cut, Piece, Slot, Subshape};
@@ -87,7 +88,7 @@ fn locate_foot<P: Slot>(
         if cross.abs() > fan_slack || heading(d, m) != Heading::Backward {
             return cross <= fan_slack;
         }
-        let width = crate::kernel::fan::cw_angle(start, end);
+        let width = Fan::clockwise(start, end).width();
         // A part narrower than a half turn whose ends rounding swapped
         // reads as almost a whole turn: it is empty.
         (std::f64::consts::PI - fan_slack..1.5 * std::f64::consts::PI).contains(&width)
@@ -103,8 +104,7 @@ fn locate_foot<P: Slot>(
             if aux(j + m_len - 1) == aux(j + 1) {
                 return true;
             }
-            let (x, w) = (crate::kernel::fan::cw_angle(a, m), crate::kernel::fan::cw_angle(a, b));
-            return x <= w + fan_slack || x >= std::f64::consts::TAU - fan_slack;
+            return Fan::clockwise(a, b).contains(m, fan_slack);
         }
         // The part's ends: the arcs' disks where the chain starts or ends
         // at the vertex, else the normals of the chain's own elements.

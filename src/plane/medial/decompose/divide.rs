@@ -193,7 +193,8 @@ fn cut_with<K: AxisKernel>(
     let ends: Vec<Point> =
         tour.expand(&children[small]).chains().flat_map(|(a, b)| [a.point(shape), b.point(shape)]).collect();
     let junction = ends.iter().fold(Point::default(), |acc, &p| acc + p) * (1.0 / ends.len().max(1) as f64);
-    let (c, r) = slide_to_third(finder, &d.footpoints[0], &d.footpoints[1], d.center, d.radius, junction)?;
+    let Disk { center: c, radius: r } =
+        slide_to_third(finder, &d.footpoints[0], &d.footpoints[1], Disk::new(d.center, d.radius), junction)?;
     // Only an empty disk that touches the boundary can cut.
     let touch = finder.touching(c, r);
     let empty = finder.nearest(c).is_some_and(|(near, _)| {

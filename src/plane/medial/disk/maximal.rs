@@ -15,7 +15,7 @@ use crate::kernel::direction::{heading, turn, Heading};
 use crate::kernel::growing_disk::GrowingDisk;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Orientation;
-use crate::kernel::{AxisKernel, Contact, FilteredKernel, Point};
+use crate::kernel::{AxisKernel, Contact, Disk, FilteredKernel, Point};
 use crate::shape::{ChainTree, Element, ElementIndex, ElementRef, JointKind, LoopKind, Shape2d};
 
 /// Where a maximal disk touches the boundary.
@@ -107,8 +107,9 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
     /// empty within `tol`. Cheaper than [`nearest`](Self::nearest) for
     /// disks expected to be empty.
     pub fn intruder(&self, c: Point, r: f64, tol: f64) -> Option<(ElementRef, f64)> {
-        self.chains
-            .closer_than(self.shape.loops(), c, r - tol, |d| self.kernel.contact(d, r, tol) == Contact::Overlapping)
+        self.chains.closer_than(self.shape.loops(), c, r - tol, |e| {
+            self.kernel.element_contact(Disk::new(c, r), e, tol) == Contact::Overlapping
+        })
     }
 
     /// Where the circle (`c`, `r`) of an empty disk touches the boundary:
@@ -121,8 +122,10 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
         self.index.tree.visit_overlapping::<()>(&crate::kernel::BBox { min: c - reach, max: c + reach }, |gid| {
             if self.index.tree.item_box(gid).distance_to(c) <= r + tol {
                 let (er, e) = self.element(gid);
-                let (d, q) = e.closest_point(c);
-                if self.kernel.contact(d, r, tol) != Contact::Apart && self.faces(er, &e, q, c, r, tol) {
+                let q = e.closest_point(c).1;
+                if self.kernel.point_contact(Disk::new(c, r), q, tol) != Contact::Apart
+                    && self.faces(er, &e, q, c, r, tol)
+                {
                     near.push((gid, q));
                 }
             }

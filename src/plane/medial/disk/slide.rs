@@ -52,21 +52,20 @@ pub fn site_of<K: AxisKernel>(finder: &DiskFinder<K>, f: &Footpoint) -> Site {
     Primitive::Element(f.element).site(shape)
 }
 
-/// Slides the disk (`c`, `r`) touching `fa` and `fb` along their bisector,
+/// Slides the disk `start` touching `fa` and `fb` along their bisector,
 /// away from `junction` (a point between the two footpoints on the side
 /// the redundant cut came from), to the first disk that touches a third
 /// element or whose contact with `fa`'s or `fb`'s element reaches that
-/// element's end (where the pair defining the axis changes). Returns its
-/// centre and radius, or `None` if the bisector ends (no tangent disk)
-/// first.
+/// element's end (where the pair defining the axis changes), or `None`
+/// if the bisector ends (no tangent disk) first.
 pub fn slide_to_third<K: AxisKernel>(
     finder: &DiskFinder<K>,
     fa: &Footpoint,
     fb: &Footpoint,
-    c: Point,
-    r: f64,
+    start: Disk,
     junction: Point,
-) -> Option<(Point, f64)> {
+) -> Option<Disk> {
+    let Disk { center: c, radius: r } = start;
     let k = finder.kernel();
     let (sa, sb) = (site_of(finder, fa), site_of(finder, fb));
     let u0 = footpoint_param_at(&sa, c, fa.point);
@@ -102,7 +101,7 @@ pub fn slide_to_third<K: AxisKernel>(
         (None, Some(_)) => -1.0,
         (None, None) => return None,
     };
-    if let Some(found) = jump_to_third(finder, [fa, fb], [&sa, &sb], (c, r), u0, dir) {
+    if let Some(found) = jump_to_third(finder, [fa, fb], [&sa, &sb], start, u0, dir) {
         return Some(found);
     }
     // Fallback: march with steps that move the centre by 2–20 % of the
@@ -128,7 +127,7 @@ pub fn slide_to_third<K: AxisKernel>(
                     _ => hi = mid,
                 }
             }
-            return k.bisector_point(&sa, &sb, lo).map(Disk::parts);
+            return k.bisector_point(&sa, &sb, lo);
         }
         lo = u;
         (prev_c, prev_r) = (cc, rr);
@@ -164,10 +163,11 @@ fn jump_to_third<K: AxisKernel>(
     finder: &DiskFinder<K>,
     [fa, fb]: [&Footpoint; 2],
     [sa, sb]: [&Site; 2],
-    (c0, r0): (Point, f64),
+    start: Disk,
     u0: f64,
     dir: f64,
-) -> Option<(Point, f64)> {
+) -> Option<Disk> {
+    let Disk { center: c0, radius: r0 } = start;
     let k = finder.kernel();
     let shape = finder.shape();
     let tol = finder.contact_tolerance();
@@ -226,7 +226,7 @@ fn jump_to_third<K: AxisKernel>(
             }
         }
         if !open {
-            return Some((c0, r0));
+            return Some(start);
         }
     }
     for _ in 0..JUMPS {
@@ -238,7 +238,7 @@ fn jump_to_third<K: AxisKernel>(
         if k.element_contact(Disk::new(c, r), &element(hit), tol) != Contact::Overlapping {
             // Empty; the contacts stay on their elements by construction,
             // checked again against rounding.
-            return (on(&ea, sa.contact(c, r)) && on(&eb, sb.contact(c, r))).then_some((c, r));
+            return (on(&ea, sa.contact(c, r)) && on(&eb, sb.contact(c, r))).then_some(Disk::new(c, r));
         }
         let e = element(hit);
         let interior = Primitive::Element(hit).site(shape);
@@ -317,9 +317,9 @@ mod tests {
         let finder = DiskFinder::new(&shape);
         let d = finder.max_disk(ElementRef { loop_index: 0, element: 0 }, 0.1);
         assert_eq!(d.footpoints.len(), 2, "{d:?}");
+        let start = Disk::new(d.center, d.radius);
         let (c, r) =
-            slide_to_third(&finder, &d.footpoints[0], &d.footpoints[1], d.center, d.radius, Point::new(0.0, 0.0))
-                .unwrap();
+            slide_to_third(&finder, &d.footpoints[0], &d.footpoints[1], start, Point::new(0.0, 0.0)).unwrap().parts();
         assert!(c.dist(Point::new(1.0, 1.0)) < 1e-9 && (r - 1.0).abs() < 1e-9, "{c:?} {r}");
         assert_eq!(finder.touching(c, r).len(), 3);
     }
@@ -334,9 +334,9 @@ mod tests {
         let finder = DiskFinder::new(&shape);
         let d = finder.max_disk(ElementRef { loop_index: 0, element: 0 }, 0.01);
         assert_eq!(d.footpoints.len(), 2, "{d:?}");
+        let start = Disk::new(d.center, d.radius);
         let (c, r) =
-            slide_to_third(&finder, &d.footpoints[0], &d.footpoints[1], d.center, d.radius, Point::new(0.0, 0.0))
-                .unwrap();
+            slide_to_third(&finder, &d.footpoints[0], &d.footpoints[1], start, Point::new(0.0, 0.0)).unwrap().parts();
         let side = 10001f64.sqrt();
         let (incentre, inradius) = (Point::new(100.0 * side / (1.0 + side), 0.0), 100.0 / (1.0 + side));
         assert!(c.dist(incentre) < 1e-9 && (r - inradius).abs() < 1e-9, "{c:?} {r}");
