@@ -30,6 +30,41 @@ fn main() {
     let finder = DiskFinder::new(&shape);
     let text = std::fs::read_to_string(&args[4]).expect("readable leaf");
     let (s, cuts) = leaf_text::read_leaf(&shape, &text).unwrap_or_else(|e| panic!("{e}"));
+    // How far each chain element strays from each dividing disk's circle,
+    // and its own radius: a leaf whose chains all hug every disk within a
+    // few tolerances is one where footpoint order is rounding.
+    let disks: Vec<_> = s
+        .pieces
+        .iter()
+        .filter_map(|p| match *p {
+            medax::plane::Piece::Aux { disk } => Some(cuts[disk]),
+            _ => None,
+        })
+        .collect();
+    println!("tolerance {:e}", shape.tolerance());
+    for (from, to) in s.chains() {
+        let lp = &shape.loops()[from.loop_index];
+        let n = lp.len();
+        let mut e = from.element;
+        loop {
+            let (lo, hi) = (if e == from.element { from.t } else { 0.0 }, if e == to.element { to.t } else { 1.0 });
+            let el = lp.element(e);
+            let radius = match el {
+                medax::shape::Element::Arc(a) => a.radius,
+                medax::shape::Element::Segment(_) => f64::INFINITY,
+            };
+            let devs: Vec<String> =
+                disks.iter().map(|c| format!("{:.2e}", el.circle_deviation(lo, hi, c.center, c.radius))).collect();
+            println!("  element {e} [{lo:.3}, {hi:.3}] radius {radius:.6} deviation {}", devs.join(" "));
+            if e == to.element {
+                break;
+            }
+            e = (e + 1) % n;
+        }
+    }
+    for c in &disks {
+        println!("  disk {:?} {:.9}", c.center, c.radius);
+    }
     match base_case::solve(&shape, &s, &cuts, shape.tolerance(), &finder) {
         Ok(local) => println!("solved: {} nodes, {} edges", local.nodes.len(), local.edges.len()),
         Err(e) => println!("failed: {e:?}"),

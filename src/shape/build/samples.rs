@@ -93,6 +93,14 @@ pub fn flower_arcs(n: usize) -> Vec<Vec<Vertex>> {
 /// tangents. Every joint is tangent-continuous up to rounding. The family
 /// issue 17 found breaking down at 10^5 arcs.
 pub fn fourier_biarcs(n: usize, seed: u64) -> Vec<Vec<Vertex>> {
+    fourier_curve(n, seed, 0.35)
+}
+
+/// [`fourier_biarcs`] with coefficients of deviation `spread / k`: 0.35
+/// gives lobes, 10^-3 a nearly circular curve whose medial axis is a small
+/// tree near the centre, reached by disks that all but osculate long
+/// stretches of the boundary.
+pub fn fourier_curve(n: usize, seed: u64, spread: f64) -> Vec<Vec<Vertex>> {
     let mut rng = Mix(seed);
     let mut gauss = || {
         // Box–Muller; 1 − u keeps the logarithm finite.
@@ -101,7 +109,7 @@ pub fn fourier_biarcs(n: usize, seed: u64) -> Vec<Vec<Vertex>> {
     };
     let mut terms: Vec<(f64, f64, f64)> = (1..=7)
         .map(|k| {
-            let a = gauss() * 0.35 / k as f64;
+            let a = gauss() * spread / k as f64;
             (k as f64, a, 0.0)
         })
         .collect();

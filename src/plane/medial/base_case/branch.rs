@@ -70,7 +70,7 @@ impl<K: AxisKernel> Builder<'_, K> {
             // take the slack: skip sites wholly outside. A contact at a
             // site's end may be keyed as the next site's start, one further
             // on; a site that holds `a` or whose end wraps round stays.
-            let (o_start, o_end) = (self.offset(a, Key { site: t, w: 0.0 }), self.offset(a, Key { site: t, w: 1.0 }));
+            let (o_start, o_end) = (self.offset(a, Key::at(t, 0.0)), self.offset(a, Key::at(t, 1.0)));
             let whole = o_start <= o_end && o_end + 1.0 < 2.0 * self.n() as f64;
             let cap = Tolerance::branch_contact_slack_cap();
             if whole && (o_end + 1.0 < x1 - cap || o_start > y2 + cap) {
@@ -133,8 +133,7 @@ impl<K: AxisKernel> Builder<'_, K> {
             for y in 0..3 {
                 if x != y && raw[x] == raw[y] {
                     let w = self.fraction(sites[x], self.param(sites[x], c, r));
-                    keys[x] =
-                        Key { site: sites[x], w: if w > 0.5 { 1.0 - Tolerance::nudge() } else { Tolerance::nudge() } };
+                    keys[x] = Key::at(sites[x], if w > 0.5 { 1.0 - Tolerance::nudge() } else { Tolerance::nudge() });
                 }
             }
         }

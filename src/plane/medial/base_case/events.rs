@@ -92,7 +92,7 @@ impl<K: AxisKernel> Builder<'_, K> {
                         continue;
                     }
                 }
-                let k = self.key(i, u, r);
+                let k = self.key_of_contact(i, u, self.param(i, c, r), r);
                 // A touch at a reflex vertex belongs to the vertex's fan,
                 // at the disk's direction, not to the element's end.
                 if self.fan_owns(i, k) {
@@ -248,7 +248,7 @@ impl<K: AxisKernel> Builder<'_, K> {
         for &Port { disk, site_after: next, .. } in &self.aux.clone() {
             let c = cuts[disk];
             let next = SiteRef(next % n);
-            let feet = vec![Key { site: next.prev(n), w: 1.0 }, Key { site: next, w: 0.0 }];
+            let feet = vec![Key::at(next.prev(n), 1.0), Key::at(next, 0.0)];
             self.add_event(c.center, c.radius, EventKind::Port(disk), feet, Vec::new());
         }
         // Joints between consecutive sites.
@@ -258,7 +258,7 @@ impl<K: AxisKernel> Builder<'_, K> {
             }
             let j = i.next(n);
             let (a, b) = (self.sites[i], self.sites[j]);
-            let key = Key { site: j, w: 0.0 };
+            let key = Key::at(j, 0.0);
             let p = self.point_of(j, b.u0);
             // The element whose normal the joint's disk grows along: the
             // one after the joint, or before it at the start of a fan.

@@ -49,11 +49,33 @@ impl std::ops::Index<SiteRef> for Vec<LocalSite> {
 }
 
 /// A position on the subshape's boundary cycle: the site and the fraction
-/// `w` ∈ [0, 1] of its parameter range.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// `w` ∈ [0, 1] of its parameter range. Two keys are equal when their
+/// positions are; `lag` only orders keys that share a position.
+#[derive(Debug, Clone, Copy)]
 pub(super) struct Key {
     pub(super) site: SiteRef,
     pub(super) w: f64,
+    /// Signed length (model units, along the cycle) from this position to
+    /// the contact as computed, before [`Builder::key`] snapped it to a
+    /// site's end: 0 for a position placed exactly (a joint's or a port's
+    /// own foot). Snapping is decided on each site alone, so two disks a
+    /// few tolerances apart can share a snapped position on one side while
+    /// their order on the other side is clear; the lag keeps their order
+    /// here the one the disks have.
+    pub(super) lag: f64,
+}
+
+impl Key {
+    /// The position `w` of site `site`, placed exactly.
+    pub(super) fn at(site: SiteRef, w: f64) -> Key {
+        Key { site, w, lag: 0.0 }
+    }
+}
+
+impl PartialEq for Key {
+    fn eq(&self, other: &Key) -> bool {
+        self.site == other.site && self.w == other.w
+    }
 }
 
 pub(super) fn angle(v: Point) -> f64 {
@@ -104,12 +126,21 @@ impl<K: AxisKernel> Builder<'_, K> {
     /// the tolerance (in length, for a disk of radius `r`), and the end of
     /// a primitive joined to the next stored as the next one's start.
     pub(super) fn key(&self, i: SiteRef, u: f64, r: f64) -> Key {
+        self.key_of_contact(i, u, u, r)
+    }
+
+    /// [`key`](Self::key) of a contact at parameter `u` clamped to the
+    /// site's range from `free`, where the disk is tangent to the site's
+    /// carrier: the key's lag measures to `free`, so that contacts clamped
+    /// onto one end keep the order of their tangency points.
+    pub(super) fn key_of_contact(&self, i: SiteRef, u: f64, free: f64, r: f64) -> Key {
         let s = &self.sites[i];
         let scale = match s.site {
             Site::Line { .. } => 1.0,
             Site::Circle { r: rc, .. } => rc,
             Site::Point(_) => r,
         };
+        let raw = self.fraction(i, free);
         let mut w = self.fraction(i, u).clamp(0.0, 1.0);
         if (u - s.u0).abs() * scale <= self.tol.touch() {
             w = 0.0;
@@ -117,8 +148,9 @@ impl<K: AxisKernel> Builder<'_, K> {
         if (u - s.u1).abs() * scale <= self.tol.touch() {
             w = 1.0;
         }
+        let lag = |w: f64| (raw - w) * (s.u1 - s.u0).abs() * scale;
         if w == 1.0 && s.joined_next {
-            return Key { site: i.next(self.n()), w: 0.0 };
+            return Key { site: i.next(self.n()), w: 0.0, lag: lag(1.0) };
         }
         // Where a site meets an auxiliary arc only the dividing disk itself
         // touches (a maximal disk tangent there lies on the same normal,
@@ -130,7 +162,7 @@ impl<K: AxisKernel> Builder<'_, K> {
         } else if w == 1.0 && !s.joined_next {
             w = 1.0 - Tolerance::nudge();
         }
-        Key { site: i, w }
+        Key { site: i, w, lag: lag(w) }
     }
 
     /// False when a disk centred `c` touches site `i` at parameter `u`
@@ -209,16 +241,16 @@ mod tests {
         with_events(&rectangle(), |b| {
             let tol = b.tol.touch();
             // Site 0 is the bottom edge, parameters 0..4 along it.
-            assert_eq!(b.key(SiteRef(0), 2.0, 1.0), Key { site: SiteRef(0), w: 0.5 });
-            assert_eq!(b.key(SiteRef(0), 0.5 * tol, 1.0), Key { site: SiteRef(0), w: 0.0 });
-            assert_eq!(b.key(SiteRef(0), 4.0 - 0.5 * tol, 1.0), Key { site: SiteRef(1), w: 0.0 });
+            assert_eq!(b.key(SiteRef(0), 2.0, 1.0), Key::at(SiteRef(0), 0.5));
+            assert_eq!(b.key(SiteRef(0), 0.5 * tol, 1.0), Key::at(SiteRef(0), 0.0));
+            assert_eq!(b.key(SiteRef(0), 4.0 - 0.5 * tol, 1.0), Key::at(SiteRef(1), 0.0));
         });
     }
 
     #[test]
     fn offsets_run_forwards_round_the_cycle() {
         with_events(&rectangle(), |b| {
-            let (a, k) = (Key { site: SiteRef(3), w: 0.5 }, Key { site: SiteRef(0), w: 0.25 });
+            let (a, k) = (Key::at(SiteRef(3), 0.5), Key::at(SiteRef(0), 0.25));
             // Site i lies at [2i, 2i + 1]: from 6.5 round to 8.25.
             assert_eq!(b.offset(a, k), 1.75);
             assert_eq!(b.offset(k, a), 8.0 - 1.75);

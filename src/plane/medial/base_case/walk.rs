@@ -20,6 +20,14 @@ struct Met {
     key: Key,
 }
 
+impl Met {
+    /// Whether `self` comes before `other` walking into the pocket: by
+    /// offset, and where both share a position by their contacts' lags.
+    fn before(&self, other: &Met) -> bool {
+        self.offset < other.offset || (self.offset == other.offset && self.key.lag < other.key.lag)
+    }
+}
+
 impl<K: AxisKernel> Builder<'_, K> {
     /// True when the pocket of event `d` from `a` to `b` holds no more
     /// boundary than a sliver of [`SLIVER`] tolerances, besides the sites the
@@ -95,14 +103,22 @@ impl<K: AxisKernel> Builder<'_, K> {
                 }
                 for &k in &e.feet {
                     let o = self.offset(a, k);
-                    if o <= 0.0 || o >= span {
+                    // A footpoint snapped onto the pocket's start or end
+                    // is inside when its contact lies on the inner side.
+                    let inside = match () {
+                        _ if o == 0.0 => k.lag > a.lag,
+                        _ if o == span => k.lag < b.lag,
+                        _ => o > 0.0 && o < span,
+                    };
+                    if !inside {
                         continue;
                     }
-                    if first.is_none_or(|f| o < f.offset) {
-                        first = Some(Met { offset: o, event: id, key: k });
+                    let met = Met { offset: o, event: id, key: k };
+                    if first.is_none_or(|f| met.before(&f)) {
+                        first = Some(met);
                     }
-                    if last.is_none_or(|f| o > f.offset) {
-                        last = Some(Met { offset: o, event: id, key: k });
+                    if last.is_none_or(|f| f.before(&met)) {
+                        last = Some(met);
                     }
                 }
             }
@@ -121,8 +137,10 @@ impl<K: AxisKernel> Builder<'_, K> {
                 let pair = (d.min(e), d.max(e));
                 if !linked.contains(&pair) {
                     linked.push(pair);
-                    let (t1, w1e) = self.site_before(first.key);
-                    let (t2, w2e) = self.site_after(last.key);
+                    // A footpoint tied with the pocket's end lies just
+                    // inside it, on the end's own site.
+                    let (t1, w1e) = if first.offset == 0.0 { (s1, w1a) } else { self.site_before(first.key) };
+                    let (t2, w2e) = if last.offset == span { (s2, w2b) } else { self.site_after(last.key) };
                     if t1 != s1 || t2 != s2 {
                         return Err(BaseCaseError::Inconsistent(self.events[d].center));
                     }
@@ -190,7 +208,7 @@ mod tests {
             // it holds nothing.
             let a = b.events[0].feet[0];
             assert!(!b.pocket_is_empty(EventRef(0), a, a));
-            let just_after = Key { site: a.site, w: a.w + 1e-15 };
+            let just_after = Key::at(a.site, a.w + 1e-15);
             assert!(b.pocket_is_empty(EventRef(0), a, just_after));
         });
     }

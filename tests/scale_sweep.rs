@@ -1,0 +1,82 @@
+//! The slow tier: the medial axis at 10^5 and 3·10^5 elements on
+//! generated families (smooth random Fourier curves with ten seeds, nearly
+//! circular curves, random star polygons, flowers, plates of random
+//! holes), each checked by the sampled oracle of `common::oracle` (every
+//! axis sample's radius is its distance to the boundary, the maximal disk
+//! at random boundary points is centred on the axis, the graph is a tree
+//! with one cycle per hole; distances on a thousand edges and nodes of
+//! each axis, spread over it). Ignored by default (minutes in a release
+//! build): `cargo test --release --test scale_sweep -- --ignored`.
+
+mod common;
+
+use common::oracle::check_strided;
+use medax::plane::{medial_axis, AxisOptions};
+use medax::shape::{samples, Shape2d, ShapeOptions, Vertex};
+
+/// Boundary probes of the completeness check per shape.
+const PROBES: usize = 300;
+
+/// About this many edges and nodes get the brute-force soundness check
+/// (the library checks every one itself before it returns an axis).
+const CHECKED: usize = 1000;
+
+fn sweep(name: &str, loops: Vec<Vec<Vertex>>) {
+    let shape = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).expect("valid sample");
+    let axis = medial_axis(&shape, &AxisOptions::default())
+        .unwrap_or_else(|e| panic!("{name} ({} elements): {e}", shape.element_count()));
+    let stride = axis.edges.len().div_ceil(CHECKED);
+    let report = check_strided(&shape, &axis, PROBES, 7, stride);
+    eprintln!(
+        "{name}: {} elements, {} nodes, {} samples checked",
+        shape.element_count(),
+        axis.nodes.len(),
+        report.samples
+    );
+}
+
+#[test]
+#[ignore = "slow tier: scripts/test-all runs it in release"]
+fn fourier_curves_of_ten_seeds_at_1e5_and_3e5() {
+    for seed in 1..=10 {
+        sweep(&format!("fourier 1e5 seed {seed}"), samples::fourier_biarcs(100_000, seed));
+    }
+    for seed in 1..=2 {
+        sweep(&format!("fourier 3e5 seed {seed}"), samples::fourier_biarcs(300_000, seed));
+    }
+    // At 10^6 arcs seed 1 still breaks down ("an edge's disks are not
+    // maximal", issue 17): not in the sweep until that is fixed.
+}
+
+#[test]
+#[ignore = "slow tier: scripts/test-all runs it in release"]
+fn nearly_circular_curves() {
+    for seed in 1..=2 {
+        sweep(&format!("near circle 1e5 seed {seed}"), samples::fourier_curve(100_000, seed, 1e-3));
+    }
+    sweep("near circle 3e5", samples::fourier_curve(300_000, 3, 1e-3));
+    // At 10^6 arcs seed 4 still breaks down ("no branch point in a
+    // pocket", issue 17).
+}
+
+#[test]
+#[ignore = "slow tier: scripts/test-all runs it in release"]
+fn star_polygons_and_flowers_at_1e5_and_3e5() {
+    for seed in 1..=2 {
+        sweep(&format!("star 1e5 seed {seed}"), samples::star_polygon(100_000, seed));
+    }
+    sweep("star 3e5", samples::star_polygon(300_000, 3));
+    for n in [100_000, 300_000] {
+        sweep(&format!("flower {n}"), samples::flower_arcs(n));
+    }
+}
+
+#[test]
+#[ignore = "slow tier: scripts/test-all runs it in release"]
+fn plates_of_random_holes() {
+    // About 5 elements per hole: 10^5 and 3·10^5 elements. At 9·10^5
+    // (450 × 450, seed 3) a pocket still loses its branch point (issue 17).
+    for (k, seed) in [(140, 1), (245, 2)] {
+        sweep(&format!("random holes {k}x{k} seed {seed}"), samples::random_holes(k, seed));
+    }
+}
