@@ -6,6 +6,7 @@
 //! `-- plate K [SEED]` or `-- SHAPE.json 0 [SEED]` (a shape file, or a Voronoi sites file: the
 //! shape its diagram is computed on first, frame or boundary with the sites as holes); `MEDAX_NEAR=x,y` lists the dividing disks near a point;
 //! `MEDAX_DUMP=DIR` writes each failing leaf for `examples/leaf_replay`.
+use medax::kernel::Disk;
 use medax::plane::internals::augment;
 use medax::plane::internals::base_case;
 use medax::plane::internals::decompose_in;
@@ -154,7 +155,7 @@ fn glued_corners(shape: &Shape2d, finder: &DiskFinder, seed: u64) {
         let mut shown = 0;
         for (ei, e) in axis.edges.iter().enumerate() {
             for s in [1.0 / 64.0, 0.5, 63.0 / 64.0] {
-                let Some((c, r)) = e.eval(shape, &axis.nodes, s) else {
+                let Some(Disk { center: c, radius: r }) = e.eval(shape, &axis.nodes, s) else {
                     shown += 1;
                     let (a, b) = (&axis.nodes[e.from], &axis.nodes[e.to]);
                     println!("edge {ei} at {s}: no disk; {a:?} -> {b:?}, kind {:?}, sites {:?}", e.kind, e.sites);

@@ -107,7 +107,8 @@ pub fn run(shape: &Shape2d, out_dir: &Path) -> Result<Report, Box<dyn Error>> {
     let tol = 1e-4 * shape.bbox().diagonal();
     for (i, edge) in axis.edges.iter().enumerate().take(5) {
         let samples = edge.sample(shape, &axis.nodes, tol);
-        let (rmin, rmax) = samples.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), &(_, r)| (lo.min(r), hi.max(r)));
+        let (rmin, rmax) =
+            samples.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), d| (lo.min(d.radius), hi.max(d.radius)));
         println!(
             "edge {i}: node {} -> node {}, {:?} between {} and {}, {} samples, radius {rmin:.4} to {rmax:.4}",
             edge.from,

@@ -8,6 +8,7 @@ mod common;
 
 use common::oracle::check;
 use common::{circle, poly, rect, same_axis_moved, shape, v};
+use medax::kernel::Disk;
 use medax::kernel::Point;
 use medax::plane::internals::augment;
 use medax::plane::{medial_axis, AxisOptions, DiskFinder, MedialAxis2d, NodeKind};
@@ -39,7 +40,7 @@ fn one_circular_hole_in_a_square() {
         .sampled(&s, 1e-6)
         .into_iter()
         .flatten()
-        .any(|(c, r)| c.dist(Point::new(0.0, -1.5)) < 1e-6 && (r - 0.5).abs() < 1e-6);
+        .any(|Disk { center: c, radius: r }| c.dist(Point::new(0.0, -1.5)) < 1e-6 && (r - 0.5).abs() < 1e-6);
     assert!(below, "the cycle passes through the augmenting disk's centre");
 }
 

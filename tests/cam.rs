@@ -9,6 +9,7 @@ mod common;
 use common::offset_oracle::{elems, loop_samples, Loops};
 use common::{rect, shape, v};
 use medax::cam::{pocket, vcarve, CamError, PocketOptions, PocketOrder, UncutKind, VCarveOptions};
+use medax::kernel::Disk;
 use medax::kernel::Point;
 use medax::plane::{medial_axis, AxisOptions, OffsetLoop, OffsetOptions, Offsets};
 use medax::shape::{Element, Shape2d, Vertex};
@@ -165,7 +166,7 @@ fn uncut_area_is_what_no_ring_passes_within_the_tool_radius() {
             }
         }
         let axis = medial_axis(&s, &AxisOptions::default()).unwrap();
-        for (q, _) in axis.sampled(&s, 1e-4 * diag).into_iter().flatten() {
+        for Disk { center: q, .. } in axis.sampled(&s, 1e-4 * diag).into_iter().flatten() {
             check(q);
         }
         for lp in s.loops() {
@@ -275,7 +276,9 @@ fn vcarve_depth_is_the_wall_distance_over_the_half_angle_tangent() {
             }
             // Every axis sample shallower than the cap lies on some path.
             for samples in axis.sampled(&s, tol) {
-                for (c, r) in samples.into_iter().filter(|&(_, r)| r < vc.flat_radius() * (1.0 - 1e-9)) {
+                for Disk { center: c, radius: r } in
+                    samples.into_iter().filter(|d| d.radius < vc.flat_radius() * (1.0 - 1e-9))
+                {
                     let near = vc.paths.iter().any(|p| {
                         p.points.windows(2).any(|w| {
                             let (a, b) = (Point::new(w[0][0], w[0][1]), Point::new(w[1][0], w[1][1]));

@@ -54,7 +54,8 @@ impl Case {
         let opts = OffsetOptions { outer_reach, ..OffsetOptions::default() };
         c.offsets = Some(Offsets::new(&c.shape, &opts).unwrap_or_else(|e| panic!("{name}: Offsets::new: {e}")));
         let axis = medial_axis(&c.shape, &AxisOptions::default()).unwrap_or_else(|e| panic!("{name}: axis: {e}"));
-        let samples: Vec<Point> = axis.sampled(&c.shape, 1e-4 * c.diag).into_iter().flatten().map(|(q, _)| q).collect();
+        let samples: Vec<Point> =
+            axis.sampled(&c.shape, 1e-4 * c.diag).into_iter().flatten().map(|d| d.center).collect();
         let step = (samples.len() / 2000).max(1);
         c.axis_points = samples.into_iter().step_by(step).collect();
         c

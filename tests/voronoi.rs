@@ -8,6 +8,7 @@ mod common;
 
 use common::oracle::check;
 use common::{circle, poly, rect};
+use medax::kernel::Disk;
 use medax::kernel::{FilteredKernel, Point};
 use medax::plane::{voronoi, SiteId, Sites, VoronoiDiagram, VoronoiError, VoronoiOptions};
 use medax::shape::{Element, Loop, ShapeError, Vertex};
@@ -64,7 +65,7 @@ fn region_polygon(vd: &VoronoiDiagram, site: SiteId, tol: f64) -> Vec<Point> {
     let mut out = Vec::new();
     for &(i, fwd) in &r.boundary {
         let mut s: Vec<Point> =
-            vd.axis.edges[i].sample(vd.shape(), &vd.axis.nodes, tol).into_iter().map(|(c, _)| c).collect();
+            vd.axis.edges[i].sample(vd.shape(), &vd.axis.nodes, tol).into_iter().map(|d| d.center).collect();
         if !fwd {
             s.reverse();
         }
@@ -87,7 +88,7 @@ fn check_diagram(sites: &Sites, vd: &VoronoiDiagram, probes: usize, seed: u64) {
     for i in vd.diagram_edges(true) {
         let e = &vd.axis.edges[i];
         let v = vd.edges[i];
-        for (c, r) in e.sample(vd.shape(), &vd.axis.nodes, 1e-4 * diag) {
+        for Disk { center: c, radius: r } in e.sample(vd.shape(), &vd.axis.nodes, 1e-4 * diag) {
             let d = site_distances(&els, c);
             let nearest = d.iter().map(|x| x.1).fold(f64::INFINITY, f64::min);
             let dist_of = |s: SiteId| d.iter().find(|x| x.0 == s).map(|x| x.1).unwrap();
@@ -187,7 +188,7 @@ fn check_face_order(vd: &VoronoiDiagram, diag: f64) {
             s.reverse();
         }
         let p = nodes[at].point;
-        let q = s.iter().map(|x| x.0).find(|q| q.dist(p) > 1e-6 * diag).unwrap_or(s[s.len() - 1].0);
+        let q = s.iter().map(|x| x.center).find(|q| q.dist(p) > 1e-6 * diag).unwrap_or(s[s.len() - 1].center);
         (q - p).unit()
     };
     let mut at_node: Vec<Vec<usize>> = vec![Vec::new(); nodes.len()];
@@ -248,7 +249,7 @@ fn two_squares_are_split_by_their_bisector() {
     let between: Vec<usize> = vd.diagram_edges(false).into_iter().filter(|&i| !vd.edges[i].self_edge).collect();
     assert!(!between.is_empty());
     for &i in &between {
-        for (c, _) in vd.axis.edges[i].sample(vd.shape(), &vd.axis.nodes, 1e-6) {
+        for Disk { center: c, .. } in vd.axis.edges[i].sample(vd.shape(), &vd.axis.nodes, 1e-6) {
             if c.y > -0.5 && c.y < 1.5 {
                 assert!((c.x - 2.0).abs() < 1e-9, "{c:?}");
             }
@@ -303,7 +304,7 @@ fn a_u_shaped_site_has_self_edges_that_the_switch_drops() {
         vd.axis.edges[i]
             .sample(vd.shape(), &vd.axis.nodes, 1e-6)
             .iter()
-            .any(|(c, _)| (c.x - 1.5).abs() < 1e-9 && c.y > 3.0)
+            .any(|d| (d.center.x - 1.5).abs() < 1e-9 && d.center.y > 3.0)
     });
     assert!(mouth);
     let with = vd.diagram_edges(true);
@@ -542,7 +543,7 @@ fn point_sites_single_pair_and_collinear() {
     assert!(vd.complete && site_vertices(&vd).is_empty());
     assert_eq!(vd.frontier.iter().filter(|&&f| f).count(), 2);
     for i in vd.diagram_edges(true) {
-        for (c, _) in vd.axis.edges[i].sample(vd.shape(), &vd.axis.nodes, 1e-6) {
+        for Disk { center: c, .. } in vd.axis.edges[i].sample(vd.shape(), &vd.axis.nodes, 1e-6) {
             assert!((c.x - 1.0).abs() < 1e-9, "{c:?}");
         }
     }
@@ -640,8 +641,9 @@ fn segment_and_arc_curves_with_self_edges() {
         let v = vd.edges[i];
         v.sides.contains(&SiteId::Curve(0)) && v.sides.contains(&SiteId::Curve(1)) && {
             let s = vd.axis.edges[i].sample(vd.shape(), &vd.axis.nodes, 1e-6);
-            let (lo, hi) = s.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), (c, _)| (a.min(c.y), b.max(c.y)));
-            s.iter().all(|(c, _)| (c.x - 1.5).abs() < 1e-9) && lo < 0.0 && hi > 0.0
+            let (lo, hi) =
+                s.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), d| (a.min(d.center.y), b.max(d.center.y)));
+            s.iter().all(|d| (d.center.x - 1.5).abs() < 1e-9) && lo < 0.0 && hi > 0.0
         }
     });
     assert!(between);

@@ -8,6 +8,7 @@
 
 use arbitrary::Arbitrary;
 use libfuzzer_sys::fuzz_target;
+use medax::kernel::Disk;
 use medax::kernel::Point;
 use medax::plane::{medial_axis, AxisOptions};
 use medax::shape::{Shape2d, ShapeOptions, Vertex};
@@ -32,7 +33,7 @@ fuzz_target!(|input: Input| {
     let tol = 1e-9 * diag;
     assert_eq!(axis.nodes.len(), axis.edges.len() + 1);
     for pl in axis.sampled(&shape, 1e-3 * diag) {
-        for (c, r) in pl {
+        for Disk { center: c, radius: r } in pl {
             let d = shape.loops()[0].elements().map(|e| e.closest_point(c).0).fold(f64::INFINITY, f64::min);
             assert!((d - r).abs() <= tol, "sample {c:?} r {r} distance {d}");
         }

@@ -8,6 +8,7 @@
 
 use arbitrary::Arbitrary;
 use libfuzzer_sys::fuzz_target;
+use medax::kernel::Disk;
 use medax::kernel::Point;
 use medax::plane::{medial_axis, AxisOptions};
 use medax::shape::{Shape2d, ShapeOptions, Vertex};
@@ -37,7 +38,7 @@ fuzz_target!(|input: Input| {
     let holes = shape.loops().len() - 1;
     assert_eq!(axis.nodes.len() + holes, axis.edges.len() + 1);
     for pl in axis.sampled(&shape, 1e-3 * diag) {
-        for (c, r) in pl {
+        for Disk { center: c, radius: r } in pl {
             let d = shape
                 .loops()
                 .iter()

@@ -8,6 +8,7 @@
 
 use arbitrary::Arbitrary;
 use libfuzzer_sys::fuzz_target;
+use medax::kernel::Disk;
 use medax::kernel::Point;
 use medax::plane::{voronoi, SiteId, Sites, VoronoiOptions};
 use medax::plane::read_sites;
@@ -62,7 +63,7 @@ fuzz_target!(|input: Input| {
     let diag = vd.shape().bbox().diagonal();
     for i in vd.diagram_edges(true) {
         let e = &vd.axis.edges[i];
-        for (c, r) in e.sample(vd.shape(), &vd.axis.nodes, 1e-3 * diag) {
+        for Disk { center: c, radius: r } in e.sample(vd.shape(), &vd.axis.nodes, 1e-3 * diag) {
             for s in vd.edges[i].sides {
                 let d = dist(s, c);
                 assert!((d - r).abs() <= 1e-8 * diag, "edge {i}: {s} at {d}, radius {r}");

@@ -118,7 +118,7 @@ pub fn vcarve(shape: &Shape2d, axis: &MedialAxis2d, opts: &VCarveOptions) -> Res
             (lo.mid(hi), flat_radius)
         };
         for w in samples.windows(2) {
-            let ((p, r), (q, s)) = (w[0], w[1]);
+            let ((p, r), (q, s)) = (w[0].parts(), w[1].parts());
             if cur.is_empty() && r <= flat_radius {
                 cur.push((p, r));
             }

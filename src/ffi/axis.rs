@@ -336,7 +336,7 @@ pub unsafe extern "C" fn mx_axis_edge_sample(
         let samples = e.sample(&a.shape, &a.axis.nodes, tolerance);
         let need = 3 * samples.len();
         if capacity != 0 {
-            let xyr_of = samples.iter().flat_map(|(c, r)| [c.x, c.y, *r]);
+            let xyr_of = samples.iter().flat_map(|d| [d.center.x, d.center.y, d.radius]);
             // SAFETY: caller contract: `xyr` NULL or `capacity` writable doubles.
             unsafe {
                 fill(xyr, "xyr", capacity, need, xyr_of, || {

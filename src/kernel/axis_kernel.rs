@@ -32,6 +32,7 @@
 
 use super::apollonius::{self, Site};
 use super::bisector;
+use super::direction::{self, Alignment, Heading};
 use super::element::Element;
 use super::growing_disk::GrowingDisk;
 use super::SitePiece;
@@ -145,6 +146,46 @@ pub trait AxisKernel: Kernel + Copy + Send + Sync + 'static {
     fn piece_contact_at(&self, disk: Disk, piece: &SitePiece, tol: f64) -> (Contact, f64) {
         let (d, u) = piece.distance(disk.center);
         (self.contact(d, disk.radius, tol), u)
+    }
+
+    /// Where `v` points relative to the direction `n`: the side of the
+    /// line perpendicular to `n` (see [`Heading`]). The directions asked
+    /// about are rounded constructions (normals, vectors between
+    /// constructed points); an exact kernel may still decide the sign of
+    /// the rounded inputs exactly.
+    #[inline]
+    fn heading(&self, n: Point, v: Point) -> Heading {
+        direction::heading(n, v)
+    }
+
+    /// Which way direction `b` turns from direction `a`
+    /// ([`Orientation::Left`] counter-clockwise).
+    #[inline]
+    fn turn(&self, a: Point, b: Point) -> Orientation {
+        direction::turn(a, b)
+    }
+
+    /// How `v` lies along the unit direction `n`, within `tol` across it
+    /// (see [`direction::alignment`]).
+    #[inline]
+    fn alignment(&self, n: Point, v: Point, tol: f64) -> Alignment {
+        direction::alignment(n, v, tol)
+    }
+
+    /// Whether unit directions `a` and `b` are one (or opposite) within
+    /// `eps` of their dot product (see [`direction::direction_match`]).
+    #[inline]
+    fn direction_match(&self, a: Point, b: Point, eps: f64) -> Alignment {
+        direction::direction_match(a, b, eps)
+    }
+
+    /// Whether `m` from a vertex points into its fan of normals between
+    /// tangents `t_in` and `t_out`, `tol` of play (model units; see
+    /// [`direction::vertex_fan_holds`]). An enum would say no more than
+    /// the two answers: kept a `bool` on purpose.
+    #[inline]
+    fn vertex_fan_holds(&self, t_in: Point, t_out: Point, m: Point, tol: f64) -> bool {
+        direction::vertex_fan_holds(t_in, t_out, m, tol)
     }
 
     /// Which side of `site`'s carrier the point `c` lies on: a point is

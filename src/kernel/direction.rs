@@ -44,6 +44,58 @@ pub fn turn(a: Point, b: Point) -> Orientation {
     super::orientation_of(a.cross(b))
 }
 
+/// How a vector lies along a direction, decided with a tolerance.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Alignment {
+    /// Along the direction, within the tolerance.
+    Along,
+    /// Opposite the direction, within the tolerance.
+    Against,
+    /// Neither.
+    Across,
+}
+
+/// How `v` lies along the unit direction `n`: within `tol` (the length of
+/// `v`'s component across `n`, `v`'s units) of the line through `n`, on
+/// `n`'s side (`Along`) or the other (`Against`).
+#[inline]
+pub fn alignment(n: Point, v: Point, tol: f64) -> Alignment {
+    if n.cross(v).abs() > tol {
+        return Alignment::Across;
+    }
+    match heading(n, v) {
+        Heading::Forward => Alignment::Along,
+        Heading::Backward => Alignment::Against,
+        Heading::Sideways => Alignment::Across,
+    }
+}
+
+/// How two unit directions `a` and `b` compare: one direction when their
+/// dot product exceeds `1 − eps` (`Along`), opposite ones when it is
+/// below `−(1 − eps)` (`Against`).
+#[inline]
+pub fn direction_match(a: Point, b: Point, eps: f64) -> Alignment {
+    let d = a.dot(b);
+    if d > 1.0 - eps {
+        Alignment::Along
+    } else if d < eps - 1.0 {
+        Alignment::Against
+    } else {
+        Alignment::Across
+    }
+}
+
+/// Whether the vector `m` from a vertex points into the vertex's fan of
+/// normals, the directions between the left normals of the tangent
+/// `t_in` arriving and `t_out` leaving (unit; a reflex vertex turns
+/// clockwise from one to the other): not more than `tol` (`m`'s units)
+/// behind the incoming tangent's normal line nor ahead of the outgoing
+/// one's.
+#[inline]
+pub fn vertex_fan_holds(t_in: Point, t_out: Point, m: Point, tol: f64) -> bool {
+    m.dot(t_in) >= -tol && m.dot(t_out) <= tol
+}
+
 /// The angle of direction `v` from the positive x axis, radians in
 /// (−π, π] (0 for the zero vector).
 #[inline]

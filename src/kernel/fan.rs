@@ -22,6 +22,25 @@ pub struct Fan {
     width: f64,
 }
 
+/// Which end of a fan a bounding direction stands at.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum FanEnd {
+    /// The start: the fan runs clockwise away from it.
+    Start,
+    /// The end: the fan runs anticlockwise away from it.
+    End,
+}
+
+/// Where a direction lies relative to a direction that bounds a fan at one
+/// of its ends.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum BoundSide {
+    /// On the fan's side of the bound, or along it within the slack.
+    Within,
+    /// On the far side: outside the fan there.
+    Beyond,
+}
+
 impl Fan {
     /// The fan clockwise from direction `start` to direction `end`.
     #[inline]
@@ -91,6 +110,36 @@ impl Fan {
         }
     }
 
+    /// Whether direction `m` lies on this fan's side of `bound`, a unit
+    /// direction standing at the fan's `end` (the two may differ by
+    /// rounding), with `slack` radians of play. Both directions unit.
+    ///
+    /// The side of `bound` decides, except where `m` is opposite it: at a
+    /// curve's end a fan is a half turn (thesis 2.3, zero-area holes), so
+    /// a disk tangent to one side there is opposite a bound tangent to the
+    /// other and the side is rounding. Such an `m` is within only when the
+    /// fan is itself a half turn (its other end opposite `bound` too); a
+    /// fan narrower than a half turn whose ends rounding swapped reads as
+    /// nearly a whole turn and holds no such direction.
+    #[inline]
+    pub fn bound_side(&self, bound: Point, end: FanEnd, m: Point, slack: f64) -> BoundSide {
+        let cross = match end {
+            FanEnd::Start => bound.cross(m),
+            FanEnd::End => -bound.cross(m),
+        };
+        let opposite = bound.dot(m) < 0.0;
+        let within = if cross.abs() > slack || !opposite {
+            cross <= slack
+        } else {
+            (std::f64::consts::PI - slack..1.5 * std::f64::consts::PI).contains(&self.width)
+        };
+        if within {
+            BoundSide::Within
+        } else {
+            BoundSide::Beyond
+        }
+    }
+
     /// The direction `fraction` (0 to 1) of the way through the fan, with
     /// the start direction's length.
     #[inline]
@@ -103,6 +152,31 @@ impl Fan {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn bound_sides_and_the_half_turn() {
+        let (east, south, west, north) =
+            (Point::new(1.0, 0.0), Point::new(0.0, -1.0), Point::new(-1.0, 0.0), Point::new(0.0, 1.0));
+        let slack = 1e-7;
+        // A quarter fan from east clockwise to south.
+        let quarter = Fan::clockwise(east, south);
+        let se = Point::new(1.0, -1.0).unit();
+        assert_eq!(quarter.bound_side(east, FanEnd::Start, se, slack), BoundSide::Within);
+        assert_eq!(quarter.bound_side(east, FanEnd::Start, north, slack), BoundSide::Beyond);
+        assert_eq!(quarter.bound_side(south, FanEnd::End, se, slack), BoundSide::Within);
+        assert_eq!(quarter.bound_side(south, FanEnd::End, west, slack), BoundSide::Beyond);
+        // Along the bound within the slack counts as within.
+        let hair = Point::new(1.0, 1e-9).unit();
+        assert_eq!(quarter.bound_side(east, FanEnd::Start, hair, slack), BoundSide::Within);
+        // Opposite the bound: within only a half-turn fan.
+        let half = Fan::clockwise(north, south);
+        assert_eq!(half.bound_side(north, FanEnd::Start, south, slack), BoundSide::Within);
+        assert_eq!(quarter.bound_side(east, FanEnd::Start, west, slack), BoundSide::Beyond);
+        // A narrow fan whose ends rounding swapped (nearly a whole turn)
+        // holds no direction opposite its bound.
+        let swapped = Fan::clockwise(Point::new(1.0, -1e-12).unit(), east);
+        assert_eq!(swapped.bound_side(east, FanEnd::Start, west, slack), BoundSide::Beyond);
+    }
 
     #[test]
     fn fans_of_any_width() {

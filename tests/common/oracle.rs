@@ -1,6 +1,7 @@
 //! The axis oracle: checks that share nothing with the library's
 //! constructions (brute-force distances, bisection along inward normals).
 
+use medax::kernel::Disk;
 use medax::kernel::{BBox, FilteredKernel, Point};
 use medax::plane::{MedialAxis2d, NodeKind};
 use medax::shape::{Element, JointKind, Shape2d};
@@ -117,17 +118,17 @@ impl<'s> Boundary<'s> {
 }
 
 /// Distance from `p` to the sampled axis polyline.
-pub fn axis_distance(polylines: &[Vec<(Point, f64)>], p: Point) -> f64 {
+pub fn axis_distance(polylines: &[Vec<Disk>], p: Point) -> f64 {
     let mut best = f64::INFINITY;
     for pl in polylines {
         for w in pl.windows(2) {
-            let (a, b) = (w[0].0, w[1].0);
+            let (a, b) = (w[0].center, w[1].center);
             let d = b - a;
             let t = if d.norm2() > 0.0 { ((p - a).dot(d) / d.norm2()).clamp(0.0, 1.0) } else { 0.0 };
             best = best.min(p.dist(a + d * t));
         }
         if pl.len() == 1 {
-            best = best.min(p.dist(pl[0].0));
+            best = best.min(p.dist(pl[0].center));
         }
     }
     best
@@ -170,7 +171,7 @@ pub fn check_strided(s: &Shape2d, axis: &MedialAxis2d, probes: usize, seed: u64,
         if !chosen(i) {
             continue;
         }
-        for (k, &(c, r)) in pl.iter().enumerate() {
+        for (k, &Disk { center: c, radius: r }) in pl.iter().enumerate() {
             let d = boundary.distance(c);
             assert!((d - r).abs() <= tol, "edge {e:?}: sample {c:?} r {r} but distance {d}");
             // The winding number costs a pass over the boundary: strided,
@@ -223,7 +224,11 @@ pub fn check_strided(s: &Shape2d, axis: &MedialAxis2d, probes: usize, seed: u64,
     let mut rng = rand::rngs::SmallRng::seed_from_u64(seed);
     let mut pieces: Vec<((Point, Point), BBox)> = Vec::new();
     for pl in &lines {
-        for w in pl.windows(2).map(|w| (w[0].0, w[1].0)).chain((pl.len() == 1).then(|| (pl[0].0, pl[0].0))) {
+        for w in pl
+            .windows(2)
+            .map(|w| (w[0].center, w[1].center))
+            .chain((pl.len() == 1).then(|| (pl[0].center, pl[0].center)))
+        {
             let b = BBox {
                 min: Point::new(w.0.x.min(w.1.x), w.0.y.min(w.1.y)),
                 max: Point::new(w.0.x.max(w.1.x), w.0.y.max(w.1.y)),

@@ -53,7 +53,8 @@ impl MedialAxis2d {
         for pl in self.sampled(shape, pic.tolerance) {
             // Spans whose radius changes a lot (straight edges have two
             // samples) are split, interpolating, so the colour can follow.
-            let mut fine: Vec<(crate::kernel::Point, f64)> = vec![pl[0]];
+            let pl: Vec<(crate::kernel::Point, f64)> = pl.into_iter().map(crate::kernel::Disk::parts).collect();
+            let mut fine = vec![pl[0]];
             for w in pl.windows(2) {
                 let k = (((w[1].1 - w[0].1).abs() / r_max) / 0.04).ceil().clamp(1.0, 50.0) as usize;
                 for j in 1..=k {

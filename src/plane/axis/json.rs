@@ -71,7 +71,7 @@ impl MedialAxis2d {
                     "to": e.to,
                     "kind": conic(e.kind),
                     "sites": [site_json(shape, e.sites[0]), site_json(shape, e.sites[1])],
-                    "samples": s.iter().map(|(c, r)| [c.x, c.y, *r]).collect::<Vec<_>>(),
+                    "samples": s.iter().map(|d| [d.center.x, d.center.y, d.radius]).collect::<Vec<_>>(),
                 })
             })
             .collect();

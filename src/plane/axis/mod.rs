@@ -12,7 +12,7 @@ pub(crate) mod json;
 use crate::kernel::apollonius::Site;
 use crate::kernel::bisector::{bisector_point, conic_kind, sample_between, ConicKind};
 use crate::kernel::tolerance::Tolerance;
-use crate::kernel::Point;
+use crate::kernel::{Disk, Point};
 use crate::shape::{Element, ElementRef, Shape2d};
 
 /// A boundary primitive the medial axis is equidistant from.
@@ -141,25 +141,26 @@ impl AxisEdge {
     /// parametrisation degenerates between nearly parallel lines). Centre
     /// and radius, model units. `None` if no disk is tangent there (never
     /// for an edge of a valid axis).
-    pub fn eval(&self, shape: &Shape2d, nodes: &[AxisNode], s: f64) -> Option<(Point, f64)> {
+    pub fn eval(&self, shape: &Shape2d, nodes: &[AxisNode], s: f64) -> Option<Disk> {
         if self.kind == ConicKind::Line {
             let (a, b) = (nodes[self.from].point, nodes[self.to].point);
             let c = a + (b - a) * s;
-            return Some((c, site_distance(&self.sites[0].site(shape), c)));
+            return Some(Disk::new(c, site_distance(&self.sites[0].site(shape), c)));
         }
         let r_max = nodes[self.from].radius.max(nodes[self.to].radius);
         let k = self.driver(shape, r_max);
         let (u0, u1) = self.params[k];
         bisector_point(&self.sites[k].site(shape), &self.sites[1 - k].site(shape), u0 + (u1 - u0) * s)
+            .map(|(c, r)| Disk::new(c, r))
     }
 
     /// Samples along the edge, from its `from` node to its `to` node, as
-    /// (centre, radius): the polyline through the centres deviates from the
+    /// maximal disks: the polyline through the centres deviates from the
     /// true conic by at most `tol` model units, raised to at least
     /// [`MIN_RELATIVE_SAMPLE_TOLERANCE`] × the shape's diagonal (a finer
     /// or zero tolerance would ask for billions of samples). The first and
     /// last samples are the nodes themselves.
-    pub fn sample(&self, shape: &Shape2d, nodes: &[AxisNode], tol: f64) -> Vec<(Point, f64)> {
+    pub fn sample(&self, shape: &Shape2d, nodes: &[AxisNode], tol: f64) -> Vec<Disk> {
         let tol = tol.max(MIN_RELATIVE_SAMPLE_TOLERANCE * shape.bbox().diagonal());
         let (a, b) = (nodes[self.from], nodes[self.to]);
         let r_max = a.radius.max(b.radius);
@@ -168,13 +169,13 @@ impl AxisEdge {
         let (sk, so) = (self.sites[k].site(shape), self.sites[1 - k].site(shape));
         // The ends are the nodes (computed by their own, better
         // conditioned constructions); a line needs nothing in between.
-        let ends = [(a.point, a.radius), (b.point, b.radius)];
+        let ends = [Disk::new(a.point, a.radius), Disk::new(b.point, b.radius)];
         if (u1 - u0).abs() <= Tolerance::point_range() * (1.0 + u0.abs()) || self.kind == ConicKind::Line {
             return ends.to_vec();
         }
         let (start, end) = ((a.point, a.radius, u0), (b.point, b.radius, u1));
         match sample_between(&sk, &so, start, end, tol) {
-            Some(s) => s.into_iter().map(|(c, r, _)| (c, r)).collect(),
+            Some(s) => s.into_iter().map(|(c, r, _)| Disk::new(c, r)).collect(),
             None => ends.to_vec(),
         }
     }
@@ -230,7 +231,7 @@ impl MedialAxis2d {
 
     /// Every edge sampled to chordal tolerance `tol` (model units), in edge
     /// order; see [`AxisEdge::sample`].
-    pub fn sampled(&self, shape: &Shape2d, tol: f64) -> Vec<Vec<(Point, f64)>> {
+    pub fn sampled(&self, shape: &Shape2d, tol: f64) -> Vec<Vec<Disk>> {
         use rayon::prelude::*;
         self.edges.par_iter().map(|e| e.sample(shape, &self.nodes, tol)).collect()
     }
@@ -268,7 +269,7 @@ mod tests {
             params: [(1.0, 1.0), (0.0, 0.0)],
             kind: edge_kind(&shape, e(2), v),
         };
-        let (c, r) = edge.eval(&shape, &nodes, 0.5).unwrap();
+        let Disk { center: c, radius: r } = edge.eval(&shape, &nodes, 0.5).unwrap();
         assert!(c.dist(Point::new(1.0, 0.85)) < 1e-15 && (r - 0.15).abs() < 1e-15, "{c:?} {r}");
         assert!((c.dist(Point::new(1.0, 1.0)) - r).abs() < 1e-15);
     }

@@ -21,7 +21,7 @@ pub fn layer_colour(k: usize) -> &'static str {
 pub fn draw_axis_thin(doc: &mut SvgDocument, shape: &Shape2d, axis: &MedialAxis2d, tol: f64) {
     for pl in axis.sampled(shape, tol) {
         let mut cmds: Vec<PathCmd> = Vec::with_capacity(pl.len());
-        for (k, (p, _)) in pl.iter().enumerate() {
+        for (k, p) in pl.iter().map(|d| d.center).enumerate() {
             cmds.push(if k == 0 { PathCmd::MoveTo([p.x, p.y]) } else { PathCmd::LineTo([p.x, p.y]) });
         }
         doc.path(&cmds, &Style::stroke("#9aa5b1", 0.7));

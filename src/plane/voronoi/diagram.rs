@@ -89,7 +89,7 @@ impl VoronoiDiagram {
             let (node, s) = if from_start { (e.from, s) } else { (e.to, 1.0 - s) };
             let at = axis.nodes[node].point;
             let (a, b) = (axis.nodes[e.from].point, axis.nodes[e.to].point);
-            let near = e.eval(&shape, &axis.nodes, s).map_or(a + (b - a) * s, |(c, _)| c);
+            let near = e.eval(&shape, &axis.nodes, s).map_or(a + (b - a) * s, |d| d.center);
             (near - at).unit()
         };
         let regions = site_regions(&axis, &edges, &loop_sites, auto_frame, toward);

@@ -42,7 +42,7 @@ impl VoronoiDiagram {
         let mut shown = 0;
         for i in self.diagram_edges(self_edges) {
             let e = &self.axis.edges[i];
-            let pts: Vec<Point> = e.sample(shape, &self.axis.nodes, tol).into_iter().map(|s| s.0).collect();
+            let pts: Vec<Point> = e.sample(shape, &self.axis.nodes, tol).into_iter().map(|s| s.center).collect();
             let path = clipped(&pts, &view);
             if path.is_empty() {
                 continue;

@@ -109,7 +109,7 @@ impl VoronoiDiagram {
                 "sites": [site_json(shape, e.sites[0]), site_json(shape, e.sites[1])],
                 "separates": [site_id_json(v.sides[0]), site_id_json(v.sides[1])],
                 "self": v.self_edge,
-                "samples": samples.iter().map(|(c, r)| [c.x, c.y, *r]).collect::<Vec<_>>(),
+                "samples": samples.iter().map(|d| [d.center.x, d.center.y, d.radius]).collect::<Vec<_>>(),
             }));
         }
         let regions: Vec<Value> = self

@@ -5,7 +5,7 @@ use super::port::Port;
 use super::sites::SiteRef;
 use super::{BaseCaseError, Builder, EventKind, Key};
 use crate::kernel::apollonius::Site;
-use crate::kernel::direction::{heading, Heading};
+use crate::kernel::direction::{Alignment, Heading};
 use crate::kernel::growing_disk::GrowingDisk;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Crossing;
@@ -198,7 +198,7 @@ impl<K: AxisKernel> Builder<'_, K> {
             let s = &self.sites[i];
             if own.contains(&i) {
                 if let Site::Circle { o, r, outside: false } = s.site {
-                    if heading(nrm, o - p) == Heading::Forward {
+                    if self.k().heading(nrm, o - p) == Heading::Forward {
                         best = best.min(r);
                     }
                 }
@@ -233,8 +233,7 @@ impl<K: AxisKernel> Builder<'_, K> {
         for Port { arc, .. } in &self.aux {
             let v = arc.center - p;
             if (v.norm() - arc.radius).abs() <= self.tol.touch()
-                && v.cross(nrm).abs() <= self.tol.touch()
-                && heading(v, nrm) == Heading::Forward
+                && self.k().alignment(nrm, v, self.tol.touch()) == Alignment::Along
             {
                 best = best.min(arc.radius);
             }

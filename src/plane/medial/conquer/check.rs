@@ -74,8 +74,8 @@ pub(crate) fn check_disks<K: AxisKernel>(finder: &DiskFinder<K>, axis: &MedialAx
     }
     let wrong = axis.edges.par_iter().find_map_any(|e| {
         EDGE_CHECKS.iter().find_map(|&s| match e.eval(shape, &axis.nodes, s) {
-            Some((c, r)) if !bad(c, r) && !apart(e, c, r) => None,
-            Some((c, _)) => Some(c),
+            Some(d) if !bad(d.center, d.radius) && !apart(e, d.center, d.radius) => None,
+            Some(d) => Some(d.center),
             None => Some(axis.nodes[e.from].point),
         })
     });

@@ -23,7 +23,7 @@
 //! The thesis finds the disks with a plane sweep (Lemma 3); here each is
 //! one growing-disk query on the shared element index.
 
-use crate::kernel::direction::{heading, turn, Heading};
+use crate::kernel::direction::Heading;
 use crate::kernel::fan::cw_angle;
 use crate::kernel::Orientation;
 use crate::kernel::{AxisKernel, Point};
@@ -91,7 +91,7 @@ pub fn augment<K: AxisKernel>(finder: &DiskFinder<K>) -> Result<Augmentation, Au
     for &turn in &DOWNS {
         let down = Point::new(turn.sin(), -turn.cos());
         match disks(finder, down) {
-            Ok(found) => return Ok(build(shape, found)),
+            Ok(found) => return Ok(build(finder.kernel(), shape, found)),
             Err(e) => last = e,
         }
     }
@@ -106,7 +106,7 @@ fn disks<K: AxisKernel>(finder: &DiskFinder<K>, down: Point) -> Result<Vec<(Cont
     let holes = shape.loops().len() - 1;
     let mut out = Vec::with_capacity(holes);
     for hole in 1..=holes {
-        let (pos, n) = lowest_point(shape, hole, down);
+        let (pos, n) = lowest_point(finder.kernel(), shape, hole, down);
         let at = ElementRef { loop_index: hole, element: pos.element };
         let d: MaxDisk = finder.max_disk_toward(at, pos.t, n);
         let mut others = d.footpoints[1..].iter();
@@ -183,7 +183,7 @@ fn normalised(shape: &Shape2d, p: BoundaryPos) -> BoundaryPos {
 /// since both elements rise from the lowest point). Of equally low
 /// points, one inside an element (the middle of a level segment) wins: its
 /// disk's centre then lies inside an axis edge.
-fn lowest_point(shape: &Shape2d, hole: usize, down: Point) -> (BoundaryPos, Point) {
+fn lowest_point(kern: &impl AxisKernel, shape: &Shape2d, hole: usize, down: Point) -> (BoundaryPos, Point) {
     let lp = &shape.loops()[hole];
     if lp.kind() == crate::shape::LoopKind::Point {
         // The disk's north pole is the point itself.
@@ -201,18 +201,18 @@ fn lowest_point(shape: &Shape2d, hole: usize, down: Point) -> (BoundaryPos, Poin
     // points down) grows its disk downwards. A region hole's lowest point
     // always faces down.
     let curve = lp.kind() == crate::shape::LoopKind::Curve;
-    let faces_down = |e: &Element| !curve || heading(e.left_normal_at(e.point_at(0.5)), down) == Heading::Forward;
+    let faces_down = |e: &Element| !curve || kern.heading(e.left_normal_at(e.point_at(0.5)), down) == Heading::Forward;
     for (k, e) in lp.elements().enumerate() {
         let pos = |t: f64| BoundaryPos { loop_index: hole, element: k, t };
         let joint = shape.joint(hole, k);
         let vertex_faces_down = joint == crate::shape::JointKind::Reflex
             || (joint == crate::shape::JointKind::Smooth
-                && heading(e.left_normal_at(e.start()), down) == Heading::Forward);
+                && kern.heading(e.left_normal_at(e.start()), down) == Heading::Forward);
         if !curve || vertex_faces_down {
             offer(depth(e.start()), false, pos(0.0));
         }
         match e {
-            Element::Segment(s) if heading(s.b - s.a, down) == Heading::Sideways && faces_down(&e) => {
+            Element::Segment(s) if kern.heading(s.b - s.a, down) == Heading::Sideways && faces_down(&e) => {
                 offer(depth((s.a + s.b) * 0.5), true, pos(0.5))
             }
             Element::Segment(_) => {}
@@ -236,12 +236,12 @@ fn lowest_point(shape: &Shape2d, hole: usize, down: Point) -> (BoundaryPos, Poin
 /// reflex vertex the fan of normals turns clockwise from the incoming
 /// element's normal to the outgoing one's, so a direction clockwise of
 /// another comes later.
-fn fan_before(a: Point, b: Point) -> bool {
-    turn(a, b) == Orientation::Right
+fn fan_before(k: &impl AxisKernel, a: Point, b: Point) -> bool {
+    k.turn(a, b) == Orientation::Right
 }
 
 /// Builds the one boundary cycle from the disks (Figure 2.17).
-fn build(shape: &Shape2d, found: Vec<(Contact, Contact, Cut)>) -> Augmentation {
+fn build(k: &impl AxisKernel, shape: &Shape2d, found: Vec<(Contact, Contact, Cut)>) -> Augmentation {
     let loops = shape.loops().len();
     let mut on: Vec<Vec<Contact>> = vec![Vec::new(); loops];
     let mut cuts = Vec::with_capacity(found.len());
@@ -263,9 +263,9 @@ fn build(shape: &Shape2d, found: Vec<(Contact, Contact, Cut)>) -> Augmentation {
         }
         list.sort_by(|a, b| {
             (a.pos.element, a.pos.t).partial_cmp(&(b.pos.element, b.pos.t)).unwrap_or(std::cmp::Ordering::Equal).then(
-                if fan_before(a.dir, b.dir) {
+                if fan_before(k, a.dir, b.dir) {
                     std::cmp::Ordering::Less
-                } else if fan_before(b.dir, a.dir) {
+                } else if fan_before(k, b.dir, a.dir) {
                     std::cmp::Ordering::Greater
                 } else {
                     std::cmp::Ordering::Equal

@@ -4,8 +4,7 @@
 //! the pieces between consecutive footpoints closed by an auxiliary arc
 //! of the disk.
 
-use crate::kernel::direction::{heading, Heading};
-use crate::kernel::fan::Fan;
+use crate::kernel::fan::{BoundSide, Fan, FanEnd};
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Point;
 use crate::plane::medial::decompose::subshape::{chain_holds, BoundaryPos, Cut, Piece, Slot, Subshape};
@@ -75,24 +74,6 @@ fn locate_foot<P: Slot>(
         Piece::Aux { disk } => Some(disk),
         Piece::Chain { .. } => None,
     };
-    // `m` lies on the fan part's side of the arc direction `d` at one of
-    // its ends (`sign` 1: clockwise from the start, -1: anticlockwise from
-    // the end). The cross product decides, except where it vanishes
-    // because `m` is opposite `d`: at a curve's end the fan is a half turn
-    // (thesis 2.3, zero-area holes), so a disk tangent to one side there
-    // is opposite an arc tangent to the other, and the sign is rounding.
-    // Such an `m` is in the part only when the part is itself a half
-    // turn, i.e. its other end is opposite `d` too.
-    let beside = |d: Point, m: Point, sign: f64, start: Point, end: Point| {
-        let cross = sign * d.cross(m);
-        if cross.abs() > fan_slack || heading(d, m) != Heading::Backward {
-            return cross <= fan_slack;
-        }
-        let width = Fan::clockwise(start, end).width();
-        // A part narrower than a half turn whose ends rounding swapped
-        // reads as almost a whole turn: it is empty.
-        (std::f64::consts::PI - fan_slack..1.5 * std::f64::consts::PI).contains(&width)
-    };
     let point = shape.kind(p.loop_index) == crate::shape::LoopKind::Point;
     let holds = |j: usize, at: BoundaryPos| {
         let Some((from, to)) = pieces[j].chain() else { return false };
@@ -110,8 +91,12 @@ fn locate_foot<P: Slot>(
         // at the vertex, else the normals of the chain's own elements.
         let start = if from == at { dir(j + m_len - 1) } else { None }.unwrap_or_else(|| normal_into(shape, at, q));
         let end = if to == at { dir(j + 1) } else { None }.unwrap_or_else(|| normal_out_of(shape, at, q));
-        let after_ok = to != at || dir(j + 1).is_none_or(|d| beside(d, m, -1.0, start, end));
-        let before_ok = from != at || dir(j + m_len - 1).is_none_or(|d| beside(d, m, 1.0, start, end));
+        // The disk must lie on the part's side of the arcs it starts or
+        // ends at (kernel::fan::Fan::bound_side handles the half turn).
+        let part = Fan::clockwise(start, end);
+        let beside = |d: Point, end: FanEnd| part.bound_side(d, end, m, fan_slack) == BoundSide::Within;
+        let after_ok = to != at || dir(j + 1).is_none_or(|d| beside(d, FanEnd::End));
+        let before_ok = from != at || dir(j + m_len - 1).is_none_or(|d| beside(d, FanEnd::Start));
         after_ok && before_ok
     };
     let reps = [Some(p), p.other_way(shape)];

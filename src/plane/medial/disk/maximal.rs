@@ -11,7 +11,7 @@
 //! the whole shape (Observation 4), so the divide step can ask this one
 //! index for every subshape.
 
-use crate::kernel::direction::{heading, turn, Heading};
+use crate::kernel::direction::{Alignment, Heading};
 use crate::kernel::growing_disk::GrowingDisk;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Orientation;
@@ -180,9 +180,9 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
                     let d = c - v;
                     let outside = if other == vertex {
                         // `f` ends its element; the neighbour starts at `v`.
-                        turn(lp.element(other).start_tangent().perp(), d) == Orientation::Right
+                        self.kernel.turn(lp.element(other).start_tangent().perp(), d) == Orientation::Right
                     } else {
-                        turn(lp.element(other).end_tangent().perp(), d) == Orientation::Left
+                        self.kernel.turn(lp.element(other).end_tangent().perp(), d) == Orientation::Left
                     };
                     return !(neighbour_touches && outside);
                 }
@@ -206,7 +206,7 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
             return true;
         }
         if lp.kind() != LoopKind::Curve || r <= tol {
-            return seen_from_inside(e, q, c, r, tol);
+            return seen_from_inside(&self.kernel, e, q, c, r, tol);
         }
         let n = lp.len();
         let v = if q.dist(e.start()) <= tol {
@@ -214,16 +214,16 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
         } else if q.dist(e.end()) <= tol {
             (er.element + 1) % n
         } else {
-            return heading(c - q, e.left_normal_at(q)) == Heading::Forward;
+            return self.kernel.heading(c - q, e.left_normal_at(q)) == Heading::Forward;
         };
         let m = c - lp.vertices()[v].p;
         match self.shape.joint(er.loop_index, v) {
             JointKind::Reflex => {
                 let t_in = lp.element((v + n - 1) % n).end_tangent();
                 let t_out = lp.element(v).start_tangent();
-                m.dot(t_in) >= -tol && m.dot(t_out) <= tol
+                self.kernel.vertex_fan_holds(t_in, t_out, m, tol)
             }
-            JointKind::Smooth => heading(m, e.left_normal_at(q)) == Heading::Forward,
+            JointKind::Smooth => self.kernel.heading(m, e.left_normal_at(q)) == Heading::Forward,
             JointKind::Convex => false,
         }
     }
@@ -291,14 +291,15 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
         // reflex vertex's fan (an augmenting disk at a curve site's end, where
         // the fan is half a turn), the arc is any other element.
         let own_element = lp.element(at.element);
-        let along_normal = own_element.left_normal_at(p).dot(n) > 1.0 - Tolerance::same_direction();
+        let along_normal = self.kernel.direction_match(own_element.left_normal_at(p), n, Tolerance::same_direction())
+            == Alignment::Along;
         // The first contact of each element, as a key for the tree search.
         let contact = |gid: usize| {
             let (_, e) = self.element(gid);
             let k = &self.kernel;
             if gid == own {
                 if along_normal {
-                    own_contact(&g, &e)
+                    own_contact(k, &g, &e)
                 } else {
                     neighbour_touch(k, &g, &e, t_min, tol, false)
                 }
@@ -356,9 +357,9 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
 /// The element the disk grows from touches it again only if it is an arc
 /// curving towards the inside: at its own radius, where the disk becomes
 /// its supporting circle.
-fn own_contact(g: &GrowingDisk, e: &Element) -> Option<f64> {
+fn own_contact(k: &impl AxisKernel, g: &GrowingDisk, e: &Element) -> Option<f64> {
     match e {
-        Element::Arc(a) if heading(g.n, a.center - g.p) == Heading::Forward => Some(a.radius),
+        Element::Arc(a) if k.heading(g.n, a.center - g.p) == Heading::Forward => Some(a.radius),
         _ => None,
     }
 }
@@ -380,7 +381,7 @@ fn neighbour_touch(
 ) -> Option<f64> {
     let mut best = touches(k, g, e, t_min).filter(|&(_, q)| q.dist(g.p) > tol).map(|(t, _)| t).fold(None, min_some);
     if let (true, Element::Arc(a)) = (smooth, e) {
-        if heading(g.n, a.center - g.p) == Heading::Forward {
+        if k.heading(g.n, a.center - g.p) == Heading::Forward {
             best = min_some(best, a.radius);
         }
     }
@@ -433,9 +434,9 @@ fn touches(k: &impl AxisKernel, g: &GrowingDisk, e: &Element, t_min: f64) -> imp
 /// contact inside an element from the other side reaches it through a
 /// needle thinner than the tolerance, past the needle's other side, which
 /// is the real contact.
-fn seen_from_inside(e: &Element, q: Point, c: Point, r: f64, tol: f64) -> bool {
+fn seen_from_inside(k: &impl AxisKernel, e: &Element, q: Point, c: Point, r: f64, tol: f64) -> bool {
     r <= tol
         || q.dist(e.start()) <= tol
         || q.dist(e.end()) <= tol
-        || heading(c - q, e.left_normal_at(q)) == Heading::Forward
+        || k.heading(c - q, e.left_normal_at(q)) == Heading::Forward
 }
