@@ -5,7 +5,7 @@
 
 use super::CamError;
 use crate::kernel::tolerance::Tolerance;
-use crate::kernel::Point;
+use crate::kernel::{Disk, Point};
 use crate::plane::{MedialAxis2d, OffsetLayer, Offsets};
 use crate::shape::Shape2d;
 
@@ -96,12 +96,12 @@ pub fn vcarve(shape: &Shape2d, axis: &MedialAxis2d, opts: &VCarveOptions) -> Res
     let flat_radius = opts.max_depth * slope;
     let tol = if opts.tolerance > 0.0 { opts.tolerance } else { Tolerance::new(shape.tolerance()).vcarve_sampling() };
     let sampled = axis.sampled(shape, tol);
-    // Pieces of edges below the flat radius, as polylines of (point,
-    // radius), with the nodes they start and end at (none at a cut).
+    // Pieces of edges below the flat radius, as polylines of maximal
+    // disks, with the nodes they start and end at (none at a cut).
     let mut pieces: Vec<Piece> = Vec::new();
     for (edge, samples) in axis.edges.iter().zip(&sampled) {
         let mut start = Some(edge.from);
-        let mut cur: Vec<(Point, f64)> = Vec::new();
+        let mut cur: Vec<Disk> = Vec::new();
         // The radius is not linear between samples (between two points it
         // is hyperbolic along a straight edge): the cut is where the
         // distance to the edge's site reaches the flat radius on the chord.
@@ -115,15 +115,15 @@ pub fn vcarve(shape: &Shape2d, axis: &MedialAxis2d, opts: &VCarveOptions) -> Res
                     hi = m;
                 }
             }
-            (lo.mid(hi), flat_radius)
+            Disk::new(lo.mid(hi), flat_radius)
         };
         for w in samples.windows(2) {
-            let ((p, r), (q, s)) = (w[0].parts(), w[1].parts());
+            let (Disk { center: p, radius: r }, Disk { center: q, radius: s }) = (w[0], w[1]);
             if cur.is_empty() && r <= flat_radius {
-                cur.push((p, r));
+                cur.push(w[0]);
             }
             match (r <= flat_radius, s <= flat_radius) {
-                (true, true) => cur.push((q, s)),
+                (true, true) => cur.push(w[1]),
                 (true, false) => {
                     cur.push(cut(p, q));
                     pieces.push(Piece { points: std::mem::take(&mut cur), ends: [start, None] });
@@ -131,7 +131,7 @@ pub fn vcarve(shape: &Shape2d, axis: &MedialAxis2d, opts: &VCarveOptions) -> Res
                 }
                 (false, true) => {
                     cur.push(cut(q, p));
-                    cur.push((q, s));
+                    cur.push(w[1]);
                 }
                 (false, false) => {}
             }
@@ -142,7 +142,7 @@ pub fn vcarve(shape: &Shape2d, axis: &MedialAxis2d, opts: &VCarveOptions) -> Res
     }
     let paths = chain(pieces)
         .into_iter()
-        .map(|pl| VCarvePath { points: pl.iter().map(|&(p, r)| [p.x, p.y, r / slope]).collect() })
+        .map(|pl| VCarvePath { points: pl.iter().map(|d| [d.center.x, d.center.y, d.radius / slope]).collect() })
         .collect();
     // Without a cap there is no flat bottom: no offsets to prepare.
     let offsets = if flat_radius.is_finite() { Some(Offsets::from_axis(shape, axis)?) } else { None };
@@ -153,16 +153,16 @@ pub fn vcarve(shape: &Shape2d, axis: &MedialAxis2d, opts: &VCarveOptions) -> Res
     Ok(VCarve { opts: *opts, paths, flat })
 }
 
-/// A polyline of (point, radius) along one edge and the axis nodes at its
+/// A polyline of maximal disks along one edge and the axis nodes at its
 /// ends (`None` where it was cut at the flat radius).
 struct Piece {
-    points: Vec<(Point, f64)>,
+    points: Vec<Disk>,
     ends: [Option<usize>; 2],
 }
 
 /// Joins pieces end to end at nodes where exactly two of them meet, so the
 /// tool lifts only at branch points, leaves and the flat radius.
-fn chain(pieces: Vec<Piece>) -> Vec<Vec<(Point, f64)>> {
+fn chain(pieces: Vec<Piece>) -> Vec<Vec<Disk>> {
     use std::collections::HashMap;
     let mut at: HashMap<usize, Vec<(usize, bool)>> = HashMap::new();
     for (i, pc) in pieces.iter().enumerate() {
