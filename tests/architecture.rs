@@ -304,7 +304,7 @@ fn code_lines(dir: &Path) -> Vec<(String, usize, String)> {
 #[test]
 fn plane_asks_the_kernel_for_signs_and_angles() {
     let mut wrong = Vec::new();
-    let free_sign_helpers = ["heading", "turn", "alignment", "direction_match", "vertex_fan_holds"];
+    let free_sign_helpers = ["heading", "turn", "alignment", "direction_match", "vertex_fan_side"];
     for (file, n, line) in code_lines(&src().join("plane")) {
         let product = line.contains(".dot(") || line.contains(".cross(");
         let unarrowed = line.replace("=>", "").replace("->", "");

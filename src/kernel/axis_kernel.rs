@@ -34,6 +34,7 @@ use super::apollonius::{self, Site};
 use super::bisector;
 use super::direction::{self, Alignment, Heading};
 use super::element::Element;
+use super::fan::BoundSide;
 use super::growing_disk::GrowingDisk;
 use super::SitePiece;
 use super::{construct, Disk, Kernel, Orientation, Point};
@@ -181,11 +182,10 @@ pub trait AxisKernel: Kernel + Copy + Send + Sync + 'static {
 
     /// Whether `m` from a vertex points into its fan of normals between
     /// tangents `t_in` and `t_out`, `tol` of play (model units; see
-    /// [`direction::vertex_fan_holds`]). An enum would say no more than
-    /// the two answers: kept a `bool` on purpose.
+    /// [`direction::vertex_fan_side`]).
     #[inline]
-    fn vertex_fan_holds(&self, t_in: Point, t_out: Point, m: Point, tol: f64) -> bool {
-        direction::vertex_fan_holds(t_in, t_out, m, tol)
+    fn vertex_fan_side(&self, t_in: Point, t_out: Point, m: Point, tol: f64) -> BoundSide {
+        direction::vertex_fan_side(t_in, t_out, m, tol)
     }
 
     /// Which side of `site`'s carrier the point `c` lies on: a point is

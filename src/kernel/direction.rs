@@ -10,6 +10,7 @@
 //! change them, and so that `src/plane` holds no sign test of its own
 //! (`tests/architecture.rs` checks it).
 
+use super::fan::BoundSide;
 use super::{Orientation, Point};
 
 /// Where a vector points relative to a direction `n`: the sign of `n · v`.
@@ -90,10 +91,14 @@ pub fn direction_match(a: Point, b: Point, eps: f64) -> Alignment {
 /// `t_in` arriving and `t_out` leaving (unit; a reflex vertex turns
 /// clockwise from one to the other): not more than `tol` (`m`'s units)
 /// behind the incoming tangent's normal line nor ahead of the outgoing
-/// one's.
+/// one's: [`BoundSide::Within`] the fan, or `Beyond` one of its bounds.
 #[inline]
-pub fn vertex_fan_holds(t_in: Point, t_out: Point, m: Point, tol: f64) -> bool {
-    m.dot(t_in) >= -tol && m.dot(t_out) <= tol
+pub fn vertex_fan_side(t_in: Point, t_out: Point, m: Point, tol: f64) -> BoundSide {
+    if m.dot(t_in) >= -tol && m.dot(t_out) <= tol {
+        BoundSide::Within
+    } else {
+        BoundSide::Beyond
+    }
 }
 
 /// The angle of direction `v` from the positive x axis, radians in

@@ -12,6 +12,7 @@
 //! index for every subshape.
 
 use crate::kernel::direction::{Alignment, Heading};
+use crate::kernel::fan::BoundSide;
 use crate::kernel::growing_disk::GrowingDisk;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Orientation;
@@ -221,7 +222,7 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
             JointKind::Reflex => {
                 let t_in = lp.element((v + n - 1) % n).end_tangent();
                 let t_out = lp.element(v).start_tangent();
-                self.kernel.vertex_fan_holds(t_in, t_out, m, tol)
+                self.kernel.vertex_fan_side(t_in, t_out, m, tol) == BoundSide::Within
             }
             JointKind::Smooth => self.kernel.heading(m, e.left_normal_at(q)) == Heading::Forward,
             JointKind::Convex => false,
