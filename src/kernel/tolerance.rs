@@ -75,6 +75,18 @@ impl Tolerance {
         64.0 * self.touch
     }
 
+    /// Two edges joining one pair of nodes whose centres are within this,
+    /// 256τ, each node's disk more than twice as large, close a cycle of
+    /// rounding, not one round a hole: a hole inside the lens the two
+    /// edges bound would lie within this of both centres and so inside
+    /// their disks. Measured on Fourier curves of 10^6 arcs: branch points
+    /// 46–90τ from a joint whose two contacts snapped onto the joint's
+    /// vertex, joined to it on both sides.
+    #[inline]
+    pub fn rounding_cycle(self) -> f64 {
+        256.0 * self.touch
+    }
+
     /// The side of the grid cells that bucket dividing disks' centres when
     /// coinciding ones are found, four times [`same_disk`](Self::same_disk)
     /// (neighbouring cells are searched too).
@@ -344,6 +356,7 @@ mod tests {
             Tolerance::hugged_tip,
             Tolerance::same_event,
             Tolerance::same_disk,
+            Tolerance::rounding_cycle,
             Tolerance::branch_contact_slack,
             Tolerance::fan_arc,
             Tolerance::hug,

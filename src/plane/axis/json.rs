@@ -66,13 +66,19 @@ impl MedialAxis2d {
             .iter()
             .zip(samples)
             .map(|(e, s)| {
-                json!({
+                let mut v = json!({
                     "from": e.from,
                     "to": e.to,
                     "kind": conic(e.kind),
                     "sites": [site_json(shape, e.sites[0]), site_json(shape, e.sites[1])],
                     "samples": s.iter().map(|d| [d.center.x, d.center.y, d.radius]).collect::<Vec<_>>(),
-                })
+                });
+                // Only where it holds: a straight segment standing for
+                // the conic across a hugged band (see `AxisEdge::straight`).
+                if e.straight {
+                    v["straight"] = Value::Bool(true);
+                }
+                v
             })
             .collect();
         crate::io::json::to_line(&json!({"nodes": nodes, "edges": edges}))

@@ -101,6 +101,13 @@ pub struct AxisEdge {
     pub params: [(f64, f64); 2],
     /// The kind of conic the edge lies on.
     pub kind: ConicKind,
+    /// The straight segment between the nodes stands for the conic (kind
+    /// [`ConicKind::Line`]), the radius going linearly from node to node:
+    /// across a band of boundary that stays within a few tolerances of
+    /// both nodes' circles, where the order of contacts is rounding. Its
+    /// disks touch both primitives (and every element between them)
+    /// within twice `Tolerance::hugged_tip` (16τ).
+    pub straight: bool,
 }
 
 /// The medial axis of a shape.
@@ -143,8 +150,11 @@ impl AxisEdge {
     /// for an edge of a valid axis).
     pub fn eval(&self, shape: &Shape2d, nodes: &[AxisNode], s: f64) -> Option<Disk> {
         if self.kind == ConicKind::Line {
-            let (a, b) = (nodes[self.from].point, nodes[self.to].point);
-            let c = a + (b - a) * s;
+            let (a, b) = (nodes[self.from], nodes[self.to]);
+            let c = a.point + (b.point - a.point) * s;
+            if self.straight {
+                return Some(Disk::new(c, a.radius + (b.radius - a.radius) * s));
+            }
             return Some(Disk::new(c, site_distance(&self.sites[0].site(shape), c)));
         }
         let r_max = nodes[self.from].radius.max(nodes[self.to].radius);
@@ -268,6 +278,7 @@ mod tests {
             sites: [e(2), v],
             params: [(1.0, 1.0), (0.0, 0.0)],
             kind: edge_kind(&shape, e(2), v),
+            straight: false,
         };
         let Disk { center: c, radius: r } = edge.eval(&shape, &nodes, 0.5).unwrap();
         assert!(c.dist(Point::new(1.0, 0.85)) < 1e-15 && (r - 0.15).abs() < 1e-15, "{c:?} {r}");

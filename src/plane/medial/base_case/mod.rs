@@ -31,19 +31,21 @@
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{AxisKernel, Point};
 use crate::plane::axis::Primitive;
-use crate::plane::medial::decompose::subshape::{hugged_disk, Cut, Piece, Subshape};
+use crate::plane::medial::decompose::subshape::{hugged, Cut, Hugged, Piece, Subshape};
 use crate::plane::medial::disk::maximal::DiskFinder;
 use crate::shape::Shape2d;
 
 mod branch;
 mod cycle;
 mod events;
+mod hugged;
 mod port;
 mod prepare;
 mod sites;
 mod walk;
 
 use events::Event;
+use hugged::{band_axis, tip_axis};
 use port::Port;
 use sites::{Key, LocalSite};
 
@@ -91,6 +93,11 @@ pub struct LocalEdge {
     pub sites: [Primitive; 2],
     /// (parameter at `from`, at `to`) per primitive.
     pub params: [(f64, f64); 2],
+    /// The straight segment between the two nodes stands for the conic,
+    /// the radius going linearly from node to node: across a band its
+    /// disks hug, where the conic is ill-conditioned (nearly cocircular
+    /// primitives) and strays from the segment by less than the tolerance.
+    pub straight: bool,
 }
 
 /// The axis of one subshape.
@@ -131,18 +138,33 @@ pub fn solve<K: AxisKernel>(
     finder: &DiskFinder<K>,
 ) -> Result<LocalAxis, BaseCaseError> {
     let tol = Tolerance::new(tol);
-    if let Some(disk) = hugged_disk(shape, s, cuts, tol.hugged_tip()) {
+    let hug = hugged(shape, s, cuts, tol.hugged_tip());
+    if let Some(Hugged::Tip(disk)) = hug {
         // The tip of a lobe cut at nearly its osculating circle: its true
         // axis runs on inside a sliver a few tolerances thin, where the
         // order of footpoints is rounding rather than geometry, and every
         // disk there is this one within those tolerances. The disk is the
         // tip's whole axis, a leaf.
-        let c = cuts[disk];
-        return Ok(LocalAxis {
-            nodes: vec![LocalNode { center: c.center, radius: c.radius, kind: EventKind::Port(disk) }],
-            edges: Vec::new(),
-        });
+        return Ok(tip_axis(cuts, disk));
     }
+    // A band between two disks that both hug it is solved like any leaf,
+    // and where the footpoint order (rounding there) leaves no consistent
+    // walk, its axis is the straight edge between the ports, within the
+    // tolerance of the true one.
+    walk_leaf(shape, s, cuts, tol, finder).or_else(|e| match hug {
+        Some(band @ Hugged::Band(_)) => band_axis(shape, s, cuts, band).ok_or(e),
+        _ => Err(e),
+    })
+}
+
+/// The base case proper: sites, events and the walk.
+fn walk_leaf<K: AxisKernel>(
+    shape: &Shape2d,
+    s: &Subshape,
+    cuts: &[Cut],
+    tol: Tolerance,
+    finder: &DiskFinder<K>,
+) -> Result<LocalAxis, BaseCaseError> {
     let touch = Builder::<K>::touch_tol(shape, tol);
     let mut b = Builder { shape, tol, touch, sites: Vec::new(), events: Vec::new(), aux: Vec::new(), finder };
     b.collect_sites(s, cuts);

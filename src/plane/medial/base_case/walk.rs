@@ -150,6 +150,7 @@ impl<K: AxisKernel> Builder<'_, K> {
                         to: e.0,
                         sites: [self.sites[s2].prim, self.sites[s1].prim],
                         params: [self.params_between(s2, d, e, (w2b, w2e)), self.params_between(s1, d, e, (w1a, w1e))],
+                        straight: false,
                     });
                 }
                 continue;

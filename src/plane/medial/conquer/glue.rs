@@ -3,6 +3,9 @@
 //! graph surgery of `merge.rs`, node kinds from the final degrees and the
 //! graph check.
 
+use std::collections::{HashMap, HashSet};
+
+use crate::kernel::bisector::ConicKind;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::AxisKernel;
 use crate::plane::axis::{edge_kind, AxisEdge, AxisNode, MedialAxis2d, NodeKind, Primitive};
@@ -28,7 +31,8 @@ pub fn glue<K: AxisKernel>(
     let mut edges: Vec<AxisEdge> = Vec::new();
     let mut is_port: Vec<bool> = Vec::new();
     let mut is_joint: Vec<bool> = Vec::new();
-    for local in locals {
+    let skip = redundant_bands(locals, &same_as);
+    for (local, _) in locals.iter().zip(&skip).filter(|(_, &redundant)| !redundant) {
         let ids: Vec<usize> = local
             .nodes
             .iter()
@@ -58,7 +62,8 @@ pub fn glue<K: AxisKernel>(
                 to: ids[e.to],
                 sites: e.sites,
                 params: e.params,
-                kind: edge_kind(shape, e.sites[0], e.sites[1]),
+                kind: if e.straight { ConicKind::Line } else { edge_kind(shape, e.sites[0], e.sites[1]) },
+                straight: e.straight,
             });
         }
     }
@@ -74,6 +79,9 @@ pub fn glue<K: AxisKernel>(
     merge_pass_through(shape, &mut axis, &is_port, &is_joint);
     classify(&mut axis, tol);
     merge_coinciding_branches(shape, &mut axis, Tolerance::new(tol));
+    // After the merges, which settle the edges that subshapes share, and
+    // before the node kinds, which follow from the degrees.
+    drop_rounding_cycles(&axis.nodes, &mut axis.edges, Tolerance::new(tol).rounding_cycle());
     classify(&mut axis, tol);
     polish_branches(finder.kernel(), shape, &mut axis);
     check_graph(&axis, shape.loops().len() - 1)?;
@@ -111,6 +119,42 @@ fn coinciding_cuts(cuts: &[Cut], t: Tolerance) -> Vec<usize> {
 /// Node kinds from the final degrees. An end whose disk is within the
 /// tolerance `tol` of radius 0 is a convex corner (a dividing disk that
 /// small, in a needle's tip, is that corner's node).
+/// Which locals to leave out: a band's straight edge stands for whatever
+/// axis joins its two ports, so where another subshape holding the same
+/// stretch (between two disks met twice) has those ports too, its axis is
+/// kept instead, and of two bands with the same ports one is kept.
+/// `same_as` maps a dividing disk to the one it coincides with.
+fn redundant_bands(locals: &[LocalAxis], same_as: &[usize]) -> Vec<bool> {
+    let is_band = |local: &LocalAxis| local.edges.len() == 1 && local.edges[0].straight;
+    if !locals.iter().any(is_band) {
+        return vec![false; locals.len()];
+    }
+    let ports_of = |local: &LocalAxis| {
+        let mut p: Vec<usize> = local
+            .nodes
+            .iter()
+            .filter_map(|n| match n.kind {
+                EventKind::Port(c) => Some(same_as[c]),
+                _ => None,
+            })
+            .collect();
+        p.sort_unstable();
+        p
+    };
+    let solved: HashSet<Vec<usize>> =
+        locals.iter().filter(|l| !is_band(l)).map(ports_of).filter(|p| p.len() == 2).collect();
+    let mut bands: HashSet<Vec<usize>> = HashSet::new();
+    locals
+        .iter()
+        .map(|local| {
+            is_band(local) && {
+                let ports = ports_of(local);
+                solved.contains(&ports) || !bands.insert(ports)
+            }
+        })
+        .collect()
+}
+
 fn classify(axis: &mut MedialAxis2d, tol: f64) {
     let deg = axis.degrees();
     for (v, node) in axis.nodes.iter_mut().enumerate() {
@@ -123,5 +167,85 @@ fn classify(axis: &mut MedialAxis2d, tol: f64) {
         } else {
             NodeKind::Joint
         };
+    }
+}
+
+/// Drops the edges that close a cycle of rounding: a cycle whose nodes
+/// all lie within `reach` (model units) of one of them and whose disks
+/// are all larger than four times it (see `Tolerance::rounding_cycle`; a
+/// branch point by a joint, its contacts there snapped onto the joint's
+/// vertex, joined to the joint's node on both sides). Such a cycle can
+/// enclose no hole, and its edges are stretches of rounding: the axis
+/// keeps a tree of them. Only edges shorter than `reach` are looked at,
+/// and each search stops after a few nodes.
+fn drop_rounding_cycles(nodes: &[AxisNode], edges: &mut Vec<AxisEdge>, reach: f64) {
+    const SEARCH: usize = 64;
+    let mut near: HashMap<usize, Vec<usize>> = HashMap::new();
+    edges.retain(|e| {
+        let (u, v) = (e.from, e.to);
+        let (p, big) = (nodes[u].point, |w: usize| nodes[w].radius > 4.0 * reach);
+        if p.dist(nodes[v].point) > reach {
+            return true;
+        }
+        // Is v already reached from u over short edges, near u?
+        let mut seen = vec![u];
+        let mut k = 0;
+        let mut closes = false;
+        while k < seen.len() && seen.len() < SEARCH && !closes {
+            let w = seen[k];
+            k += 1;
+            for &x in near.get(&w).map_or(&[][..], Vec::as_slice) {
+                if x == v {
+                    closes = true;
+                } else if !seen.contains(&x) && nodes[x].point.dist(p) <= reach {
+                    seen.push(x);
+                }
+            }
+        }
+        if closes && big(v) && seen.iter().all(|&w| big(w)) {
+            return false;
+        }
+        near.entry(u).or_default().push(v);
+        near.entry(v).or_default().push(u);
+        true
+    });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kernel::Point;
+    use crate::shape::ElementRef;
+
+    fn node(x: f64, y: f64, radius: f64) -> AxisNode {
+        AxisNode { point: Point::new(x, y), radius, kind: NodeKind::Joint }
+    }
+
+    fn edge(from: usize, to: usize) -> AxisEdge {
+        let site = Primitive::Element(ElementRef { loop_index: 0, element: 0 });
+        AxisEdge { from, to, sites: [site, site], params: [(0.0, 0.0); 2], kind: ConicKind::Line, straight: false }
+    }
+
+    #[test]
+    fn a_small_cycle_of_large_disks_loses_one_edge() {
+        let reach = 1e-6;
+        let nodes = [node(0.0, 0.0, 1.0), node(3e-7, 0.0, 1.0), node(0.0, 3e-7, 1.0), node(5.0, 0.0, 1.0)];
+        let mut edges = vec![edge(0, 1), edge(1, 2), edge(2, 0), edge(1, 3)];
+        drop_rounding_cycles(&nodes, &mut edges, reach);
+        assert_eq!(edges, vec![edge(0, 1), edge(1, 2), edge(1, 3)]);
+    }
+
+    #[test]
+    fn a_cycle_that_could_hold_a_hole_is_kept() {
+        let reach = 1e-6;
+        // Disks no larger than the cycle's reach: a hole may lie inside.
+        let small = [node(0.0, 0.0, 2e-6), node(3e-7, 0.0, 2e-6), node(0.0, 3e-7, 2e-6)];
+        let mut edges = vec![edge(0, 1), edge(1, 2), edge(2, 0)];
+        drop_rounding_cycles(&small, &mut edges, reach);
+        assert_eq!(edges.len(), 3);
+        // A wide cycle of large disks.
+        let wide = [node(0.0, 0.0, 1.0), node(3e-6, 0.0, 1.0), node(0.0, 3e-6, 1.0)];
+        drop_rounding_cycles(&wide, &mut edges, reach);
+        assert_eq!(edges.len(), 3);
     }
 }

@@ -36,7 +36,8 @@ pub(crate) fn merge_pass_through(shape: &Shape2d, axis: &mut MedialAxis2d, is_po
             continue;
         }
         let (mut e1, mut e2) = (axis.edges[live[0]], axis.edges[live[1]]);
-        if !same_pair(e1.sites, e2.sites) {
+        // A straight edge across a hugged band stays apart from a conic.
+        if !same_pair(e1.sites, e2.sites) || e1.straight != e2.straight {
             continue;
         }
         // A joint with the same pair on both sides: only where a point
@@ -76,6 +77,7 @@ pub(crate) fn merge_pass_through(shape: &Shape2d, axis: &mut MedialAxis2d, is_po
             sites: e1.sites,
             params: [(e1.params[0].0, on(0)), (e1.params[1].0, on(1))],
             kind: e1.kind,
+            straight: e1.straight,
         };
         alive[live[1]] = false;
         axis.edges[live[0]] = merged;
@@ -205,6 +207,7 @@ fn reversed(e: AxisEdge) -> AxisEdge {
         sites: [e.sites[1], e.sites[0]],
         params: [(e.params[1].1, e.params[1].0), (e.params[0].1, e.params[0].0)],
         kind: e.kind,
+        straight: e.straight,
     }
 }
 

@@ -30,7 +30,7 @@ use crate::plane::medial::decompose::fan_cut::fan_cut;
 use crate::plane::medial::decompose::parts::{
     foot_at_convex_corner, original_parts, parts_in, points_in, position, reflex_point,
 };
-use crate::plane::medial::decompose::subshape::{hugged_disk, BoundaryPos, ChainParts, Cut, Piece, Subshape};
+use crate::plane::medial::decompose::subshape::{hugged, BoundaryPos, ChainParts, Cut, Hugged, Piece, Subshape};
 use crate::plane::medial::decompose::tour::{Ranged, Span, Tour};
 use crate::plane::medial::disk::maximal::{DiskFinder, MaxDisk};
 use crate::plane::medial::disk::slide::slide_to_third;
@@ -334,11 +334,16 @@ fn divide_along<K: AxisKernel>(
         // count towards a leaf's size like original parts.
         // A lobe's tip within a few tolerances of its one dividing disk is
         // a leaf however many parts it has: cutting it again would leave
-        // bands of rounding between nearly equal disks.
+        // bands of rounding between nearly equal disks. (A band hugged by
+        // its two disks is divided on: the base case solves it, or else
+        // stands the straight edge between its ports for its axis.)
         // A range holds many pieces: never a lobe's tip.
         if parts + points_in(shape, &s, tour) <= leaf_parts
             || s.plain().is_some_and(|p| {
-                hugged_disk(shape, &p, &out.cuts, Tolerance::new(shape.tolerance()).hugged_tip()).is_some()
+                matches!(
+                    hugged(shape, &p, &out.cuts, Tolerance::new(shape.tolerance()).hugged_tip()),
+                    Some(Hugged::Tip(_))
+                )
             })
         {
             out.leaves.push(tour.expand(&s));

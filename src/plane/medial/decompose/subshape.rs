@@ -210,30 +210,72 @@ impl ChainParts {
     }
 }
 
-/// The dividing disk (an index into `cuts`) of a subshape cut off by that
-/// one disk alone whose boundary has no convex corner and stays within
-/// `slack` (model units) of the disk's circle: the tip of a smooth lobe cut at nearly its osculating
-/// circle. `None` for any other subshape. Stops at the first part that
-/// strays, so it costs little on ordinary subshapes.
-pub fn hugged_disk(shape: &Shape2d, s: &Subshape, cuts: &[Cut], slack: f64) -> Option<usize> {
-    let mut disks = s.pieces.iter().filter_map(|p| match *p {
-        Piece::Aux { disk } => Some(disk),
-        Piece::Chain { .. } => None,
-    });
-    let (Some(disk), None) = (disks.next(), disks.next()) else { return None };
-    let c = cuts[disk];
+/// A subshape whose whole boundary lies within a few tolerances of its
+/// dividing disks' circles, so that the order of footpoints along it is
+/// rounding rather than geometry: every disk there is each of these disks
+/// within the tolerance, and the subshape's axis is its ports.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Hugged {
+    /// The tip of a smooth lobe cut off by one disk (an index into `cuts`)
+    /// at nearly its osculating circle: the disk is the tip's whole axis.
+    Tip(usize),
+    /// A band between two disks (auxiliary pieces `[j0, j1]`, with one
+    /// chain between them on either side) that both hug both chains: near
+    /// the end of a branch at a curvature extremum, where the disks'
+    /// centres move by far more than the boundary strays from them. Its
+    /// axis is the straight edge between the two disks' centres.
+    Band([usize; 2]),
+}
+
+/// How `s` is [`Hugged`] by its dividing disks, its chains staying within
+/// `slack` (model units) of each disk's circle with no convex corner;
+/// `None` for any other subshape. Stops at the first part that strays, so
+/// it costs little on ordinary subshapes.
+pub fn hugged(shape: &Shape2d, s: &Subshape, cuts: &[Cut], slack: f64) -> Option<Hugged> {
+    let aux: Vec<usize> = (0..s.pieces.len()).filter(|&j| matches!(s.pieces[j], Piece::Aux { .. })).collect();
+    let disk = |j: usize| match s.pieces[j] {
+        Piece::Aux { disk } => cuts[disk],
+        Piece::Chain { .. } => unreachable!("aux holds auxiliary pieces only"),
+    };
+    let found = match *aux.as_slice() {
+        [j] => match s.pieces[j] {
+            Piece::Aux { disk } => Hugged::Tip(disk),
+            Piece::Chain { .. } => return None,
+        },
+        // Exactly aux, chain, aux, chain: one side each way, between
+        // disks close enough that the straight edge between their centres
+        // (radius linear) strays from the boundary by at most `slack`: a
+        // boundary point at distance r(t) from the moving centre c(t)
+        // deviates from linear by at most |c1 − c0|² / (8 r) (the
+        // distance is convex along the segment). Farther apart, the disks
+        // hug short chains where the axis runs towards a curvature
+        // extremum, and the base case decides the contacts.
+        [j0, j1]
+            if s.pieces.len() == 4
+                && j1 == j0 + 2
+                && s.chains().count() == 2
+                && (disk(j0).center - disk(j1).center).norm2()
+                    <= 8.0 * disk(j0).radius.min(disk(j1).radius) * slack =>
+        {
+            Hugged::Band([j0, j1])
+        }
+        _ => return None,
+    };
     // A convex corner is a feature however close to the circle: the axis
     // reaches it. A reflex vertex that close is touched by the disk within
     // the tolerance (with a fan of rounding width, or the disk would have
     // cut there).
-    let hugs = s.chains().all(|(from, to)| {
-        let lp = &shape.loops()[from.loop_index];
-        ChainParts::new(shape, from, to).iter().enumerate().all(|(k, (e, lo, hi))| {
-            (k == 0 || shape.joint(from.loop_index, e) != JointKind::Convex)
-                && lp.element(e).circle_deviation(lo, hi, c.center, c.radius) <= slack
+    let hugs = aux.iter().all(|&j| {
+        let c = disk(j);
+        s.chains().all(|(from, to)| {
+            let lp = &shape.loops()[from.loop_index];
+            ChainParts::new(shape, from, to).iter().enumerate().all(|(k, (e, lo, hi))| {
+                (k == 0 || shape.joint(from.loop_index, e) != JointKind::Convex)
+                    && lp.element(e).circle_deviation(lo, hi, c.center, c.radius) <= slack
+            })
         })
     });
-    hugs.then_some(disk)
+    hugs.then_some(found)
 }
 
 impl Subshape {
