@@ -14,6 +14,14 @@ use common::oracle::check_strided;
 use medax::plane::{medial_axis, AxisOptions};
 use medax::shape::{samples, Shape2d, ShapeOptions, Vertex};
 
+/// Distances agree within this many 1e-9 of the diagonal (the default
+/// tolerance τ), where the corpus tests ask for one: at 10^5 arcs and
+/// more, neighbouring arcs differ from a disk by less than τ over a joint
+/// node's contacts, and a joint node's disk was measured to overlap one
+/// of them by up to 1.4τ (Fourier seed 10 at 10^5; the library's own
+/// final check allows 64τ).
+const SLACK: f64 = 4.0;
+
 /// Boundary probes of the completeness check per shape.
 const PROBES: usize = 300;
 
@@ -26,7 +34,7 @@ fn sweep(name: &str, loops: Vec<Vec<Vertex>>) {
     let axis = medial_axis(&shape, &AxisOptions::default())
         .unwrap_or_else(|e| panic!("{name} ({} elements): {e}", shape.element_count()));
     let stride = axis.edges.len().div_ceil(CHECKED);
-    let report = check_strided(&shape, &axis, PROBES, 7, stride);
+    let report = check_strided(&shape, &axis, PROBES, 7, stride, SLACK);
     eprintln!(
         "{name}: {} elements, {} nodes, {} samples checked",
         shape.element_count(),

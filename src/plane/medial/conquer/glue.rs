@@ -3,7 +3,7 @@
 //! graph surgery of `merge.rs`, node kinds from the final degrees and the
 //! graph check.
 
-use std::collections::{HashMap, HashSet};
+use std::collections::HashSet;
 
 use crate::kernel::bisector::ConicKind;
 use crate::kernel::tolerance::Tolerance;
@@ -13,6 +13,7 @@ use crate::plane::medial::base_case::{EventKind, LocalAxis};
 use crate::plane::medial::conquer::check::check_graph;
 use crate::plane::medial::conquer::error::AxisError;
 use crate::plane::medial::conquer::merge::{merge_coinciding_branches, merge_pass_through, polish_branches};
+use crate::plane::medial::conquer::rounding::contract_rounding_cycles;
 use crate::plane::medial::decompose::subshape::Cut;
 use crate::plane::medial::disk::maximal::DiskFinder;
 
@@ -81,7 +82,7 @@ pub fn glue<K: AxisKernel>(
     merge_coinciding_branches(shape, &mut axis, Tolerance::new(tol));
     // After the merges, which settle the edges that subshapes share, and
     // before the node kinds, which follow from the degrees.
-    drop_rounding_cycles(&axis.nodes, &mut axis.edges, Tolerance::new(tol).rounding_cycle());
+    contract_rounding_cycles(&mut axis, Tolerance::new(tol).rounding_cycle());
     classify(&mut axis, tol);
     polish_branches(finder.kernel(), shape, &mut axis);
     check_graph(&axis, shape.loops().len() - 1)?;
@@ -167,85 +168,5 @@ fn classify(axis: &mut MedialAxis2d, tol: f64) {
         } else {
             NodeKind::Joint
         };
-    }
-}
-
-/// Drops the edges that close a cycle of rounding: a cycle whose nodes
-/// all lie within `reach` (model units) of one of them and whose disks
-/// are all larger than four times it (see `Tolerance::rounding_cycle`; a
-/// branch point by a joint, its contacts there snapped onto the joint's
-/// vertex, joined to the joint's node on both sides). Such a cycle can
-/// enclose no hole, and its edges are stretches of rounding: the axis
-/// keeps a tree of them. Only edges shorter than `reach` are looked at,
-/// and each search stops after a few nodes.
-fn drop_rounding_cycles(nodes: &[AxisNode], edges: &mut Vec<AxisEdge>, reach: f64) {
-    const SEARCH: usize = 64;
-    let mut near: HashMap<usize, Vec<usize>> = HashMap::new();
-    edges.retain(|e| {
-        let (u, v) = (e.from, e.to);
-        let (p, big) = (nodes[u].point, |w: usize| nodes[w].radius > 4.0 * reach);
-        if p.dist(nodes[v].point) > reach {
-            return true;
-        }
-        // Is v already reached from u over short edges, near u?
-        let mut seen = vec![u];
-        let mut k = 0;
-        let mut closes = false;
-        while k < seen.len() && seen.len() < SEARCH && !closes {
-            let w = seen[k];
-            k += 1;
-            for &x in near.get(&w).map_or(&[][..], Vec::as_slice) {
-                if x == v {
-                    closes = true;
-                } else if !seen.contains(&x) && nodes[x].point.dist(p) <= reach {
-                    seen.push(x);
-                }
-            }
-        }
-        if closes && big(v) && seen.iter().all(|&w| big(w)) {
-            return false;
-        }
-        near.entry(u).or_default().push(v);
-        near.entry(v).or_default().push(u);
-        true
-    });
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::kernel::Point;
-    use crate::shape::ElementRef;
-
-    fn node(x: f64, y: f64, radius: f64) -> AxisNode {
-        AxisNode { point: Point::new(x, y), radius, kind: NodeKind::Joint }
-    }
-
-    fn edge(from: usize, to: usize) -> AxisEdge {
-        let site = Primitive::Element(ElementRef { loop_index: 0, element: 0 });
-        AxisEdge { from, to, sites: [site, site], params: [(0.0, 0.0); 2], kind: ConicKind::Line, straight: false }
-    }
-
-    #[test]
-    fn a_small_cycle_of_large_disks_loses_one_edge() {
-        let reach = 1e-6;
-        let nodes = [node(0.0, 0.0, 1.0), node(3e-7, 0.0, 1.0), node(0.0, 3e-7, 1.0), node(5.0, 0.0, 1.0)];
-        let mut edges = vec![edge(0, 1), edge(1, 2), edge(2, 0), edge(1, 3)];
-        drop_rounding_cycles(&nodes, &mut edges, reach);
-        assert_eq!(edges, vec![edge(0, 1), edge(1, 2), edge(1, 3)]);
-    }
-
-    #[test]
-    fn a_cycle_that_could_hold_a_hole_is_kept() {
-        let reach = 1e-6;
-        // Disks no larger than the cycle's reach: a hole may lie inside.
-        let small = [node(0.0, 0.0, 2e-6), node(3e-7, 0.0, 2e-6), node(0.0, 3e-7, 2e-6)];
-        let mut edges = vec![edge(0, 1), edge(1, 2), edge(2, 0)];
-        drop_rounding_cycles(&small, &mut edges, reach);
-        assert_eq!(edges.len(), 3);
-        // A wide cycle of large disks.
-        let wide = [node(0.0, 0.0, 1.0), node(3e-6, 0.0, 1.0), node(0.0, 3e-6, 1.0)];
-        drop_rounding_cycles(&wide, &mut edges, reach);
-        assert_eq!(edges.len(), 3);
     }
 }

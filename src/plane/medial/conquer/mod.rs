@@ -20,6 +20,7 @@ pub(crate) mod error;
 pub(crate) mod glue;
 pub(crate) mod merge;
 pub(crate) mod refine;
+pub(crate) mod rounding;
 
 pub use error::AxisError;
 pub use glue::glue;
