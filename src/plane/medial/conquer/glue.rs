@@ -70,11 +70,8 @@ pub fn glue<K: AxisKernel>(
     }
     // Two subshapes that both hold the same stretch of axis (between two
     // disks met twice) give the same edge twice: keep one.
-    let mut seen: std::collections::HashSet<(usize, usize, [Primitive; 2])> = std::collections::HashSet::new();
-    edges.retain(|e| {
-        let (a, b, s) = if e.from <= e.to { (e.from, e.to, e.sites) } else { (e.to, e.from, [e.sites[1], e.sites[0]]) };
-        e.from != e.to && seen.insert((a, b, s))
-    });
+    let mut seen = HashSet::new();
+    edges.retain(|e| e.from != e.to && seen.insert(undirected(e)));
     let mut axis = MedialAxis2d { nodes, edges };
     is_joint.resize(axis.nodes.len(), false);
     merge_pass_through(shape, &mut axis, &is_port, &is_joint);
@@ -117,9 +114,16 @@ fn coinciding_cuts(cuts: &[Cut], t: Tolerance) -> Vec<usize> {
     out
 }
 
-/// Node kinds from the final degrees. An end whose disk is within the
-/// tolerance `tol` of radius 0 is a convex corner (a dividing disk that
-/// small, in a needle's tip, is that corner's node).
+/// An edge's ends and sites in an order that does not depend on its
+/// direction: two edges with the same key are the same stretch of axis.
+pub(crate) fn undirected(e: &AxisEdge) -> (usize, usize, [Primitive; 2]) {
+    if e.from <= e.to {
+        (e.from, e.to, e.sites)
+    } else {
+        (e.to, e.from, [e.sites[1], e.sites[0]])
+    }
+}
+
 /// Which locals to leave out: a band's straight edge stands for whatever
 /// axis joins its two ports, so where another subshape holding the same
 /// stretch (between two disks met twice) has those ports too, its axis is
@@ -156,6 +160,9 @@ fn redundant_bands(locals: &[LocalAxis], same_as: &[usize]) -> Vec<bool> {
         .collect()
 }
 
+/// Node kinds from the final degrees. An end whose disk is within the
+/// tolerance `tol` of radius 0 is a convex corner (a dividing disk that
+/// small, in a needle's tip, is that corner's node).
 fn classify(axis: &mut MedialAxis2d, tol: f64) {
     let deg = axis.degrees();
     for (v, node) in axis.nodes.iter_mut().enumerate() {

@@ -7,6 +7,7 @@ use std::collections::HashMap;
 
 use crate::plane::axis::{AxisEdge, MedialAxis2d};
 use crate::plane::medial::conquer::check::root;
+use crate::plane::medial::conquer::glue::undirected;
 
 /// Nodes a search for a cycle visits at most, so that it costs little.
 const SEARCH: usize = 64;
@@ -90,11 +91,7 @@ pub(crate) fn contract_rounding_cycles(axis: &mut MedialAxis2d, reach: f64) {
         .iter()
         .filter(|e| group[e.from] != group[e.to])
         .map(|e| AxisEdge { from: new_id[group[e.from]], to: new_id[group[e.to]], ..*e })
-        .filter(|e| {
-            let (a, b, s) =
-                if e.from <= e.to { (e.from, e.to, e.sites) } else { (e.to, e.from, [e.sites[1], e.sites[0]]) };
-            seen.insert((a, b, s))
-        })
+        .filter(|e| seen.insert(undirected(e)))
         .collect();
     axis.nodes = kept;
     axis.edges = edges;
