@@ -143,3 +143,13 @@ pub(crate) fn check_corners(shape: &Shape2d, axis: &MedialAxis2d) -> Result<(), 
     });
     Err(AxisError::Numerical(missing.unwrap_or_default(), "a convex corner has no axis"))
 }
+
+/// An edge's ends and sites in an order that does not depend on its
+/// direction: two edges with the same key are the same stretch of axis.
+pub(crate) fn undirected(e: &AxisEdge) -> (usize, usize, [Primitive; 2]) {
+    if e.from <= e.to {
+        (e.from, e.to, e.sites)
+    } else {
+        (e.to, e.from, [e.sites[1], e.sites[0]])
+    }
+}

@@ -8,9 +8,9 @@ use std::collections::HashSet;
 use crate::kernel::bisector::ConicKind;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::AxisKernel;
-use crate::plane::axis::{edge_kind, AxisEdge, AxisNode, MedialAxis2d, NodeKind, Primitive};
+use crate::plane::axis::{edge_kind, AxisEdge, AxisNode, MedialAxis2d, NodeKind};
 use crate::plane::medial::base_case::{EventKind, LocalAxis};
-use crate::plane::medial::conquer::check::check_graph;
+use crate::plane::medial::conquer::check::{check_graph, undirected};
 use crate::plane::medial::conquer::error::AxisError;
 use crate::plane::medial::conquer::merge::{merge_coinciding_branches, merge_pass_through, polish_branches};
 use crate::plane::medial::conquer::rounding::contract_rounding_cycles;
@@ -112,16 +112,6 @@ fn coinciding_cuts(cuts: &[Cut], t: Tolerance) -> Vec<usize> {
         }
     }
     out
-}
-
-/// An edge's ends and sites in an order that does not depend on its
-/// direction: two edges with the same key are the same stretch of axis.
-pub(crate) fn undirected(e: &AxisEdge) -> (usize, usize, [Primitive; 2]) {
-    if e.from <= e.to {
-        (e.from, e.to, e.sites)
-    } else {
-        (e.to, e.from, [e.sites[1], e.sites[0]])
-    }
 }
 
 /// Which locals to leave out: a band's straight edge stands for whatever

@@ -6,8 +6,7 @@
 use std::collections::HashMap;
 
 use crate::plane::axis::{AxisEdge, MedialAxis2d};
-use crate::plane::medial::conquer::check::root;
-use crate::plane::medial::conquer::glue::undirected;
+use crate::plane::medial::conquer::check::{root, undirected};
 
 /// Nodes a search for a cycle visits at most, so that it costs little.
 const SEARCH: usize = 64;
