@@ -31,7 +31,6 @@ pub use build::samples;
 pub use draw::{draw_joints, push_loop_path, shape_document, shape_path};
 pub use index::box_tree::BoxTree;
 pub use index::chain_tree::ChainTree;
-pub(crate) use index::element_index::ElementIndex;
 pub use model::bulge_loop::{winding_contribution, Loop, LoopKind, Vertex};
 pub use model::error::{Degeneracy, ElementRef, ShapeError};
 pub use model::joints::{classify, turning_angle, JointKind};

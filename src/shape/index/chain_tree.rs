@@ -384,6 +384,28 @@ impl ChainTree {
         None
     }
 
+    /// Calls `visit` on every element that may come closer to `p` than
+    /// `d` (a superset: whole leaf runs whose bound is below `d`), in loop
+    /// and element order within a run and runs in tree order. The disk's
+    /// own box would hold every element of a boundary that its circle
+    /// hugs (a nearly circular curve); the runs' capsules do not.
+    pub fn visit_within(&self, p: Point, d: f64, mut visit: impl FnMut(ElementRef)) {
+        let mut stack: Vec<u32> = Vec::with_capacity(64);
+        stack.extend(self.roots.iter().rev().filter(|&&r| self.nodes[r as usize].bound_below(p, d).is_some()));
+        while let Some(id) = stack.pop() {
+            let n = &self.nodes[id as usize];
+            if n.left == u32::MAX {
+                n.elements().for_each(&mut visit);
+            } else {
+                for c in [n.right, n.left] {
+                    if self.nodes[c as usize].bound_below(p, d).is_some() {
+                        stack.push(c);
+                    }
+                }
+            }
+        }
+    }
+
     /// The elements first touched by the disk growing at `g`: every one
     /// whose `key` (the radius of its first contact, `None` for none) is
     /// within `slack` of the smallest, as `(element, key)` in increasing
@@ -525,6 +547,30 @@ mod tests {
                 }
             }
             assert!(hits > 100 && misses > 100, "{hits} {misses}");
+        }
+    }
+
+    #[test]
+    fn visit_within_sees_every_element_a_scan_finds() {
+        let mut rng = crate::util::mix::Mix(5);
+        for (s, t) in fixtures() {
+            let mut seen = vec![false; s.loops()[0].len()];
+            for _ in 0..500 {
+                let (p, scan) = probe(&s, &mut rng);
+                let d = scan * (1.0 + 0.2 * rng.next());
+                seen.fill(false);
+                let mut visits = 0;
+                t.visit_within(p, d, |r| {
+                    seen[r.element] = true;
+                    visits += 1;
+                });
+                assert!(visits < s.loops()[0].len() || d > 0.1, "{p:?} {d}: no pruning");
+                for (i, e) in s.loops()[0].elements().enumerate() {
+                    if e.closest_point(p).0 < d {
+                        assert!(seen[i], "{p:?} {d}: element {i} missed");
+                    }
+                }
+            }
         }
     }
 

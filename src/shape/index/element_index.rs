@@ -36,11 +36,6 @@ impl ElementIndex {
         ElementIndex::with_boxes(boxes, offsets)
     }
 
-    /// The global id of an element.
-    pub fn global(&self, r: ElementRef) -> usize {
-        self.offsets[r.loop_index] + r.element
-    }
-
     /// Loop and element of a global id.
     pub fn locate(&self, id: usize) -> ElementRef {
         let l = match &self.loop_of {

@@ -3,13 +3,10 @@
 //!
 //! The thesis grows the disk against every element in turn (O(n) per disk).
 //! Here the disks tangent at one point are nested, so the maximal one is the
-//! first contact of a growing disk, and a branch-and-bound search over the
-//! element box tree finds it. What it cannot prune are the elements next
-//! to the tangency points (measured: about √n of them on a smooth shape,
-//! docs/PERFORMANCE.md), which is why the divide step will scan small
-//! subshapes directly. Any maximal disk of a subshape is a maximal disk of
-//! the whole shape (Observation 4), so the divide step can ask this one
-//! index for every subshape.
+//! first contact of a growing disk, and a branch-and-bound search over a
+//! hierarchy of boundary runs ([`ChainTree`]) finds it. Any maximal disk of
+//! a subshape is a maximal disk of the whole shape (Observation 4), so the
+//! divide step can ask this one index for every subshape.
 
 use crate::kernel::direction::{Alignment, Heading};
 use crate::kernel::fan::BoundSide;
@@ -17,7 +14,7 @@ use crate::kernel::growing_disk::GrowingDisk;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Orientation;
 use crate::kernel::{AxisKernel, Contact, Disk, FilteredKernel, Point};
-use crate::shape::{ChainTree, Element, ElementIndex, ElementRef, JointKind, LoopKind, Shape2d};
+use crate::shape::{ChainTree, Element, ElementRef, JointKind, LoopKind, Shape2d};
 
 /// Where a maximal disk touches the boundary.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -50,20 +47,19 @@ pub struct MaxDisk {
     pub leaf_arc: bool,
 }
 
-/// Computes maximal disks of one shape; the element index is built once
-/// (O(n log n)) and shared by every query. `Sync`: query from many threads.
+/// Computes maximal disks of one shape; the run hierarchy is built once
+/// (O(n)) and shared by every query. `Sync`: query from many threads.
 /// Every construction and contact decision goes through the kernel `K`,
 /// which the algorithms built on the finder reach through
 /// [`DiskFinder::kernel`].
 pub struct DiskFinder<'s, K: AxisKernel = FilteredKernel> {
     shape: &'s Shape2d,
     kernel: K,
-    index: ElementIndex,
-    /// Runs of consecutive elements, for nearest-element queries (whose
-    /// points are mostly centres of maximal disks, where element boxes
-    /// prune badly: on smooth boundaries the circle runs tangent to them,
-    /// and among dense spikes a point lies in the boxes of a fiftieth of
-    /// all elements).
+    /// Runs of consecutive elements, for every query (whose points are
+    /// mostly centres of maximal disks, where element boxes prune badly:
+    /// on smooth boundaries the circle runs tangent to them, and among
+    /// dense spikes a point lies in the boxes of a fiftieth of all
+    /// elements).
     chains: ChainTree,
 }
 
@@ -79,7 +75,7 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
     /// Indexes the elements of `shape`; `kernel` answers every geometric
     /// question of the finder and of the algorithms that use it.
     pub fn with_kernel(shape: &'s Shape2d, kernel: K) -> DiskFinder<'s, K> {
-        DiskFinder { shape, kernel, index: ElementIndex::new(shape.loops()), chains: ChainTree::new(shape.loops()) }
+        DiskFinder { shape, kernel, chains: ChainTree::new(shape.loops()) }
     }
 
     /// The kernel answering this finder's questions.
@@ -118,27 +114,19 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
     /// nearest to `c`, merged where elements meet; in loop and element order.
     pub fn touching(&self, c: Point, r: f64) -> Vec<Footpoint> {
         let tol = self.contact_tolerance();
-        let mut near: Vec<(usize, Point)> = Vec::new();
-        let reach = Point::new(r + tol, r + tol);
-        self.index.tree.visit_overlapping::<()>(&crate::kernel::BBox { min: c - reach, max: c + reach }, |gid| {
-            if self.index.tree.item_box(gid).distance_to(c) <= r + tol {
-                let (er, e) = self.element(gid);
-                let q = e.closest_point(c).1;
-                if self.kernel.point_contact(Disk::new(c, r), q, tol) != Contact::Apart
-                    && self.faces(er, &e, q, c, r, tol)
-                {
-                    near.push((gid, q));
-                }
+        let mut near: Vec<(ElementRef, Point)> = Vec::new();
+        // Twice the tolerance: the runs' bounds are rounded, the contact
+        // test below decides.
+        self.chains.visit_within(c, r + 2.0 * tol, |er| {
+            let e = self.shape.loops()[er.loop_index].element(er.element);
+            let q = e.closest_point(c).1;
+            if self.kernel.point_contact(Disk::new(c, r), q, tol) != Contact::Apart && self.faces(er, &e, q, c, r, tol)
+            {
+                near.push((er, q));
             }
-            std::ops::ControlFlow::Continue(())
         });
-        near.sort_by_key(|&(gid, _)| gid);
-        let mut out: Vec<Footpoint> = Vec::new();
-        for (gid, q) in near {
-            if out.iter().all(|f| f.point.dist(q) > tol) {
-                out.push(Footpoint { element: self.element(gid).0, point: q });
-            }
-        }
+        near.sort_by_key(|&(er, _)| er);
+        let out = apart(near.into_iter().map(|(element, point)| Footpoint { element, point }), tol);
         self.drop_clamped_ends(out, c)
     }
 
@@ -153,6 +141,7 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
     /// the vertex too would leave the neighbour's last piece (where the
     /// axis changes from the neighbour to the vertex) in a sliver of its
     /// own.
+    /// `feet` are in element order, one per element at most.
     fn drop_clamped_ends(&self, feet: Vec<Footpoint>, c: Point) -> Vec<Footpoint> {
         let tol = self.contact_tolerance();
         let keep: Vec<bool> = feet
@@ -174,9 +163,9 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
                 };
                 // The neighbour touches too, at a point of its own inside.
                 let v = lp.vertices()[vertex].p;
-                let neighbour_touches = feet.iter().any(|g| {
-                    g.element.loop_index == f.element.loop_index && g.element.element == other && g.point.dist(v) > tol
-                });
+                let at_other = ElementRef { loop_index: f.element.loop_index, element: other };
+                let neighbour_touches =
+                    feet.binary_search_by(|g| g.element.cmp(&at_other)).is_ok_and(|i| feet[i].point.dist(v) > tol);
                 if self.shape.joint(f.element.loop_index, vertex) == JointKind::Reflex {
                     let d = c - v;
                     let outside = if other == vertex {
@@ -229,9 +218,8 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
         }
     }
 
-    fn element(&self, gid: usize) -> (ElementRef, Element) {
-        let r = self.index.locate(gid);
-        (r, self.shape.loops()[r.loop_index].element(r.element))
+    fn element(&self, r: ElementRef) -> Element {
+        self.shape.loops()[r.loop_index].element(r.element)
     }
 
     /// The point at arc-length fraction `s` ∈ [0, 1] of element `at` and the
@@ -267,7 +255,6 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
 
     fn grow(&self, at: ElementRef, s: f64, p: Point, n: Point) -> MaxDisk {
         let g = GrowingDisk { p, n };
-        let own = self.index.global(at);
         let lp = &self.shape.loops()[at.loop_index];
         // The vertex the disk grows from, with its joint and its other element.
         let vertex = match s {
@@ -280,7 +267,7 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
             let footpoints = vec![Footpoint { element: at, point: p }, Footpoint { element: other, point: p }];
             return MaxDisk { center: p, radius: 0.0, footpoints, leaf_arc: false };
         }
-        let shares_p = vertex.map(|(joint, other)| (self.index.global(other), joint == JointKind::Smooth));
+        let shares_p = vertex.map(|(joint, other)| (other, joint == JointKind::Smooth));
         let tol = self.shape.tolerance();
         // Contacts at radii this small are the disk's own tangency point
         // seen through a neighbour sharing it; a genuine contact is at least
@@ -295,10 +282,10 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
         let along_normal = self.kernel.direction_match(own_element.left_normal_at(p), n, Tolerance::same_direction())
             == Alignment::Along;
         // The first contact of each element, as a key for the tree search.
-        let contact = |gid: usize| {
-            let (_, e) = self.element(gid);
+        let contact = |er: ElementRef| {
+            let e = self.element(er);
             let k = &self.kernel;
-            if gid == own {
+            if er == at {
                 if along_normal {
                     own_contact(k, &g, &e)
                 } else {
@@ -306,7 +293,7 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
                 }
             } else {
                 match shares_p {
-                    Some((other, smooth)) if other == gid => neighbour_touch(k, &g, &e, t_min, tol, smooth),
+                    Some((other, smooth)) if other == er => neighbour_touch(k, &g, &e, t_min, tol, smooth),
                     _ => first_touch(k, &g, &e, t_min),
                 }
             }
@@ -314,12 +301,7 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
         // Footpoints: every element whose own first contact comes within the
         // tolerance of the disk's. (Elements merely near the circle, like
         // the boundary running on from a smooth footpoint, are not contacts.)
-        let near: Vec<(usize, f64)> = self
-            .chains
-            .first_contacts(&g, tol, |r| contact(self.index.global(r)))
-            .into_iter()
-            .map(|(r, t)| (self.index.global(r), t))
-            .collect();
+        let near = self.chains.first_contacts(&g, tol, contact);
         let Some(&(_, radius)) = near.first() else {
             // Cannot happen inside a bounded shape; an infinite radius keeps
             // the answer honest rather than inventing one.
@@ -328,24 +310,16 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
         };
         let center = g.center(radius);
         // The arc grown from is among the first contacts: the disk is its circle.
-        let leaf_arc = along_normal && near.iter().any(|&(gid, _)| gid == own);
-        let mut found = vec![(own, Footpoint { element: at, point: p })];
-        for &(gid, _) in &near {
-            if gid == own && along_normal {
-                continue;
-            }
-            let (er, e) = self.element(gid);
+        let leaf_arc = along_normal && near.iter().any(|&(er, _)| er == at);
+        let first = Footpoint { element: at, point: p };
+        let others = near.iter().filter(|&&(er, _)| !(er == at && along_normal)).filter_map(|&(er, _)| {
+            let e = self.element(er);
             let q = e.closest_point(center).1;
-            if !self.faces(er, &e, q, center, radius, tol) {
-                continue;
-            }
-            if found.iter().all(|(_, f)| f.point.dist(q) > tol) {
-                found.push((gid, Footpoint { element: er, point: q }));
-            }
-        }
-        found[1..].sort_by_key(|(gid, _)| *gid);
-        let first = found[0].1;
-        let mut footpoints = self.drop_clamped_ends(found.into_iter().map(|f| f.1).collect(), center);
+            self.faces(er, &e, q, center, radius, tol).then_some(Footpoint { element: er, point: q })
+        });
+        let mut found = apart(std::iter::once(first).chain(others), tol);
+        found[1..].sort_by_key(|f| f.element);
+        let mut footpoints = self.drop_clamped_ends(found, center);
         // The point grown from stays first, whatever the filter said.
         if footpoints.first() != Some(&first) {
             footpoints.retain(|f| *f != first);
@@ -440,4 +414,60 @@ fn seen_from_inside(k: &impl AxisKernel, e: &Element, q: Point, c: Point, r: f64
         || q.dist(e.start()) <= tol
         || q.dist(e.end()) <= tol
         || k.heading(c - q, e.left_normal_at(q)) == Heading::Forward
+}
+
+/// The footpoints of `feet` (in order) that lie farther than `tol` from
+/// every footpoint kept before them. A disk that hugs a long stretch of
+/// boundary within the tolerance touches thousands of elements (a nearly
+/// circular curve of 3·10^5 arcs), so kept points are found through a
+/// grid of cells `tol` wide, not by comparing with each.
+fn apart(feet: impl Iterator<Item = Footpoint>, tol: f64) -> Vec<Footpoint> {
+    let mut out: Vec<Footpoint> = Vec::new();
+    let mut grid: std::collections::HashMap<(i64, i64), Vec<usize>> = std::collections::HashMap::new();
+    let cell = |p: Point| ((p.x / tol).floor() as i64, (p.y / tol).floor() as i64);
+    for f in feet {
+        let (i, j) = cell(f.point);
+        // Saturating: a huge coordinate over a tiny tolerance shares the
+        // extreme cell, where the points are compared one by one.
+        let taken = (i.saturating_sub(1)..=i.saturating_add(1))
+            .flat_map(|a| (j.saturating_sub(1)..=j.saturating_add(1)).map(move |b| (a, b)))
+            .filter_map(|k| grid.get(&k))
+            .flatten()
+            .any(|&k| out[k].point.dist(f.point) <= tol);
+        if !taken {
+            grid.entry((i, j)).or_default().push(out.len());
+            out.push(f);
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn apart_keeps_what_comparing_with_every_kept_point_keeps() {
+        let mut rng = crate::util::mix::Mix(3);
+        let tol = 1e-3;
+        for round in 0..50 {
+            // Clusters a few tolerances wide, so that many points fall
+            // within the tolerance of an earlier one and many do not.
+            let feet: Vec<Footpoint> = (0..200)
+                .map(|i| {
+                    let base = Point::new((i % 7) as f64, (round % 3) as f64 * 1e6);
+                    let p = base + Point::new(rng.next() - 0.5, rng.next() - 0.5) * (8.0 * tol);
+                    Footpoint { element: ElementRef { loop_index: 0, element: i }, point: p }
+                })
+                .collect();
+            let mut want: Vec<Footpoint> = Vec::new();
+            for f in &feet {
+                if want.iter().all(|k| k.point.dist(f.point) > tol) {
+                    want.push(*f);
+                }
+            }
+            assert!(want.len() > 7 && want.len() < 200);
+            assert_eq!(apart(feet.into_iter(), tol), want);
+        }
+    }
 }
