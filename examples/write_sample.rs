@@ -20,7 +20,11 @@ fn main() {
         "comb" => samples::slanted_comb(n / 4, (n / 8) as f64),
         "holes" => samples::random_holes(n, 1),
         "fourier" => samples::fourier_biarcs(n, seed),
-        "circle" => samples::fourier_curve(n, seed, 1e-3),
+        "circle" => samples::fourier_curve(
+            n,
+            seed,
+            std::env::var("MEDAX_SPREAD").ok().and_then(|s| s.parse().ok()).unwrap_or(1e-3),
+        ),
         other => panic!("unknown kind {other}"),
     };
     let shape = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).expect("samples are valid");

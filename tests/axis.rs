@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::oracle::{axis_distance, check, Report};
+use common::oracle::{axis_distance, check, check_strided, Report};
 use common::{bisected_radius, boundary_distance, circle, poly, rect, shape, star, v};
 use medax::kernel::Point;
 use medax::plane::{medial_axis, AxisOptions, MedialAxis2d, NodeKind};
@@ -97,6 +97,20 @@ fn smooth_biarc_flowers() {
         let s = shape(samples::flower_arcs(n));
         let a = axis_of(&s);
         check(&s, &a, 100, n as u64);
+    }
+}
+
+#[test]
+fn nearly_circular_curves() {
+    // Within 10^-4 of a circle: the axis is a tree a few 10^-4 across, and
+    // every disk there hugs dozens of arcs within the tolerance (all three
+    // seeds broke down before a hugged stretch became one footpoint).
+    // Distances within 4τ, as in the slow tier: a conic edge between two
+    // arcs passes a third that hugs the same disks, measured 1.2τ nearer.
+    for seed in [1, 2, 3] {
+        let s = shape(samples::fourier_curve(5_000, seed, 1e-4));
+        let a = axis_of(&s);
+        check_strided(&s, &a, 200, seed, a.edges.len().div_ceil(300), 4.0);
     }
 }
 

@@ -38,3 +38,28 @@ fn a_joint_at_a_fan_end_is_not_its_own_branch_point() {
         }
     }
 }
+
+#[test]
+fn leaves_near_the_centre_of_a_nearly_circular_curve() {
+    // A curve within 10^-3 of a circle, 3·10^5 arcs: every disk near the
+    // centre hugs about a hundred arcs within the tolerance. Leaf 2010:
+    // joint disks with footpoints smeared over those arcs, ordered by
+    // rounding (one footpoint per hugged stretch now); 7294: a branch
+    // point 2τ from its pocket's own joint disk, once rejected as that
+    // disk (now merged into it); 15949 and 16020: several dividing disks
+    // at the end of a branch, every chain within 10^-11 of every disk
+    // (their axis is the path through the ports).
+    let shape = Shape2d::from_bulge_loops(samples::fourier_curve(300_000, 3, 1e-3), &ShapeOptions::default()).unwrap();
+    let finder = DiskFinder::new(&shape);
+    let tol = 1e-9 * shape.bbox().diagonal();
+    for (leaf, least_nodes) in [(2010, 20), (7294, 10), (15949, 3), (16020, 8)] {
+        let file = format!("circle3e5_seed3_leaf_{leaf}.txt");
+        let local = replay(&shape, &finder, &file);
+        assert_eq!(local.edges.len() + 1, local.nodes.len(), "{file}: not a tree");
+        assert!(local.nodes.len() >= least_nodes, "{file}: {} nodes", local.nodes.len());
+        for n in &local.nodes {
+            let d = boundary_distance(&shape, n.center);
+            assert!((d - n.radius).abs() <= tol, "{file}: node {n:?} is {d} from the boundary");
+        }
+    }
+}

@@ -159,6 +159,14 @@ impl Tolerance {
         4.0 * self.touch
     }
 
+    /// How far past a disk's circle (model units) elements are gathered as
+    /// candidate footpoints, 2τ: the bounds of the boundary runs are
+    /// rounded, and the contact test (within τ) decides.
+    #[inline]
+    pub fn footpoint_search(self) -> f64 {
+        2.0 * self.touch
+    }
+
     /// How far (model units) a site may stray from a disk's circle and
     /// still hug it (one footpoint smeared by rounding into two), 4τ.
     #[inline]

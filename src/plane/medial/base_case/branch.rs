@@ -56,8 +56,18 @@ impl<K: AxisKernel> Builder<'_, K> {
         let Pocket { event: d, start: a, span, first_site: s1, last_site: s2 } = *pocket;
         // The pocket's own disk touches its two sites at the pocket's ends
         // (and a third site there, at a vertex): it would merge back into
-        // event `d` and the pocket be walked again, for ever.
-        let is_own = |c: Point, r: f64| self.same_disk(&self.events[d], c, r);
+        // event `d` and the pocket be walked again, for ever. But a branch
+        // point within rounding of `d` (where the boundary nearly follows
+        // the disks' circles, events lie a few tolerances apart) touches a
+        // third site inside the pocket that `d` does not: merged into `d`,
+        // it splits the pocket.
+        let is_own = |c: Point, r: f64, t: SiteRef| {
+            let own = &self.events[d];
+            self.same_disk(own, c, r) && {
+                let w = self.fraction(t, self.param(t, c, r));
+                own.feet.iter().any(|k| k.site == t) || w <= 0.0 || w >= 1.0
+            }
+        };
         // Candidates that touch the three sites within their ranges, in
         // the pocket, by where they touch `s1`; the first empty one wins.
         // (Emptiness costs O(n) each, so it is tested last and in order.)
@@ -79,7 +89,7 @@ impl<K: AxisKernel> Builder<'_, K> {
             for Disk { center: c, radius: r } in
                 self.k().tritangent_disks([self.sites[s1].site, self.sites[s2].site, self.sites[t].site])
             {
-                if r <= self.tol.touch() || !c.is_finite() || is_own(c, r) {
+                if r <= self.tol.touch() || !c.is_finite() || is_own(c, r, t) {
                     continue;
                 }
                 // Near-degenerate triples (many disks nearly alike, as at

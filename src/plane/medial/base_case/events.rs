@@ -280,8 +280,8 @@ impl<K: AxisKernel> Builder<'_, K> {
                     let Site::Point(q) = b.site else { continue };
                     let nrm = Point::new(b.u0.cos(), b.u0.sin());
                     let (c, r) = self.grow(q, nrm, &[i, j]).ok_or(BaseCaseError::NoDisk(q))?.parts();
-                    let (mut feet, whole) = self.touching(c, r);
-                    feet.push(key);
+                    let (feet, whole) = self.touching(c, r);
+                    let feet = self.one_per_hug(c, r, feet, &[key], &whole);
                     self.add_event(c, r, EventKind::Joint, feet, whole);
                     continue;
                 }
@@ -298,8 +298,8 @@ impl<K: AxisKernel> Builder<'_, K> {
                 nrm = (elements.element(ea.element).end_tangent().perp() + nrm).unit();
             }
             let (c, r) = self.grow(p, nrm, &[i, j]).ok_or(BaseCaseError::NoDisk(p))?.parts();
-            let (mut feet, whole) = self.touching(c, r);
-            feet.push(key);
+            let (feet, whole) = self.touching(c, r);
+            let feet = self.one_per_hug(c, r, feet, &[key], &whole);
             self.add_event(c, r, EventKind::Joint, feet, whole);
         }
         // Arcs whose own circle is the maximal disk at their middle.
@@ -310,6 +310,7 @@ impl<K: AxisKernel> Builder<'_, K> {
             if let Some(Disk { radius: t, .. }) = self.grow(p, nrm, &[i]) {
                 if (t - r).abs() <= self.tol.touch() && !self.leaves_subshape(o, r) {
                     let (feet, whole) = self.touching(o, r);
+                    let feet = self.one_per_hug(o, r, feet, &[], &whole);
                     self.add_event(o, r, EventKind::Leaf, feet, whole);
                 }
             }

@@ -32,7 +32,7 @@ pub(super) fn tip_axis(cuts: &[Cut], disk: usize) -> LocalAxis {
 pub(super) fn band_axis(shape: &Shape2d, s: &Subshape, cuts: &[Cut], h: Hugged) -> Option<LocalAxis> {
     let port = |disk: usize| port(cuts, disk);
     match h {
-        Hugged::Tip(_) => None,
+        Hugged::Tip(_) | Hugged::Cluster => None,
         Hugged::Band([j0, j1]) => {
             let disk = |j: usize| match s.pieces[j] {
                 Piece::Aux { disk } => Some(disk),
@@ -46,26 +46,73 @@ pub(super) fn band_axis(shape: &Shape2d, s: &Subshape, cuts: &[Cut], h: Hugged) 
             // Chain `a` runs from port 0 to port 1 with the inside on its
             // left, so walking the axis the same way it is on the right.
             let (a, b) = (chain(j0 + 1)?, chain(j1 + 1)?);
-            let (c0, c1) = (cuts[d0], cuts[d1]);
             let (left, right) = (middle_element(shape, b)?, middle_element(shape, a)?);
-            let params = |p: Primitive| {
-                let site = p.site(shape);
-                let u0 = footpoint_param(&site, c0.center, c0.radius);
-                let u1 = footpoint_param(&site, c1.center, c1.radius);
-                (u0, near(&site, u1, u0))
-            };
             Some(LocalAxis {
                 nodes: vec![port(d0), port(d1)],
-                edges: vec![LocalEdge {
-                    from: 0,
-                    to: 1,
-                    sites: [left, right],
-                    params: [params(left), params(right)],
-                    straight: true,
-                }],
+                edges: vec![straight_edge(shape, cuts, (0, d0), (1, d1), [left, right])],
             })
         }
     }
+}
+
+/// The axis of a [`Hugged::Cluster`] subshape: its ports joined in order
+/// of radius by straight edges (near the end of a branch the radius falls
+/// towards the end, and every disk between two of these hugs every chain
+/// as both do). Each edge names the middle elements of the chains before
+/// (longer than a point) before and after its first port's auxiliary arc
+/// as its sides. `None` when a
+/// disk cuts the subshape twice (its two ports are glued elsewhere, never
+/// joined here) or a chain cannot be named.
+pub(super) fn cluster_axis(shape: &Shape2d, s: &Subshape, cuts: &[Cut]) -> Option<LocalAxis> {
+    let m = s.pieces.len();
+    // The first chain longer than a point from piece `j` on, stepping by
+    // `step` (1 forward, m − 1 back).
+    let chain = |j: usize, step: usize| {
+        (0..m).map(|k| (j + k * step) % m).find_map(|i| match s.pieces[i] {
+            Piece::Chain { from, to } if from != to => Some((from, to)),
+            _ => None,
+        })
+    };
+    // (disk, piece index) of every auxiliary arc, by radius.
+    let mut ports: Vec<(usize, usize)> = (0..m)
+        .filter_map(|j| match s.pieces[j] {
+            Piece::Aux { disk } => Some((disk, j)),
+            Piece::Chain { .. } => None,
+        })
+        .collect();
+    ports.sort_by(|a, b| cuts[a.0].radius.total_cmp(&cuts[b.0].radius).then(a.0.cmp(&b.0)));
+    // One disk's arcs share a radius, so they lie next to each other.
+    if ports.windows(2).any(|w| w[0].0 == w[1].0) {
+        return None;
+    }
+    let mut edges = Vec::with_capacity(ports.len() - 1);
+    for (k, w) in ports.windows(2).enumerate() {
+        let ((d0, j0), (d1, _)) = (w[0], w[1]);
+        let left = middle_element(shape, chain(j0 + m - 1, m - 1)?)?;
+        let right = middle_element(shape, chain(j0 + 1, 1)?)?;
+        edges.push(straight_edge(shape, cuts, (k, d0), (k + 1, d1), [left, right]));
+    }
+    Some(LocalAxis { nodes: ports.iter().map(|&(d, _)| port(cuts, d)).collect(), edges })
+}
+
+/// The straight edge from node `from.0` (dividing disk `from.1`) to node
+/// `to.0` (disk `to.1`) with primitives `sites` on its left and right,
+/// their footpoint parameters taken from the two disks.
+fn straight_edge(
+    shape: &Shape2d,
+    cuts: &[Cut],
+    from: (usize, usize),
+    to: (usize, usize),
+    sites: [Primitive; 2],
+) -> LocalEdge {
+    let (c0, c1) = (cuts[from.1], cuts[to.1]);
+    let params = |p: Primitive| {
+        let site = p.site(shape);
+        let u0 = footpoint_param(&site, c0.center, c0.radius);
+        let u1 = footpoint_param(&site, c1.center, c1.radius);
+        (u0, near(&site, u1, u0))
+    };
+    LocalEdge { from: from.0, to: to.0, sites, params: sites.map(params), straight: true }
 }
 
 /// The element in the middle of the chain `from` → `to`: every element of

@@ -38,6 +38,7 @@ use crate::shape::Shape2d;
 mod branch;
 mod cycle;
 mod events;
+mod hug_runs;
 mod hugged;
 mod port;
 mod prepare;
@@ -45,7 +46,7 @@ mod sites;
 mod walk;
 
 use events::Event;
-use hugged::{band_axis, tip_axis};
+use hugged::{band_axis, cluster_axis, tip_axis};
 use port::Port;
 use sites::{Key, LocalSite};
 
@@ -153,6 +154,7 @@ pub fn solve<K: AxisKernel>(
     // tolerance of the true one.
     walk_leaf(shape, s, cuts, tol, finder).or_else(|e| match hug {
         Some(band @ Hugged::Band(_)) => band_axis(shape, s, cuts, band).ok_or(e),
+        Some(Hugged::Cluster) => cluster_axis(shape, s, cuts).ok_or(e),
         _ => Err(e),
     })
 }

@@ -167,7 +167,7 @@ impl<K: AxisKernel> Builder<'_, K> {
             // snapped position they shared is not a footpoint.
             let (mut feet, whole) = self.touching(c, r);
             feet.retain(|k| found.snapped.iter().zip(&found.contacts).all(|(sn, ct)| k != sn || sn == ct));
-            feet.extend(found.contacts);
+            let feet = self.one_per_hug(c, r, feet, &found.contacts, &whole);
             let id = self.add_event(c, r, EventKind::Branch, feet, whole);
             work.push((d, j));
             work.extend((0..self.events[id].feet.len()).map(|k| (id, k)));

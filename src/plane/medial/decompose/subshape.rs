@@ -225,6 +225,13 @@ pub enum Hugged {
     /// centres move by far more than the boundary strays from them. Its
     /// axis is the straight edge between the two disks' centres.
     Band([usize; 2]),
+    /// Three or more disks, or two that do not make a band, all pairwise
+    /// as close as a band's and all hugging every chain: where the
+    /// boundary follows one circle within rounding over a stretch that
+    /// several dividing disks cut (the end of a branch at the curvature
+    /// maximum of a nearly circular curve). Its axis is the path through
+    /// the disks' centres in order of radius.
+    Cluster,
 }
 
 /// How `s` is [`Hugged`] by its dividing disks, its chains staying within
@@ -258,6 +265,15 @@ pub fn hugged(shape: &Shape2d, s: &Subshape, cuts: &[Cut], slack: f64) -> Option
                     <= 8.0 * disk(j0).radius.min(disk(j1).radius) * slack =>
         {
             Hugged::Band([j0, j1])
+        }
+        [_, _, ..]
+            if aux.iter().enumerate().all(|(x, &i)| {
+                aux[x + 1..].iter().all(|&j| {
+                    (disk(i).center - disk(j).center).norm2() <= 8.0 * disk(i).radius.min(disk(j).radius) * slack
+                })
+            }) =>
+        {
+            Hugged::Cluster
         }
         _ => return None,
     };

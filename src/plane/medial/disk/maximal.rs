@@ -115,9 +115,8 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
     pub fn touching(&self, c: Point, r: f64) -> Vec<Footpoint> {
         let tol = self.contact_tolerance();
         let mut near: Vec<(ElementRef, Point)> = Vec::new();
-        // Twice the tolerance: the runs' bounds are rounded, the contact
-        // test below decides.
-        self.chains.visit_within(c, r + 2.0 * tol, |er| {
+        let reach = Tolerance::new(tol).footpoint_search();
+        self.chains.visit_within(c, r + reach, |er| {
             let e = self.shape.loops()[er.loop_index].element(er.element);
             let q = e.closest_point(c).1;
             if self.kernel.point_contact(Disk::new(c, r), q, tol) != Contact::Apart && self.faces(er, &e, q, c, r, tol)

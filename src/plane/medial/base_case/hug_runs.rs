@@ -1,0 +1,87 @@
+//! One footpoint per stretch of boundary that an event's circle hugs.
+//!
+//! A circle of nearly the boundary's own curvature stays within the
+//! tolerance of it for a length of about √(2τ/Δκ) (Δκ the difference of
+//! curvatures): on a nearly circular curve of 3·10^5 arcs that is a
+//! hundred elements, each touching "within the tolerance" at its own
+//! closest point. Kept as separate footpoints, their order against the
+//! footpoints of the neighbouring events (whose circles hug the same
+//! stretch) is rounding, and the walk finds no consistent pocket. The true
+//! contact is the tangency point, where the boundary comes closest to the
+//! centre; the distance grows with the square of the length from it, so
+//! that point is found to about √(2ε/Δκ) (ε the rounding of a distance),
+//! far below an element's length.
+
+use super::sites::SiteRef;
+use super::{Builder, Key};
+use crate::kernel::{AxisKernel, Point};
+
+impl<K: AxisKernel> Builder<'_, K> {
+    /// `feet` and `own` (contacts placed exactly: a joint's own foot, a
+    /// branch point's three) in cycle order, where each run of consecutive
+    /// footpoints with the boundary between them hugging the circle
+    /// (`c`, `r`) ([`hugs`](Self::hugs)) is one footpoint: its `own` ones
+    /// if it has any, else the one closest to `c`. Sites in `whole` (an
+    /// arc on the circle itself) are never merged across.
+    pub(super) fn one_per_hug(&self, c: Point, r: f64, feet: Vec<Key>, own: &[Key], whole: &[SiteRef]) -> Vec<Key> {
+        let mut all: Vec<(Key, bool)> =
+            feet.into_iter().map(|k| (k, false)).chain(own.iter().map(|&k| (k, true))).collect();
+        let m = all.len();
+        if m < 2 {
+            return all.into_iter().map(|(k, _)| k).collect();
+        }
+        all.sort_by(|a, b| self.pos(a.0).total_cmp(&self.pos(b.0)));
+        // `joined[i]`: footpoints i and i + 1 (cyclically) are one contact.
+        let joined: Vec<bool> =
+            (0..m).map(|i| self.hugged_between(all[i].0, all[(i + 1) % m].0, c, r, whole)).collect();
+        let Some(brk) = joined.iter().position(|&j| !j) else {
+            // The circle hugs the whole cycle: nothing to choose by.
+            return all.into_iter().map(|(k, _)| k).collect();
+        };
+        let depth = |k: Key| c.dist(self.point_of(k.site, self.u_at(k.site, k.w)));
+        let mut out = Vec::with_capacity(m);
+        let mut run: Vec<(Key, bool)> = Vec::new();
+        for s in 1..=m {
+            let i = (brk + s) % m;
+            run.push(all[i]);
+            if joined[i] {
+                continue;
+            }
+            if run.iter().any(|&(_, o)| o) {
+                out.extend(run.iter().filter(|&&(_, o)| o).map(|&(k, _)| k));
+            } else if let Some(&(k, _)) = run.iter().min_by(|a, b| depth(a.0).total_cmp(&depth(b.0))) {
+                out.push(k);
+            }
+            run.clear();
+        }
+        out
+    }
+
+    /// True when the boundary from key `a` forward to key `b` runs through
+    /// joined sites only, none in `whole`, and hugs the circle (`c`, `r`).
+    fn hugged_between(&self, a: Key, b: Key, c: Point, r: f64, whole: &[SiteRef]) -> bool {
+        let n = self.n();
+        let mut i = a.site;
+        let mut lo = a.w;
+        // At most once round the cycle.
+        for _ in 0..=n {
+            if whole.contains(&i) {
+                return false;
+            }
+            let last = i == b.site && (i != a.site || lo <= b.w);
+            let hi = if last { b.w } else { 1.0 };
+            if hi > lo && !self.hugs(i, lo, hi, c, r) {
+                return false;
+            }
+            if last {
+                return true;
+            }
+            if !self.sites[i].joined_next {
+                return false;
+            }
+            i = i.next(n);
+            lo = 0.0;
+        }
+        false
+    }
+}
