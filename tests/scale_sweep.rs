@@ -61,11 +61,9 @@ fn nearly_circular_curves() {
     for seed in 1..=2 {
         sweep(&format!("near circle 1e5 seed {seed}"), samples::fourier_curve(100_000, seed, 1e-3));
     }
+    // Broke down until 49a2761: every disk near the centre hugs about a
+    // hundred arcs within the tolerance (see base_case/hug_runs.rs).
     sweep("near circle 3e5", samples::fourier_curve(300_000, 3, 1e-3));
-    // The 3·10^5 case took over 16 min on 2 shared cores at d3ed8b9;
-    // at 10^6 arcs (seed 4) the divide step does not finish in minutes:
-    // the disks near the centre touch nearly every arc within the
-    // tolerance, and each maximal-disk search visits them all (issue 17).
 }
 
 #[test]

@@ -50,7 +50,7 @@ pub mod internals {
     pub mod leaf_text {
         pub use crate::plane::medial::decompose::leaf_text::{read_leaf, write_leaf, LeafTextError};
     }
-    pub use crate::plane::medial::conquer::{glue, solve_leaves};
+    pub use crate::plane::medial::conquer::{final_check, glue, solve_leaves};
     pub use crate::plane::medial::decompose::augment::augment;
     pub use crate::plane::medial::decompose::divide::{
         decompose, decompose_in, decompose_with, divide_into, leaf_size, Decomposition,

@@ -103,7 +103,7 @@ pub fn medial_axis_with<K: AxisKernel>(
         let solved = solve_leaves(&finder, &mut d, seed);
         match solved
             .and_then(|locals| glue(&finder, &d.cuts, &locals))
-            .and_then(|axis| check_corners(shape, &axis).and_then(|_| check_disks(&finder, &axis)).map(|_| axis))
+            .and_then(|axis| final_check(&finder, &axis).map(|_| axis))
         {
             Ok(axis) => return Ok(axis),
             Err(e) => {
@@ -112,6 +112,14 @@ pub fn medial_axis_with<K: AxisKernel>(
         }
     }
     Err(first_error.unwrap_or(AxisError::Numerical(Point::default(), "no attempt")))
+}
+
+/// The checks an assembled axis passes before [`medial_axis`] returns it:
+/// one corner node at each convex vertex, then every node's and edge
+/// sample's disk touching its primitives and holding no boundary (within
+/// [`Tolerance::final_check`](crate::kernel::tolerance::Tolerance::final_check)).
+pub fn final_check<K: AxisKernel>(finder: &DiskFinder<K>, axis: &MedialAxis2d) -> Result<(), AxisError> {
+    check_corners(finder.shape(), axis).and_then(|_| check_disks(finder, axis))
 }
 
 /// Decompositions tried before a numerical breakdown is reported.

@@ -340,10 +340,12 @@ fn divide_along<K: AxisKernel>(
         // A range holds many pieces: never a lobe's tip.
         if parts + points_in(shape, &s, tour) <= leaf_parts
             || s.plain().is_some_and(|p| {
-                matches!(
-                    hugged(shape, &p, &out.cuts, Tolerance::new(shape.tolerance()).hugged_tip()),
-                    Some(Hugged::Tip(_))
-                )
+                // Only one dividing disk makes a tip: count before measuring.
+                p.pieces.iter().filter(|q| matches!(q, Piece::Aux { .. })).count() == 1
+                    && matches!(
+                        hugged(shape, &p, &out.cuts, Tolerance::new(shape.tolerance()).hugged_tip()),
+                        Some(Hugged::Tip(_))
+                    )
             })
         {
             out.leaves.push(tour.expand(&s));

@@ -1,0 +1,67 @@
+//! Where the medial axis spends its time, phase by phase, as
+//! `medial_axis` runs them (first decomposition only):
+//! `cargo run --release --features internals --example axis_phases -- KIND N [THREADS]`
+//! with KIND one of `fourier`, `circle`, `star`, `flower`, `holes` (a
+//! `write_sample` family; `MEDAX_SEED` picks the random one) or a shape
+//! file with N = 0. Prints one line per phase: seconds and share.
+use medax::plane::internals::{augment, decompose_in, final_check, glue, solve_leaves};
+use medax::plane::{AxisOptions, DiskFinder};
+use medax::shape::{samples, Shape2d, ShapeOptions};
+use std::time::Instant;
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let kind = args.get(1).map_or("fourier", String::as_str);
+    let n: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(100_000);
+    let threads: usize = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(0);
+    let seed: u64 = std::env::var("MEDAX_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(1);
+    let mut phases: Vec<(&str, f64)> = Vec::new();
+    let mut clock = Instant::now();
+    let mut lap = |name: &'static str, phases: &mut Vec<(&str, f64)>| {
+        phases.push((name, clock.elapsed().as_secs_f64()));
+        clock = Instant::now();
+    };
+    let loops = match kind {
+        "fourier" => samples::fourier_biarcs(n, seed),
+        "circle" => samples::fourier_curve(n, seed, 1e-3),
+        "star" => samples::star_polygon(n, seed),
+        "flower" => samples::flower_arcs(n),
+        "holes" => samples::random_holes(n, seed),
+        path => {
+            let text = std::fs::read_to_string(path).expect("readable shape file");
+            let shape = medax::plane::shape_or_sites(&text).expect("a valid shape file");
+            shape.loops().iter().map(|l| l.vertices().to_vec()).collect()
+        }
+    };
+    lap("generate", &mut phases);
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().expect("thread pool");
+    pool.install(|| {
+        let shape = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).expect("valid shape");
+        lap("validate", &mut phases);
+        let finder = DiskFinder::new(&shape);
+        lap("index (run hierarchy)", &mut phases);
+        let aug = augment(&finder).expect("augmenting disks");
+        lap("augment (holes)", &mut phases);
+        let opts = AxisOptions::default();
+        let mut d = decompose_in(&finder, &aug, opts.seed, opts.leaf_parts.max(3));
+        lap("divide", &mut phases);
+        let locals = solve_leaves(&finder, &mut d, opts.seed).expect("leaves solved");
+        lap("base cases", &mut phases);
+        let axis = glue(&finder, &d.cuts, &locals).expect("glued");
+        lap("glue (conquer)", &mut phases);
+        final_check(&finder, &axis).expect("checked");
+        lap("final check", &mut phases);
+        println!(
+            "{kind} {}: {} elements, {} leaves, {} nodes",
+            n,
+            shape.element_count(),
+            locals.len(),
+            axis.nodes.len()
+        );
+    });
+    let total: f64 = phases.iter().skip(1).map(|p| p.1).sum();
+    for (name, t) in &phases {
+        println!("{name:>24} {t:8.3} s {:5.1} %", 100.0 * t / total);
+    }
+    println!("{:>24} {total:8.3} s (without generate)", "total");
+}
