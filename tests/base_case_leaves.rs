@@ -63,3 +63,19 @@ fn leaves_near_the_centre_of_a_nearly_circular_curve() {
         }
     }
 }
+
+#[test]
+fn a_band_whose_other_side_is_only_a_joint() {
+    // Near the centre of a nearly circular curve of 10^6 arcs: two dividing
+    // disks 5·10^-6 apart that both hug an arc, one on either end of it;
+    // the band between them is a sliver of that arc's ends, one side only
+    // the joint after it (a chain of no part). The walk finds no
+    // consistent order there, and the fallback (the straight edge
+    // between the ports) could not name that side's element.
+    let shape =
+        Shape2d::from_bulge_loops(samples::fourier_curve(1_000_000, 4, 1e-3), &ShapeOptions::default()).unwrap();
+    let finder = DiskFinder::new(&shape);
+    let local = replay(&shape, &finder, "circle1e6_seed4_leaf_43826.txt");
+    assert_eq!((local.nodes.len(), local.edges.len()), (2, 1));
+    assert!(local.edges[0].straight);
+}

@@ -117,10 +117,12 @@ fn straight_edge(
 
 /// The element in the middle of the chain `from` → `to`: every element of
 /// a hugged chain touches every disk of the band, and the middle one lies
-/// wholly inside the chain wherever the chain holds three or more.
+/// wholly inside the chain wherever the chain holds three or more. A chain
+/// that is only the joint between two elements (from the end of one to
+/// the start of the next: no part) names the element after the joint.
 fn middle_element(shape: &Shape2d, (from, to): (BoundaryPos, BoundaryPos)) -> Option<Primitive> {
     let parts = ChainParts::new(shape, from, to);
-    let (e, _, _) = parts.iter().nth(parts.len() / 2)?;
+    let e = parts.iter().nth(parts.len() / 2).map_or(to.element, |(e, _, _)| e);
     Some(Primitive::Element(ElementRef { loop_index: from.loop_index, element: e }))
 }
 
