@@ -80,15 +80,18 @@ fn circle_and_stadium_and_rounded_rectangle() {
 
 #[test]
 fn random_star_polygons() {
-    let mut total = Report { samples: 0, probes: 0 };
+    let mut total = Report { samples: 0, probes: 0, nested: (0, 0.0) };
     for seed in 0..30 {
         let s = shape(vec![star(8 + (seed as usize * 7) % 60, seed)]);
         let a = axis_of(&s);
         let r = check(&s, &a, 60, seed);
         total.samples += r.samples;
         total.probes += r.probes;
+        total.nested.0 += r.nested.0;
     }
-    assert!(total.samples > 1000 && total.probes == 1800);
+    // Polygons have no stretch of boundary hugging a disk: every probe's
+    // maximal disk is centred on the axis.
+    assert!(total.samples > 1000 && total.probes == 1800 && total.nested.0 == 0);
 }
 
 #[test]
@@ -111,6 +114,24 @@ fn nearly_circular_curves() {
         let s = shape(samples::fourier_curve(5_000, seed, 1e-4));
         let a = axis_of(&s);
         check_strided(&s, &a, 200, seed, a.edges.len().div_ceil(300), 4.0);
+    }
+}
+
+#[test]
+fn the_slow_tier_families_at_small_sizes() {
+    // Each family of tests/scale_sweep.rs at a few thousand elements, so
+    // that a generator or axis change that breaks one shows up here first.
+    let families: Vec<(&str, Vec<Vec<Vertex>>)> = vec![
+        ("fourier with holes", samples::fourier_with_holes(6_000, 12, 5)),
+        ("text", samples::text_plate(4_000, 2)),
+        ("strip 1e-3", samples::nearly_straight_strip(4_000, 3, 1e-3)),
+        ("strip 0", samples::nearly_straight_strip(2_000, 3, 0.0)),
+    ];
+    for (name, loops) in families {
+        let s = shape(loops);
+        let a = axis_of(&s);
+        let r = check_strided(&s, &a, 200, 11, a.edges.len().div_ceil(400), 4.0);
+        assert!(r.samples > 300, "{name}: {} samples", r.samples);
     }
 }
 

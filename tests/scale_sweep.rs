@@ -36,10 +36,12 @@ fn sweep(name: &str, loops: Vec<Vec<Vertex>>) {
     let stride = axis.edges.len().div_ceil(CHECKED);
     let report = check_strided(&shape, &axis, PROBES, 7, stride, SLACK);
     eprintln!(
-        "{name}: {} elements, {} nodes, {} samples checked",
+        "{name}: {} elements, {} nodes, {} samples checked, {} of {PROBES} probes nested (up to {:.1e} off the axis)",
         shape.element_count(),
         axis.nodes.len(),
-        report.samples
+        report.samples,
+        report.nested.0,
+        report.nested.1
     );
 }
 
@@ -90,6 +92,38 @@ fn plates_of_random_holes() {
 
 #[test]
 #[ignore = "slow tier: scripts/test-all runs it in release"]
+fn fourier_curves_with_holes_of_their_kind() {
+    // The second family issue 17 found breaking down: 40 holes, 5·10^5
+    // arcs in all.
+    for (n, seed) in [(100_000, 1), (300_000, 2), (500_000, 3)] {
+        sweep(&format!("fourier {n} with 40 holes seed {seed}"), samples::fourier_with_holes(n, 40, seed));
+    }
+    sweep("fourier 3e5 with 400 holes", samples::fourier_with_holes(300_000, 400, 4));
+}
+
+#[test]
+#[ignore = "slow tier: scripts/test-all runs it in release"]
+fn dense_text_like_outlines() {
+    for (n, seed) in [(100_000, 1), (300_000, 2)] {
+        sweep(&format!("text {n} seed {seed}"), samples::text_plate(n, seed));
+    }
+}
+
+#[test]
+#[ignore = "slow tier: scripts/test-all runs it in release"]
+fn nearly_straight_long_bands() {
+    // Sides within 10^-3, 10^-5 and exactly 0 of straight lines: arcs of
+    // radius 100 and more, then 10^4 and more, then plain segments.
+    for (n, spread) in [(100_000, 1e-3), (300_000, 1e-3), (300_000, 1e-5), (100_000, 0.0)] {
+        sweep(&format!("strip {n} spread {spread}"), samples::nearly_straight_strip(n, 1, spread));
+    }
+}
+
+#[test]
+#[ignore = "slow tier: scripts/test-all runs it in release"]
 fn a_million_elements() {
     sweep("fourier 1e6 seed 1", samples::fourier_biarcs(1_000_000, 1));
+    sweep("fourier 1e6 with 40 holes", samples::fourier_with_holes(1_000_000, 40, 1));
+    sweep("text 1e6", samples::text_plate(1_000_000, 1));
+    sweep("strip 1e6", samples::nearly_straight_strip(1_000_000, 1, 1e-3));
 }

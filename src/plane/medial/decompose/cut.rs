@@ -7,7 +7,7 @@
 use crate::kernel::fan::{BoundSide, Fan, FanEnd};
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Point;
-use crate::plane::medial::decompose::subshape::{chain_holds, BoundaryPos, Cut, Piece, Slot, Subshape};
+use crate::plane::medial::decompose::subshape::{chain_holds, BoundaryPos, CutIds, Piece, Slot, Subshape};
 use crate::shape::{JointKind, Shape2d};
 
 impl Subshape {
@@ -16,13 +16,13 @@ impl Subshape {
     /// footpoint, each starting at a footpoint, in boundary order. `cuts`
     /// are the disks the auxiliary arcs refer to. `None` when a footpoint
     /// lies on none of the chains.
-    pub fn split(
+    pub fn split<C: CutIds + ?Sized>(
         &self,
         shape: &Shape2d,
         disk: usize,
         feet: &[BoundaryPos],
         center: Point,
-        cuts: &[Cut],
+        cuts: &C,
     ) -> Option<Vec<Subshape>> {
         let out = split_slots(&self.pieces, shape, disk, feet, center, cuts)?;
         Some(out.into_iter().map(|pieces| Subshape { pieces }).collect())
@@ -50,12 +50,12 @@ fn locate<P: Slot>(pieces: &[P], shape: &Shape2d, p: BoundaryPos) -> Option<(usi
 /// are tried. A vertex can end one chain and start another of the same
 /// subshape when an augmenting disk of a hole touches there (thesis
 /// 2.3.1). `None` when no chain holds the footpoint.
-fn locate_foot<P: Slot>(
+fn locate_foot<P: Slot, C: CutIds + ?Sized>(
     pieces: &[P],
     shape: &Shape2d,
     p: BoundaryPos,
     center: Point,
-    cuts: &[Cut],
+    cuts: &C,
 ) -> Option<(usize, (usize, f64), BoundaryPos)> {
     let Some(w) = p.vertex(shape).filter(|&w| shape.joint(p.loop_index, w) == JointKind::Reflex) else {
         return locate(pieces, shape, p).map(|(j, k)| (j, k, p));
@@ -139,13 +139,13 @@ fn every_location<P: Slot>(pieces: &[P], shape: &Shape2d, p: BoundaryPos) -> Vec
 
 /// [`Subshape::split`] on any piece list: stand-ins between footpoints are
 /// copied like pieces.
-pub(crate) fn split_slots<P: Slot>(
+pub(crate) fn split_slots<P: Slot, C: CutIds + ?Sized>(
     pieces: &[P],
     shape: &Shape2d,
     disk: usize,
     feet: &[BoundaryPos],
     center: Point,
-    cuts: &[Cut],
+    cuts: &C,
 ) -> Option<Vec<Vec<P>>> {
     let mut at: Vec<(usize, (usize, f64), BoundaryPos)> =
         feet.iter().map(|&f| locate_foot(pieces, shape, f, center, cuts)).collect::<Option<_>>()?;
@@ -180,6 +180,7 @@ pub(crate) fn split_slots<P: Slot>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::plane::medial::decompose::subshape::Cut;
     use crate::plane::DiskFinder;
     use crate::shape::{samples, Element, ElementRef, Loop, ShapeOptions, Vertex};
     use rand::{Rng, SeedableRng};
@@ -317,7 +318,7 @@ mod tests {
         // Disk 2 touches the end from straight below: the fan's start, in
         // the part between the way back and disk 1.
         for end in [at(1, 0, 0.0), at(1, 1, 1.0)] {
-            let parts = s.split(&shape, 2, &[end, at(0, 0, 0.5)], cuts[2].center, &cuts).unwrap();
+            let parts = s.split(&shape, 2, &[end, at(0, 0, 0.5)], cuts[2].center, &cuts[..]).unwrap();
             let single = Piece::Chain { from: at(1, 1, 1.0), to: at(1, 1, 1.0) };
             assert!(parts.iter().any(|p| p.pieces.contains(&single)), "{end:?}: {parts:?}");
             let whole = Piece::Chain { from: at(1, 0, 0.0), to: at(1, 1, 1.0) };

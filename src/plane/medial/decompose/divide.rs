@@ -7,9 +7,12 @@
 //! resulting subshape has fewer original parts than the one cut (a dividing
 //! disk, Definition 2.2.1); otherwise another point is tried. Subshapes
 //! with at most three original parts are leaves. Every random choice is
-//! derived from the seed and the subshape itself, so the result depends on
-//! nothing else (subshapes are cut one after another for now; they are
-//! independent, which is what parallel cutting will use).
+//! derived from the seed and the subshape itself, and every disk id from
+//! the subshape's path of cuts, so the result depends on nothing else:
+//! large subtrees are divided in parallel and assembled in the order of
+//! the sequential depth-first loop. Large subshapes are cut by the largest
+//! of a few random maximal disks, which keeps the tree balanced where
+//! random disks would peel a few parts at a time off (spiky polygons).
 //!
 //! A redundant cut (two footpoints, one subshape as large as before) is
 //! replaced by `maxdisk*` ([`crate::plane::medial::disk::slide`]); a leaf arc's own
@@ -21,24 +24,25 @@
 //! polygons).
 
 use crate::kernel::tolerance::Tolerance;
-use crate::kernel::Disk;
-use crate::kernel::{AxisKernel, Contact, Point};
+use crate::kernel::AxisKernel;
 use crate::plane::medial::decompose::augment::Augmentation;
 #[cfg(any(test, feature = "internals"))]
 use crate::plane::medial::decompose::augment::{augment, AugmentError};
-use crate::plane::medial::decompose::fan_cut::fan_cut;
-use crate::plane::medial::decompose::parts::{
-    foot_at_convex_corner, original_parts, parts_in, points_in, position, reflex_point,
+pub use crate::plane::medial::decompose::cut_rules::leaf_size;
+use crate::plane::medial::decompose::cut_rules::{
+    candidate, cluster_cut, cut_with, pick_point, reflex_points, seed_of, ATTEMPTS,
 };
-use crate::plane::medial::decompose::subshape::{hugged, BoundaryPos, ChainParts, Cut, Hugged, Piece, Subshape};
-use crate::plane::medial::decompose::tour::{Ranged, Span, Tour};
+use crate::plane::medial::decompose::fan_cut::fan_cut;
+use crate::plane::medial::decompose::parts::{parts_in, points_in};
+use crate::plane::medial::decompose::subshape::{hugged, BoundaryPos, Cut, CutIds, Hugged, Piece, Subshape};
+use crate::plane::medial::decompose::tour::{Ranged, Tour};
 use crate::plane::medial::disk::maximal::{DiskFinder, MaxDisk};
-use crate::plane::medial::disk::slide::slide_to_third;
-use crate::shape::{ElementRef, JointKind, Shape2d};
+use crate::shape::ElementRef;
+#[cfg(any(test, feature = "internals"))]
+use crate::shape::Shape2d;
 use crate::util::mix::Mix;
-
-/// Attempts with different random points before a subshape counts as stuck.
-const ATTEMPTS: u32 = 12;
+use rayon::prelude::*;
+use std::ops::Index;
 
 /// A subshape is a leaf once it has at most this many original parts.
 #[cfg(any(test, feature = "internals"))]
@@ -60,214 +64,11 @@ pub struct Decomposition {
 /// the augmented cycle: every rule of the divide step sees them whole.
 const EXPAND_BELOW: usize = 64;
 
-/// A seed for a subshape: its first piece and the caller's seed, so that
-/// the choice does not depend on the order in which subshapes are cut.
-fn seed_of(seed: u64, s: &Ranged) -> u64 {
-    let mut h = seed ^ 0x5851_f42d_4c95_7f2d;
-    for p in s.spans.iter().take(2) {
-        let (a, b) = match *p {
-            Span::Piece(Piece::Chain { from, to }) => ((from.element as u64) << 32 ^ from.t.to_bits(), to.t.to_bits()),
-            Span::Piece(Piece::Aux { disk }) => (disk as u64, 0),
-            Span::Range { from, to } => ((from as u64) << 32 ^ 0x746f_7572, to as u64),
-        };
-        h = (h ^ a).wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ b;
-    }
-    h
-}
-
-/// A random point on a random original part of `s`: the position and the
-/// part's fraction range, at a reflex end of the part when it has one.
-fn pick_point(shape: &Shape2d, s: &Ranged, tour: &Tour, rng: &mut Mix) -> Option<(BoundaryPos, (f64, f64))> {
-    // The chains in piece order, those inside ranges of the augmented
-    // cycle counted in place.
-    let count = |p: &Span| match *p {
-        Span::Piece(Piece::Chain { from, to }) => usize::from(from != to),
-        Span::Range { from, to } => tour.chains(from, to),
-        Span::Piece(Piece::Aux { .. }) => 0,
-    };
-    let total: usize = s.spans.iter().map(count).sum();
-    if total == 0 {
-        return None;
-    }
-    let mut k = rng.below(total);
-    let (from, to) = s.spans.iter().find_map(|p| {
-        let c = count(p);
-        if k >= c {
-            k -= c;
-            return None;
-        }
-        match *p {
-            Span::Piece(Piece::Chain { from, to }) => Some((from, to)),
-            Span::Range { from, .. } => tour.chain(from, k),
-            Span::Piece(Piece::Aux { .. }) => None,
-        }
-    })?;
-    let parts = ChainParts::new(shape, from, to);
-    if parts.is_empty() {
-        return None;
-    }
-    let (element, lo, hi) = parts.get(rng.below(parts.len()));
-    if hi <= lo {
-        return None;
-    }
-    let l = from.loop_index;
-    let n = shape.loops()[l].len();
-    let reflex_start = lo == 0.0 && shape.joint(l, element) == JointKind::Reflex;
-    let reflex_end = hi == 1.0 && shape.joint(l, (element + 1) % n) == JointKind::Reflex;
-    let t = if reflex_start && (!reflex_end || rng.below(2) == 0) {
-        0.0
-    } else if reflex_end {
-        1.0
-    } else {
-        lo + (hi - lo) * (0.1 + 0.8 * rng.next())
-    };
-    Some((BoundaryPos { loop_index: l, element, t }, (lo, hi)))
-}
-
-/// The subshapes of `s` cut at `feet` by a disk that will get id `disk`,
-/// if every one of them has fewer original parts than `s` (`parts`).
-fn dividing(
-    shape: &Shape2d,
-    s: &Ranged,
-    parts: usize,
-    (disk, center, cuts, tour): (usize, Point, &[Cut], &Tour),
-    feet: &[BoundaryPos],
-) -> Option<Vec<Ranged>> {
-    let children = tour.cut(shape, s, disk, feet, center, cuts)?;
-    children.iter().all(|c| parts_in(shape, c, tour) < parts).then_some(children)
-}
-
-/// Cuts `s` with the maximal disk `d` grown at `pos` (fraction range
-/// `lo..hi` of its part), or with what replaces it: the leaf arc's circle,
-/// or `maxdisk*` after a redundant cut. `None` when the disk does not divide.
-fn cut_with<K: AxisKernel>(
-    finder: &DiskFinder<K>,
-    s: &Ranged,
-    parts: usize,
-    (cuts, tour): (&[Cut], &Tour),
-    d: &MaxDisk,
-    pos: BoundaryPos,
-    (lo, hi): (f64, f64),
-) -> Option<(Cut, Vec<Ranged>)> {
-    let shape = finder.shape();
-    let tol = finder.contact_tolerance();
-    let disk = cuts.len();
-    if d.leaf_arc {
-        // The disk is the arc's own circle (Observation 5): cut the whole
-        // arc off as a leaf, with every other part the circle touches. A
-        // partial arc means its circle has cut here already.
-        if lo > 0.0 || hi < 1.0 {
-            return None;
-        }
-        let ends = [BoundaryPos { t: 0.0, ..pos }, BoundaryPos { t: 1.0, ..pos }];
-        let (pa, pb) = (ends[0].point(shape), ends[1].point(shape));
-        let own = d.footpoints[0].element;
-        let others = finder
-            .touching(d.center, d.radius)
-            .into_iter()
-            .filter(|f| f.element != own && f.point.dist(pa) > tol && f.point.dist(pb) > tol);
-        let feet: Vec<BoundaryPos> = ends.into_iter().chain(others.map(|f| position(shape, &f))).collect();
-        let children = dividing(shape, s, parts, (disk, d.center, cuts, tour), &feet)?;
-        return Some((Cut { center: d.center, radius: d.radius }, children));
-    }
-    if d.radius == 0.0 || d.footpoints.len() < 2 {
-        return None;
-    }
-    let feet: Vec<BoundaryPos> =
-        d.footpoints.iter().enumerate().map(|(i, f)| if i == 0 { pos } else { position(shape, f) }).collect();
-    if foot_at_convex_corner(shape, &feet, d.radius) {
-        return None;
-    }
-    let children = tour.cut(shape, s, disk, &feet, d.center, cuts)?;
-    let counts: Vec<usize> = children.iter().map(|c| parts_in(shape, c, tour)).collect();
-    if counts.iter().all(|&c| c < parts) {
-        return Some((Cut { center: d.center, radius: d.radius }, children));
-    }
-    if d.footpoints.len() != 2 {
-        return None;
-    }
-    // A redundant cut: slide the disk away from where the two parts meet
-    // (on the side of the smaller subshape) to a disk touching a third part
-    // or where a contact reaches its element's end (maxdisk*).
-    let small = (0..children.len()).min_by_key(|&i| counts[i]).unwrap_or(0);
-    let ends: Vec<Point> =
-        tour.expand(&children[small]).chains().flat_map(|(a, b)| [a.point(shape), b.point(shape)]).collect();
-    let junction = ends.iter().fold(Point::default(), |acc, &p| acc + p) * (1.0 / ends.len().max(1) as f64);
-    let Disk { center: c, radius: r } =
-        slide_to_third(finder, &d.footpoints[0], &d.footpoints[1], Disk::new(d.center, d.radius), junction)?;
-    // Only an empty disk that touches the boundary can cut.
-    let touch = finder.touching(c, r);
-    let empty = finder.nearest(c).is_some_and(|(near, _)| {
-        let e = shape.loops()[near.loop_index].element(near.element);
-        finder.kernel().element_contact(Disk::new(c, r), &e, tol) == Contact::Touching
-    });
-    if touch.len() < 2 || r <= tol || !empty {
-        return None;
-    }
-    let feet: Vec<BoundaryPos> = touch.iter().map(|f| position(shape, f)).collect();
-    if foot_at_convex_corner(shape, &feet, r) {
-        return None;
-    }
-    let children = dividing(shape, s, parts, (disk, c, cuts, tour), &feet)?;
-    Some((Cut { center: c, radius: r }, children))
-}
-
 /// Cuts the shape (its augmented domain when it has holes, thesis 2.3.1)
 /// down to leaves; `seed` fixes every random choice.
 #[cfg(any(test, feature = "internals"))]
 pub fn decompose(shape: &Shape2d, seed: u64) -> Result<Decomposition, AugmentError> {
     decompose_with(shape, seed, LEAF_PARTS)
-}
-
-/// The subshape's single-point chains that are reflex vertices (the
-/// thesis's zero-length arcs between auxiliary arcs), in piece order.
-fn reflex_points(shape: &Shape2d, s: &Subshape) -> Vec<BoundaryPos> {
-    s.pieces.iter().filter_map(|&p| reflex_point(shape, p)).collect()
-}
-
-/// A cluster of reflex vertices separated by auxiliary arcs only (thesis
-/// 2.2.2.2): fix two neighbouring zero-length arcs and find a third so
-/// that the circle through the three holds no other point of the cluster
-/// and no boundary at all. That disk touches three (or more) parts and
-/// cuts the cluster into smaller pieces. `None` when no such circle is
-/// found (the subshape then stays whole for the base-case solver).
-fn cluster_cut<K: AxisKernel>(
-    finder: &DiskFinder<K>,
-    s: &Subshape,
-    points: &[BoundaryPos],
-    cuts: &[Cut],
-) -> Option<(Cut, Vec<Subshape>)> {
-    let disk = cuts.len();
-    let shape = finder.shape();
-    if points.len() < 3 {
-        return None;
-    }
-    let tol = finder.contact_tolerance();
-    let kernel = finder.kernel();
-    let pts: Vec<Point> = points.iter().map(|p| p.point(shape)).collect();
-    for i in 0..pts.len() {
-        let (p, q) = (pts[i], pts[(i + 1) % pts.len()]);
-        for (k, &r) in pts.iter().enumerate() {
-            if k == i || k == (i + 1) % pts.len() {
-                continue;
-            }
-            let Some(Disk { center: c, radius: rad }) = kernel.circumcircle(p, q, r) else { continue };
-            if pts.iter().any(|&x| kernel.point_contact(Disk::new(c, rad), x, tol) == Contact::Overlapping) {
-                continue;
-            }
-            if finder.intruder(c, rad, tol).is_some() {
-                continue;
-            }
-            let feet: Vec<BoundaryPos> = finder.touching(c, rad).iter().map(|f| position(shape, f)).collect();
-            let Some(children) = s.split(shape, disk, &feet, c, cuts) else { continue };
-            // Progress: every piece has fewer parts and zero-length arcs.
-            let whole = leaf_size(shape, s);
-            if children.len() >= 2 && children.iter().all(|ch| leaf_size(shape, ch) < whole) {
-                return Some((Cut { center: c, radius: rad }, children));
-            }
-        }
-    }
-    None
 }
 
 /// [`decompose`] with leaves of up to `leaf_parts` original parts.
@@ -311,8 +112,75 @@ pub fn divide_into<K: AxisKernel>(
     divide_along(finder, out, roots.into_iter().map(Ranged::from).collect(), seed, leaf_parts, &Tour::default());
 }
 
+/// The dividing disks a subshape of the divide step sees: those cut before
+/// this divide step started (`base`, ids `0..base.len()`) and the
+/// subshape's ancestors, the one at depth k with id `base.len() + k`. An
+/// id is so fixed by the subshape's path alone, whichever thread divides
+/// it; the assembly renumbers them in the sequential order.
+struct PathCuts<'a> {
+    base: &'a [Cut],
+    path: &'a [Cut],
+}
+
+impl Index<usize> for PathCuts<'_> {
+    type Output = Cut;
+
+    fn index(&self, id: usize) -> &Cut {
+        match id.checked_sub(self.base.len()) {
+            None => &self.base[id],
+            Some(k) => &self.path[k],
+        }
+    }
+}
+
+impl CutIds for PathCuts<'_> {
+    fn count(&self) -> usize {
+        self.base.len() + self.path.len()
+    }
+}
+
+/// What dividing one subshape gave, in the order the sequential
+/// depth-first divide step meets it.
+enum Step {
+    /// A dividing disk cut at this depth (its children are one deeper).
+    Cut(Cut, usize),
+    /// A leaf, its disks written as [`PathCuts`] ids.
+    Leaf(Subshape),
+    /// A subshape no disk divided, likewise.
+    Stuck(Subshape),
+}
+
+/// What every path of one divide step shares.
+struct Divide<'a, K: AxisKernel> {
+    finder: &'a DiskFinder<'a, K>,
+    base: &'a [Cut],
+    tour: &'a Tour,
+    seed: u64,
+    leaf_parts: usize,
+    /// A cut whose children include two of at least this many parts hands
+    /// them to parallel tasks.
+    fork_parts: usize,
+}
+
+/// Subshapes of at least this many original parts are cut by the largest
+/// of [`CANDIDATES`] random maximal disks (`Divide::balanced_cut`).
+const BALANCE_PARTS: usize = 2048;
+
+/// Random maximal disks a large subshape chooses its cut among.
+const CANDIDATES: usize = 8;
+
+/// A cut whose children include two of at least this many original parts
+/// divides them in parallel (below, the work of one subtree is a few
+/// milliseconds: less than a task costs to be worth it).
+const FORK_MIN_PARTS: usize = 512;
+
 /// [`divide_into`] for subshapes that may hold ranges of the augmented
 /// cycle `tour`; leaves and stuck subshapes come out expanded.
+///
+/// Subtrees of large subshapes are divided in parallel; every random
+/// choice depends only on the subshape (`seed_of`) and every id only on
+/// its path ([`PathCuts`]), so the steps, assembled in the order of the
+/// sequential depth-first loop, are the same on any number of threads.
 fn divide_along<K: AxisKernel>(
     finder: &DiskFinder<K>,
     out: &mut Decomposition,
@@ -322,10 +190,76 @@ fn divide_along<K: AxisKernel>(
     tour: &Tour,
 ) {
     let shape = finder.shape();
-    let mut todo = roots;
-    // Depth-first with an explicit stack: cut ids depend only on the order
-    // of cuts, which is fixed by the seed.
-    while let Some(mut s) = todo.pop() {
+    // Forks stop where subtrees hold 1/64 of the shape: at most 64 nested
+    // forks even when every cut peels a sliver off a large subshape.
+    let fork_parts = FORK_MIN_PARTS.max(shape.element_count() / 64);
+    let steps = {
+        let ctx = Divide { finder, base: &out.cuts, tour, seed, leaf_parts, fork_parts };
+        ctx.divide(roots, Vec::new())
+    };
+    let base = out.cuts.len();
+    // The global id of the ancestor at each depth of the current path.
+    let mut ids: Vec<usize> = Vec::new();
+    let renumber = |mut s: Subshape, ids: &[usize]| {
+        for p in s.pieces.iter_mut() {
+            if let Piece::Aux { disk } = p {
+                if *disk >= base {
+                    *disk = ids[*disk - base];
+                }
+            }
+        }
+        s
+    };
+    for step in steps {
+        match step {
+            Step::Cut(cut, depth) => {
+                ids.truncate(depth);
+                ids.push(out.cuts.len());
+                out.cuts.push(cut);
+            }
+            Step::Leaf(s) => out.leaves.push(renumber(s, &ids)),
+            Step::Stuck(s) => out.stuck.push(renumber(s, &ids)),
+        }
+    }
+}
+
+impl<K: AxisKernel> Divide<'_, K> {
+    /// Divides `roots` (the last first, as a stack pops them), each below
+    /// the ancestors `path`, into the steps of the sequential order.
+    fn divide(&self, roots: Vec<Ranged>, mut path: Vec<Cut>) -> Vec<Step> {
+        let shape = self.finder.shape();
+        let depth0 = path.len();
+        let mut todo: Vec<(Ranged, usize)> = roots.into_iter().map(|r| (r, depth0)).collect();
+        let mut steps = Vec::new();
+        // Depth-first with an explicit stack: a subshape's ancestors are
+        // then exactly `path[..depth]` when it is popped.
+        while let Some((s, depth)) = todo.pop() {
+            path.truncate(depth);
+            let Some((cut, children)) = self.divide_one(s, &path, &mut steps) else { continue };
+            steps.push(Step::Cut(cut, depth));
+            path.push(cut);
+            let big = children.len() >= 2
+                && children.iter().filter(|c| parts_in(shape, c, self.tour) >= self.fork_parts).take(2).count() == 2;
+            if big {
+                // The children's subtrees in the order the stack would
+                // pop them: the last child first.
+                let subtrees: Vec<Vec<Step>> =
+                    children.into_par_iter().map(|c| self.divide(vec![c], path.clone())).collect();
+                steps.extend(subtrees.into_iter().rev().flatten());
+            } else {
+                todo.extend(children.into_iter().map(|c| (c, depth + 1)));
+            }
+        }
+        steps
+    }
+
+    /// One subshape whose ancestors are `path`: a leaf or a stuck subshape
+    /// goes to `steps`; a dividing disk and the children it cuts are
+    /// returned.
+    fn divide_one(&self, mut s: Ranged, path: &[Cut], steps: &mut Vec<Step>) -> Option<(Cut, Vec<Ranged>)> {
+        let (finder, tour, leaf_parts) = (self.finder, self.tour, self.leaf_parts);
+        let shape = finder.shape();
+        let cuts = PathCuts { base: self.base, path };
         if s.has_ranges() && tour.expanded_len(&s) <= EXPAND_BELOW {
             s = tour.expand(&s).into();
         }
@@ -343,52 +277,64 @@ fn divide_along<K: AxisKernel>(
                 // Only one dividing disk makes a tip: count before measuring.
                 p.pieces.iter().filter(|q| matches!(q, Piece::Aux { .. })).count() == 1
                     && matches!(
-                        hugged(shape, &p, &out.cuts, Tolerance::new(shape.tolerance()).hugged_tip()),
+                        hugged(shape, &p, &cuts, Tolerance::new(shape.tolerance()).hugged_tip()),
                         Some(Hugged::Tip(_))
                     )
             })
         {
-            out.leaves.push(tour.expand(&s));
-            continue;
+            steps.push(Step::Leaf(tour.expand(&s)));
+            return None;
         }
-        let mut rng = Mix(seed_of(seed, &s));
+        let mut rng = Mix(seed_of(self.seed, &s, &cuts));
         let points = points_in(shape, &s, tour);
-        let found = (0..ATTEMPTS + ((parts + points) as u32) / 4)
-            .find_map(|_| {
-                // Reflex single points are picked as often as parts: a
-                // cloud of point sites has almost nothing else.
-                if rng.below(parts + points) < points {
-                    return fan_cut(finder, &s, parts + points, (&out.cuts, tour), &mut rng);
-                }
-                let (pos, range) = pick_point(shape, &s, tour, &mut rng)?;
-                let at = ElementRef { loop_index: pos.loop_index, element: pos.element };
-                let d = finder.max_disk(at, pos.t);
-                cut_with(finder, &s, parts, (&out.cuts, tour), &d, pos, range)
+        let balanced = if parts >= BALANCE_PARTS { self.balanced_cut(&s, parts, &cuts, &mut rng) } else { None };
+        let found = balanced
+            .or_else(|| {
+                (0..ATTEMPTS + ((parts + points) as u32) / 4).find_map(|_| {
+                    // Reflex single points are picked as often as parts: a
+                    // cloud of point sites has almost nothing else.
+                    if rng.below(parts + points) < points {
+                        return fan_cut(finder, &s, parts + points, (&cuts, tour), &mut rng);
+                    }
+                    let (pos, range) = pick_point(shape, &s, tour, &mut rng)?;
+                    let at = ElementRef { loop_index: pos.loop_index, element: pos.element };
+                    let d = finder.max_disk(at, pos.t);
+                    cut_with(finder, &s, parts, (&cuts, tour), &d, pos, range)
+                })
             })
             .or_else(|| {
                 let whole = tour.expand(&s);
-                let (cut, children) = cluster_cut(finder, &whole, &reflex_points(shape, &whole), &out.cuts)?;
+                let (cut, children) = cluster_cut(finder, &whole, &reflex_points(shape, &whole), &cuts)?;
                 Some((cut, children.into_iter().map(Ranged::from).collect()))
             });
-        match found {
-            Some((cut, children)) => {
-                out.cuts.push(cut);
-                todo.extend(children);
-            }
-            None => out.stuck.push(tour.expand(&s)),
+        if found.is_none() {
+            steps.push(Step::Stuck(tour.expand(&s)));
         }
+        found
     }
-}
 
-/// Size of a subshape as the leaf rule counts it: original parts plus
-/// reflex vertices between auxiliary arcs.
-pub fn leaf_size(shape: &Shape2d, s: &Subshape) -> usize {
-    original_parts(shape, s) + reflex_points(shape, s).len()
+    /// A cut of a large subshape by the largest of a few random maximal
+    /// disks that divides it: one grown from a random point, or from a
+    /// random reflex end along the middle of the vertex's fan of normals.
+    /// Random points of a spiky polygon mostly grow small disks inside one
+    /// spike, whose cuts peel a few parts off and leave the rest (a random
+    /// star of 3·10^5 vertices: twenty thousand such cuts of subshapes of
+    /// 10^4 parts and more, each copying the subshape); the largest disks
+    /// sit where the shape is widest and cut it into comparable halves,
+    /// which both bounds the copying and gives the parallel tasks work.
+    fn balanced_cut(&self, s: &Ranged, parts: usize, cuts: &PathCuts, rng: &mut Mix) -> Option<(Cut, Vec<Ranged>)> {
+        let (finder, tour) = (self.finder, self.tour);
+        let mut found: Vec<(MaxDisk, BoundaryPos, (f64, f64))> =
+            (0..CANDIDATES).filter_map(|_| candidate(finder, s, tour, rng)).collect();
+        found.sort_by(|a, b| b.0.radius.total_cmp(&a.0.radius));
+        found.into_iter().find_map(|(d, pos, range)| cut_with(finder, s, parts, (cuts, tour), &d, pos, range))
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::plane::medial::decompose::parts::original_parts;
     use crate::shape::{samples, ShapeOptions};
 
     fn boundary_distance(shape: &Shape2d, p: crate::kernel::Point) -> f64 {
@@ -405,7 +351,14 @@ mod tests {
                 // Every dividing disk is a maximal disk: empty, touching.
                 assert!((boundary_distance(&shape, c.center) - c.radius).abs() <= tol, "{n}: {c:?}");
             }
-            assert!(d.leaves.iter().all(|l| original_parts(&shape, l) <= LEAF_PARTS));
+            // Larger leaves are lobe tips hugging their one dividing disk.
+            let tip = |l: &Subshape| {
+                matches!(
+                    hugged(&shape, l, &d.cuts, Tolerance::new(shape.tolerance()).hugged_tip()),
+                    Some(Hugged::Tip(_))
+                )
+            };
+            assert!(d.leaves.iter().all(|l| original_parts(&shape, l) <= LEAF_PARTS || tip(l)));
             // Leaves cover the shape: each cut adds (k − 1) disks of area.
             assert!(d.cuts.len() >= n / 4, "{n}: only {} cuts", d.cuts.len());
             // A few subshapes still need the rules not built yet (multi-branching,
@@ -419,14 +372,20 @@ mod tests {
 
     #[test]
     fn polygons_with_reflex_vertices() {
-        for seed in 0..10 {
+        let (mut stuck, mut leaves) = (0, 0);
+        for seed in 0..40 {
             let shape = Shape2d::from_bulge_loops(samples::star_polygon(60, seed), &ShapeOptions::default()).unwrap();
             let d = decompose(&shape, seed).unwrap();
-            assert!(d.stuck.len() <= 3, "{seed}: {} stuck of {}", d.stuck.len(), d.leaves.len());
+            assert!(d.stuck.len() <= 5, "{seed}: {} stuck of {}", d.stuck.len(), d.leaves.len());
+            stuck += d.stuck.len();
+            leaves += d.leaves.len();
             let tol = 1e-9 * shape.bbox().diagonal();
             for c in &d.cuts {
                 assert!((boundary_distance(&shape, c.center) - c.radius).abs() <= tol, "{c:?}");
             }
         }
+        // About 1 in 45 (43 of 2240 before the divide step forked, 52 of
+        // 2221 after: other random choices); the base case solves them.
+        assert!(stuck * 30 <= leaves, "{stuck} stuck of {leaves}");
     }
 }

@@ -10,7 +10,7 @@
 use crate::kernel::fan::Fan;
 use crate::kernel::AxisKernel;
 use crate::plane::medial::decompose::parts::{foot_at_convex_corner, parts_in, points_in, position, reflex_point};
-use crate::plane::medial::decompose::subshape::{BoundaryPos, Cut, Piece};
+use crate::plane::medial::decompose::subshape::{BoundaryPos, Cut, CutIds, Piece};
 use crate::plane::medial::decompose::tour::{Ranged, Span, Tour};
 use crate::plane::medial::disk::maximal::DiskFinder;
 use crate::shape::{ElementRef, Shape2d};
@@ -68,11 +68,11 @@ fn pick(shape: &Shape2d, s: &Ranged, tour: &Tour, rng: &mut Mix) -> Option<(Boun
 /// from the disk of the auxiliary arc before it to the one after it; a
 /// whole turn between the two arcs of one disk). `None` when the pick or
 /// the disk does not divide `s` into smaller pieces.
-pub(super) fn fan_cut<K: AxisKernel>(
+pub(super) fn fan_cut<K: AxisKernel, C: CutIds + ?Sized>(
     finder: &DiskFinder<K>,
     s: &Ranged,
     size: usize,
-    (cuts, tour): (&[Cut], &Tour),
+    (cuts, tour): (&C, &Tour),
     rng: &mut Mix,
 ) -> Option<(Cut, Vec<Ranged>)> {
     let shape = finder.shape();
@@ -92,7 +92,7 @@ pub(super) fn fan_cut<K: AxisKernel>(
     if foot_at_convex_corner(shape, &feet, d.radius) {
         return None;
     }
-    let children = tour.cut(shape, s, cuts.len(), &feet, d.center, cuts)?;
+    let children = tour.cut(shape, s, cuts.count(), &feet, d.center, cuts)?;
     let smaller = children.iter().all(|c| parts_in(shape, c, tour) + points_in(shape, c, tour) < size);
     (children.len() >= 2 && smaller).then_some((Cut { center: d.center, radius: d.radius }, children))
 }

@@ -4,6 +4,7 @@
 
 pub(crate) mod augment;
 pub(crate) mod cut;
+pub(crate) mod cut_rules;
 pub(crate) mod divide;
 pub(crate) mod fan_cut;
 // Leaf dumps serve only the replay tools and tests.

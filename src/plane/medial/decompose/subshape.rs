@@ -133,6 +133,27 @@ pub struct Cut {
     pub radius: f64,
 }
 
+/// The dividing disks that `Piece::Aux` ids refer to, by id: the flat list
+/// of a finished decomposition, or the view of one path of the divide
+/// step (the disks cut before it forked and the ancestors of the
+/// subshape at hand; see `divide::PathCuts`).
+pub trait CutIds: std::ops::Index<usize, Output = Cut> {
+    /// The next id: one more than the largest id in view.
+    fn count(&self) -> usize;
+}
+
+impl CutIds for [Cut] {
+    fn count(&self) -> usize {
+        self.len()
+    }
+}
+
+impl CutIds for Vec<Cut> {
+    fn count(&self) -> usize {
+        self.len()
+    }
+}
+
 /// A subshape: a closed cyclic list of pieces.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Subshape {
@@ -238,7 +259,7 @@ pub enum Hugged {
 /// `slack` (model units) of each disk's circle with no convex corner;
 /// `None` for any other subshape. Stops at the first part that strays, so
 /// it costs little on ordinary subshapes.
-pub fn hugged(shape: &Shape2d, s: &Subshape, cuts: &[Cut], slack: f64) -> Option<Hugged> {
+pub fn hugged<C: CutIds + ?Sized>(shape: &Shape2d, s: &Subshape, cuts: &C, slack: f64) -> Option<Hugged> {
     let aux: Vec<usize> = (0..s.pieces.len()).filter(|&j| matches!(s.pieces[j], Piece::Aux { .. })).collect();
     let disk = |j: usize| match s.pieces[j] {
         Piece::Aux { disk } => cuts[disk],

@@ -17,7 +17,7 @@
 use crate::kernel::Point;
 use crate::plane::medial::decompose::cut::split_slots;
 use crate::plane::medial::decompose::subshape::{
-    along, chain_holds, BoundaryPos, ChainParts, Cut, Piece, Slot, Subshape,
+    along, chain_holds, BoundaryPos, ChainParts, CutIds, Piece, Slot, Subshape,
 };
 use crate::shape::{JointKind, Shape2d};
 use std::borrow::Cow;
@@ -307,14 +307,14 @@ impl Tour {
     /// [`Subshape::split`] for a subshape of the divide step: the ranges
     /// where `feet` land are opened first, those between them go to the
     /// subshapes whole.
-    pub(crate) fn cut(
+    pub(crate) fn cut<C: CutIds + ?Sized>(
         &self,
         shape: &Shape2d,
         s: &Ranged,
         disk: usize,
         feet: &[BoundaryPos],
         center: Point,
-        cuts: &[Cut],
+        cuts: &C,
     ) -> Option<Vec<Ranged>> {
         let opened = self.open_at(shape, s, feet);
         let out = split_slots(&opened.spans, shape, disk, feet, center, cuts)?;

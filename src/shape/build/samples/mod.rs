@@ -6,6 +6,14 @@ use crate::shape::model::bulge_loop::Vertex;
 use crate::util::mix::Mix;
 use std::f64::consts::TAU;
 
+mod fourier;
+mod glyphs;
+mod strip;
+
+pub use fourier::{fourier_biarcs, fourier_curve, fourier_with_holes};
+pub use glyphs::text_plate;
+pub use strip::nearly_straight_strip;
+
 /// A star-shaped polygon with `n` vertices at evenly spaced angles and
 /// random radii in [0.5, 1): simple by construction, every second corner
 /// reflex on average.
@@ -82,54 +90,6 @@ pub fn flower_arcs(n: usize) -> Vec<Vec<Vertex>> {
     };
     let samples: Vec<(Point, Point)> =
         (0..m).map(|i| TAU * i as f64 / m as f64).map(|t| (curve(t), tangent(t))).collect();
-    vec![biarc_loop(&samples)]
-}
-
-/// A smooth random closed curve of `n` arcs (n rounded up to even): the
-/// radial Fourier series r(θ) = 1 + Σ_{k=1..7} a_k cos(kθ + φ_k) with a_k
-/// normal of deviation 0.35/k and φ_k uniform (scaled down, if need be, so
-/// that r ≥ 0.2: star-shaped about the origin, hence simple), sampled at
-/// `n/2` uniform angles and interpolated by biarcs with the curve's exact
-/// tangents. Every joint is tangent-continuous up to rounding. The family
-/// issue 17 found breaking down at 10^5 arcs.
-pub fn fourier_biarcs(n: usize, seed: u64) -> Vec<Vec<Vertex>> {
-    fourier_curve(n, seed, 0.35)
-}
-
-/// [`fourier_biarcs`] with coefficients of deviation `spread / k`: 0.35
-/// gives lobes, 10^-3 a nearly circular curve whose medial axis is a small
-/// tree near the centre, reached by disks that all but osculate long
-/// stretches of the boundary.
-pub fn fourier_curve(n: usize, seed: u64, spread: f64) -> Vec<Vec<Vertex>> {
-    let mut rng = Mix(seed);
-    let mut gauss = || {
-        // Box–Muller; 1 − u keeps the logarithm finite.
-        let (u, v) = (1.0 - rng.next(), rng.next());
-        (-2.0 * u.ln()).sqrt() * (TAU * v).cos()
-    };
-    let mut terms: Vec<(f64, f64, f64)> = (1..=7)
-        .map(|k| {
-            let a = gauss() * spread / k as f64;
-            (k as f64, a, 0.0)
-        })
-        .collect();
-    for t in terms.iter_mut() {
-        t.2 = TAU * rng.next();
-    }
-    // The lowest radius bounds how far the series may reach below 1.
-    let reach: f64 = terms.iter().map(|t| t.1.abs()).sum();
-    let scale = if reach > 0.8 { 0.8 / reach } else { 1.0 };
-    let radius = |t: f64| 1.0 + scale * terms.iter().map(|&(k, a, phi)| a * (k * t + phi).cos()).sum::<f64>();
-    let slope = |t: f64| -scale * terms.iter().map(|&(k, a, phi)| a * k * (k * t + phi).sin()).sum::<f64>();
-    let m = n.max(8).div_ceil(2);
-    let samples: Vec<(Point, Point)> = (0..m)
-        .map(|i| TAU * i as f64 / m as f64)
-        .map(|t| {
-            let (r, dr) = (radius(t), slope(t));
-            let (s, c) = t.sin_cos();
-            (Point::new(r * c, r * s), Point::new(dr * c - r * s, dr * s + r * c).unit())
-        })
-        .collect();
     vec![biarc_loop(&samples)]
 }
 
@@ -284,5 +244,29 @@ mod tests {
         // The same seed gives the same curve, another seed another one.
         assert_eq!(fourier_biarcs(100, 3), fourier_biarcs(100, 3));
         assert_ne!(fourier_biarcs(100, 3), fourier_biarcs(100, 4));
+    }
+
+    #[test]
+    fn holes_letters_and_strips_are_valid_at_the_size_asked() {
+        for seed in 1..4 {
+            let opts = ShapeOptions::default();
+            let holes = Shape2d::from_bulge_loops(fourier_with_holes(20_000, 40, seed), &opts).expect("valid");
+            assert_eq!(holes.loops().len(), 41, "seed {seed}: every hole finds room");
+            assert!((19_900..=20_100).contains(&holes.element_count()), "{}", holes.element_count());
+            let text = Shape2d::from_bulge_loops(text_plate(20_000, seed), &opts).expect("valid");
+            assert!((17_000..=23_000).contains(&text.element_count()), "{}", text.element_count());
+            // Letters have sharp turns and round joins: corners and smooth
+            // joints both occur.
+            let joints = text.joint_counts();
+            assert!(joints[JointKind::Convex as usize] > 0 && joints[JointKind::Smooth as usize] > 0);
+            for spread in [1e-3, 0.0] {
+                let strip =
+                    Shape2d::from_bulge_loops(nearly_straight_strip(20_000, seed, spread), &opts).expect("valid");
+                assert_eq!(strip.element_count(), 20_000);
+                let b = strip.bbox();
+                // 0.2 apart over 5000 samples, and a half circle of radius 1/2 at each end.
+                assert!((b.width() - 999.8 - 1.0).abs() < 0.1 && (b.height() - 1.0).abs() < 0.1, "{b:?}");
+            }
+        }
     }
 }
