@@ -3,7 +3,12 @@
 //! `cargo run --release --features internals --example axis_phases -- KIND N [THREADS]`
 //! with KIND one of `fourier`, `circle`, `star`, `flower`, `holes` (a
 //! `write_sample` family; `MEDAX_SEED` picks the random one) or a shape
-//! file with N = 0. Prints one line per phase: seconds and share.
+//! file with N = 0. Prints one line per phase: seconds and share, then the
+//! divide step's critical path (span) and, from this run's times, the
+//! time Brent's bound predicts on more cores (run with THREADS = 1 for
+//! the work): validation, base cases and the final check are parallel
+//! maps over many small independent items, the divide step takes at most
+//! work / p + span, index, augmentation and gluing are serial.
 use medax::plane::internals::{augment, decompose_in, final_check, glue, solve_leaves};
 use medax::plane::{AxisOptions, DiskFinder};
 use medax::shape::{samples, Shape2d, ShapeOptions};
@@ -34,6 +39,7 @@ fn main() {
         }
     };
     lap("generate", &mut phases);
+    let mut span = 0.0;
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().expect("thread pool");
     pool.install(|| {
         let shape = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).expect("valid shape");
@@ -45,6 +51,7 @@ fn main() {
         let opts = AxisOptions::default();
         let mut d = decompose_in(&finder, &aug, opts.seed, opts.leaf_parts.max(3));
         lap("divide", &mut phases);
+        span = d.span;
         let locals = solve_leaves(&finder, &mut d, opts.seed).expect("leaves solved");
         lap("base cases", &mut phases);
         let axis = glue(&finder, &d.cuts, &locals).expect("glued");
@@ -64,4 +71,14 @@ fn main() {
         println!("{name:>24} {t:8.3} s {:5.1} %", 100.0 * t / total);
     }
     println!("{:>24} {total:8.3} s (without generate)", "total");
+    let t = |name: &str| phases.iter().find(|p| p.0 == name).map_or(0.0, |p| p.1);
+    let (flat, serial) = (
+        t("validate") + t("base cases") + t("final check"),
+        t("index (run hierarchy)") + t("augment (holes)") + t("glue (conquer)"),
+    );
+    println!("{:>24} {span:8.3} s (critical path of the divide step)", "divide span");
+    for p in [2.0, 8.0, 16.0] {
+        let predicted = serial + flat / p + t("divide") / p + span;
+        println!("{:>24} {predicted:8.3} s on {p} cores ({:.1}x)", "predicted", total / predicted);
+    }
 }

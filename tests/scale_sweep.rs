@@ -1,11 +1,14 @@
-//! The slow tier: the medial axis at 10^5 and 3·10^5 elements on
-//! generated families (smooth random Fourier curves with ten seeds, nearly
-//! circular curves, random star polygons, flowers, plates of random
-//! holes), each checked by the sampled oracle of `common::oracle` (every
-//! axis sample's radius is its distance to the boundary, the maximal disk
-//! at random boundary points is centred on the axis, the graph is a tree
-//! with one cycle per hole; distances on a thousand edges and nodes of
-//! each axis, spread over it). Ignored by default (minutes in a release
+//! The slow tier: the medial axis at 10^5, 3·10^5 and 10^6 elements on
+//! generated families (smooth random Fourier curves with ten seeds, alone
+//! and with holes of their kind, nearly circular curves, random star
+//! polygons, flowers, plates of random holes, plates of letters, nearly
+//! straight bands), each checked by the sampled oracle of
+//! `common::oracle` (every axis sample's radius is its distance to the
+//! boundary; the maximal disk at random boundary points is centred on the
+//! axis or, where disks hug the boundary within the tolerance, lies within
+//! 64τ inside a disk of the axis; the graph is a tree with one cycle per
+//! hole; distances on a thousand edges and nodes of each axis, spread
+//! over it). Ignored by default (minutes in a release
 //! build): `cargo test --release --test scale_sweep -- --ignored`.
 
 mod common;
@@ -126,4 +129,6 @@ fn a_million_elements() {
     sweep("fourier 1e6 with 40 holes", samples::fourier_with_holes(1_000_000, 40, 1));
     sweep("text 1e6", samples::text_plate(1_000_000, 1));
     sweep("strip 1e6", samples::nearly_straight_strip(1_000_000, 1, 1e-3));
+    sweep("star 1e6", samples::star_polygon(1_000_000, 1));
+    sweep("flower 1e6", samples::flower_arcs(1_000_000));
 }

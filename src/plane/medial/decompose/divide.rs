@@ -24,13 +24,13 @@
 //! polygons).
 
 use crate::kernel::tolerance::Tolerance;
-use crate::kernel::AxisKernel;
+use crate::kernel::{AxisKernel, Point};
 use crate::plane::medial::decompose::augment::Augmentation;
 #[cfg(any(test, feature = "internals"))]
 use crate::plane::medial::decompose::augment::{augment, AugmentError};
 pub use crate::plane::medial::decompose::cut_rules::leaf_size;
 use crate::plane::medial::decompose::cut_rules::{
-    candidate, cluster_cut, cut_with, pick_point, reflex_points, seed_of, ATTEMPTS,
+    candidate, cluster_cut, cut_with, disk_around, pick_point, reflex_points, seed_of, ATTEMPTS,
 };
 use crate::plane::medial::decompose::fan_cut::fan_cut;
 use crate::plane::medial::decompose::parts::{parts_in, points_in};
@@ -43,6 +43,7 @@ use crate::shape::Shape2d;
 use crate::util::mix::Mix;
 use rayon::prelude::*;
 use std::ops::Index;
+use std::time::Instant;
 
 /// A subshape is a leaf once it has at most this many original parts.
 #[cfg(any(test, feature = "internals"))]
@@ -58,6 +59,11 @@ pub struct Decomposition {
     /// Subshapes no attempted disk divided (they need the rules not built
     /// yet: multi-branching, reflex clusters).
     pub stuck: Vec<Subshape>,
+    /// The divide step's critical path, seconds: the longest chain of
+    /// work no thread count shortens (each task's own time plus, at each
+    /// fork, the longest of the subtrees it waits for). With the
+    /// one-thread time it bounds the speed-up more cores can bring.
+    pub span: f64,
 }
 
 /// Subshapes of at most this many pieces once expanded hold no ranges of
@@ -167,7 +173,10 @@ struct Divide<'a, K: AxisKernel> {
 const BALANCE_PARTS: usize = 2048;
 
 /// Random maximal disks a large subshape chooses its cut among.
-const CANDIDATES: usize = 8;
+const CANDIDATES: usize = 4;
+
+/// Points inside a large subshape whose widest disk it may be cut by.
+const CENTRES: usize = 8;
 
 /// A cut whose children include two of at least this many original parts
 /// divides them in parallel (below, the work of one subtree is a few
@@ -193,10 +202,11 @@ fn divide_along<K: AxisKernel>(
     // Forks stop where subtrees hold 1/64 of the shape: at most 64 nested
     // forks even when every cut peels a sliver off a large subshape.
     let fork_parts = FORK_MIN_PARTS.max(shape.element_count() / 64);
-    let steps = {
+    let (steps, span) = {
         let ctx = Divide { finder, base: &out.cuts, tour, seed, leaf_parts, fork_parts };
         ctx.divide(roots, Vec::new())
     };
+    out.span += span;
     let base = out.cuts.len();
     // The global id of the ancestor at each depth of the current path.
     let mut ids: Vec<usize> = Vec::new();
@@ -225,8 +235,12 @@ fn divide_along<K: AxisKernel>(
 
 impl<K: AxisKernel> Divide<'_, K> {
     /// Divides `roots` (the last first, as a stack pops them), each below
-    /// the ancestors `path`, into the steps of the sequential order.
-    fn divide(&self, roots: Vec<Ranged>, mut path: Vec<Cut>) -> Vec<Step> {
+    /// the ancestors `path`, into the steps of the sequential order; with
+    /// the critical path of that work, seconds.
+    fn divide(&self, roots: Vec<Ranged>, mut path: Vec<Cut>) -> (Vec<Step>, f64) {
+        let start = Instant::now();
+        // Time spent waiting for forked subtrees, and their critical paths.
+        let (mut waited, mut forked) = (0.0, 0.0);
         let shape = self.finder.shape();
         let depth0 = path.len();
         let mut todo: Vec<(Ranged, usize)> = roots.into_iter().map(|r| (r, depth0)).collect();
@@ -243,14 +257,17 @@ impl<K: AxisKernel> Divide<'_, K> {
             if big {
                 // The children's subtrees in the order the stack would
                 // pop them: the last child first.
-                let subtrees: Vec<Vec<Step>> =
+                let fork = Instant::now();
+                let subtrees: Vec<(Vec<Step>, f64)> =
                     children.into_par_iter().map(|c| self.divide(vec![c], path.clone())).collect();
-                steps.extend(subtrees.into_iter().rev().flatten());
+                waited += fork.elapsed().as_secs_f64();
+                forked += subtrees.iter().map(|t| t.1).fold(0.0, f64::max);
+                steps.extend(subtrees.into_iter().rev().flat_map(|t| t.0));
             } else {
                 todo.extend(children.into_iter().map(|c| (c, depth + 1)));
             }
         }
-        steps
+        (steps, start.elapsed().as_secs_f64() - waited + forked)
     }
 
     /// One subshape whose ancestors are `path`: a leaf or a stuck subshape
@@ -324,8 +341,19 @@ impl<K: AxisKernel> Divide<'_, K> {
     /// which both bounds the copying and gives the parallel tasks work.
     fn balanced_cut(&self, s: &Ranged, parts: usize, cuts: &PathCuts, rng: &mut Mix) -> Option<(Cut, Vec<Ranged>)> {
         let (finder, tour) = (self.finder, self.tour);
+        let shape = finder.shape();
         let mut found: Vec<(MaxDisk, BoundaryPos, (f64, f64))> =
             (0..CANDIDATES).filter_map(|_| candidate(finder, s, tour, rng)).collect();
+        // Disks around points inside: the mean of random boundary points
+        // and midpoints of random chords.
+        let points: Vec<Point> =
+            (0..2 * CENTRES).filter_map(|_| pick_point(shape, s, tour, rng)).map(|(p, _)| p.point(shape)).collect();
+        let mean = points.iter().fold(Point::default(), |a, &p| a + p) * (1.0 / points.len().max(1) as f64);
+        let centres =
+            std::iter::once(mean).chain(points.chunks(2).filter(|c| c.len() == 2).map(|c| (c[0] + c[1]) * 0.5));
+        // (Their part's range is unknown: an empty one keeps a leaf arc's
+        // circle from cutting an arc this subshape may hold only part of.)
+        found.extend(centres.take(CENTRES).filter_map(|c| disk_around(finder, c)).map(|(d, pos)| (d, pos, (0.5, 0.5))));
         found.sort_by(|a, b| b.0.radius.total_cmp(&a.0.radius));
         found.into_iter().find_map(|(d, pos, range)| cut_with(finder, s, parts, (cuts, tour), &d, pos, range))
     }
