@@ -129,6 +129,14 @@ fn a_million_elements() {
     sweep("fourier 1e6 with 40 holes", samples::fourier_with_holes(1_000_000, 40, 1));
     sweep("text 1e6", samples::text_plate(1_000_000, 1));
     sweep("strip 1e6", samples::nearly_straight_strip(1_000_000, 1, 1e-3));
-    sweep("star 1e6", samples::star_polygon(1_000_000, 1));
+}
+
+#[test]
+#[ignore = "slow tier: scripts/test-all runs it in release"]
+fn a_flower_of_a_million_arcs() {
     sweep("flower 1e6", samples::flower_arcs(1_000_000));
+    // A random star of 10^6 vertices computes (14.8 s, docs/PERFORMANCE.md)
+    // but is not checked here: the oracle's grids bucket every item by its
+    // box, and the star's long radial sides and spines cover about 10^5
+    // cells each at that size (killed at 24 GB).
 }

@@ -4,9 +4,7 @@
 //! three reflex points that cuts a reflex cluster. `divide.rs` schedules
 //! these over the subshape tree.
 
-use crate::kernel::direction::Heading;
 use crate::kernel::fan::Fan;
-use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Disk;
 use crate::kernel::{AxisKernel, Contact, Point};
 use crate::plane::medial::decompose::parts::{foot_at_convex_corner, original_parts, parts_in, position, reflex_point};
@@ -260,54 +258,4 @@ pub(super) fn candidate<K: AxisKernel>(
     let normal = |e: usize, t: f64| finder.boundary_point(ElementRef { element: e, ..at }, t).1;
     let middle = Fan::clockwise(normal(before, 1.0), normal(after, 0.0)).direction_at(0.5);
     Some((finder.max_disk_toward(at, pos.t, middle), pos, range))
-}
-
-/// The maximal disk holding the largest empty disk centred at `c`: grown
-/// from `c`'s nearest boundary point towards `c`. With a point inside a
-/// large subshape (the mean of random boundary points, the midpoint of a
-/// random chord) this is a disk where the shape is widest, whatever the
-/// boundary looks like. `None` when `c` lies outside the shape, on the
-/// boundary or nearest to a convex corner.
-pub(super) fn disk_around<K: AxisKernel>(finder: &DiskFinder<K>, c: Point) -> Option<(MaxDisk, BoundaryPos)> {
-    let shape = finder.shape();
-    let (at, _) = finder.nearest(c)?;
-    let lp = &shape.loops()[at.loop_index];
-    let e = lp.element(at.element);
-    let (d, q) = e.closest_point(c);
-    if d <= finder.contact_tolerance() {
-        return None;
-    }
-    let dir = (c - q) * (1.0 / d);
-    let tol = shape.tolerance();
-    // The vertex `q` is at, if any, as the index of the element it starts.
-    let vertex = if q.dist(e.start()) <= tol {
-        Some(at.element)
-    } else if q.dist(e.end()) <= tol {
-        Some((at.element + 1) % lp.len())
-    } else {
-        None
-    };
-    let normal = |k: usize, t: f64| finder.boundary_point(ElementRef { element: k, ..at }, t).1;
-    match vertex {
-        None => {
-            // Nearest to an element's inside: `c` lies along its normal,
-            // on the shape's side or not.
-            let t = e.param_of(q);
-            (finder.kernel().heading(normal(at.element, t), dir) == Heading::Forward)
-                .then(|| (finder.max_disk(at, t), BoundaryPos { loop_index: at.loop_index, element: at.element, t }))
-        }
-        Some(w) => {
-            // Nearest to a vertex: inside only through a reflex vertex's
-            // fan of normals (clockwise from the element before it to the
-            // one after).
-            if shape.joint(at.loop_index, w) != JointKind::Reflex {
-                return None;
-            }
-            let n = lp.len();
-            let fan = Fan::clockwise(normal((w + n - 1) % n, 1.0), normal(w, 0.0));
-            let pos = BoundaryPos { loop_index: at.loop_index, element: w, t: 0.0 };
-            fan.contains(dir, Tolerance::fan_angle())
-                .then(|| (finder.max_disk_toward(ElementRef { element: w, ..at }, 0.0, dir), pos))
-        }
-    }
 }

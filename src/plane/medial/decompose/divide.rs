@@ -24,13 +24,13 @@
 //! polygons).
 
 use crate::kernel::tolerance::Tolerance;
-use crate::kernel::{AxisKernel, Point};
+use crate::kernel::AxisKernel;
 use crate::plane::medial::decompose::augment::Augmentation;
 #[cfg(any(test, feature = "internals"))]
 use crate::plane::medial::decompose::augment::{augment, AugmentError};
 pub use crate::plane::medial::decompose::cut_rules::leaf_size;
 use crate::plane::medial::decompose::cut_rules::{
-    candidate, cluster_cut, cut_with, disk_around, pick_point, reflex_points, seed_of, ATTEMPTS,
+    candidate, cluster_cut, cut_with, pick_point, reflex_points, seed_of, ATTEMPTS,
 };
 use crate::plane::medial::decompose::fan_cut::fan_cut;
 use crate::plane::medial::decompose::parts::{parts_in, points_in};
@@ -173,10 +173,7 @@ struct Divide<'a, K: AxisKernel> {
 const BALANCE_PARTS: usize = 2048;
 
 /// Random maximal disks a large subshape chooses its cut among.
-const CANDIDATES: usize = 4;
-
-/// Points inside a large subshape whose widest disk it may be cut by.
-const CENTRES: usize = 8;
+const CANDIDATES: usize = 8;
 
 /// A cut whose children include two of at least this many original parts
 /// divides them in parallel (below, the work of one subtree is a few
@@ -341,19 +338,8 @@ impl<K: AxisKernel> Divide<'_, K> {
     /// which both bounds the copying and gives the parallel tasks work.
     fn balanced_cut(&self, s: &Ranged, parts: usize, cuts: &PathCuts, rng: &mut Mix) -> Option<(Cut, Vec<Ranged>)> {
         let (finder, tour) = (self.finder, self.tour);
-        let shape = finder.shape();
         let mut found: Vec<(MaxDisk, BoundaryPos, (f64, f64))> =
             (0..CANDIDATES).filter_map(|_| candidate(finder, s, tour, rng)).collect();
-        // Disks around points inside: the mean of random boundary points
-        // and midpoints of random chords.
-        let points: Vec<Point> =
-            (0..2 * CENTRES).filter_map(|_| pick_point(shape, s, tour, rng)).map(|(p, _)| p.point(shape)).collect();
-        let mean = points.iter().fold(Point::default(), |a, &p| a + p) * (1.0 / points.len().max(1) as f64);
-        let centres =
-            std::iter::once(mean).chain(points.chunks(2).filter(|c| c.len() == 2).map(|c| (c[0] + c[1]) * 0.5));
-        // (Their part's range is unknown: an empty one keeps a leaf arc's
-        // circle from cutting an arc this subshape may hold only part of.)
-        found.extend(centres.take(CENTRES).filter_map(|c| disk_around(finder, c)).map(|(d, pos)| (d, pos, (0.5, 0.5))));
         found.sort_by(|a, b| b.0.radius.total_cmp(&a.0.radius));
         found.into_iter().find_map(|(d, pos, range)| cut_with(finder, s, parts, (cuts, tour), &d, pos, range))
     }
