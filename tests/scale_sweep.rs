@@ -69,6 +69,9 @@ fn nearly_circular_curves() {
     // Broke down until 49a2761: every disk near the centre hugs about a
     // hundred arcs within the tolerance (see base_case/hug_runs.rs).
     sweep("near circle 3e5", samples::fourier_curve(300_000, 3, 1e-3));
+    // Found on fresh seeds after balanced cuts landed: their largest disks
+    // broke a base case here; the retry divides with plain random cuts.
+    sweep("near circle 1e5 seed 5", samples::fourier_curve(100_000, 5, 1e-3));
 }
 
 #[test]

@@ -30,7 +30,7 @@ use crate::kernel::{AxisKernel, FilteredKernel, Point};
 use crate::plane::axis::MedialAxis2d;
 use crate::plane::medial::conquer::check::{check_corners, check_disks};
 use crate::plane::medial::decompose::augment::augment;
-use crate::plane::medial::decompose::divide::decompose_in;
+use crate::plane::medial::decompose::divide::{decompose_in, decompose_plain_in};
 use crate::plane::medial::disk::maximal::DiskFinder;
 use crate::shape::Shape2d;
 
@@ -95,11 +95,19 @@ pub fn medial_axis_with<K: AxisKernel>(
     // The divide step is randomized: a numerical breakdown in one
     // decomposition is retried with other random choices (derived from the
     // seed, so the result stays deterministic); the first error is
-    // reported if every try fails.
+    // reported if every try fails. The first try takes balanced cuts on
+    // large subshapes (fast on spiky polygons); the retries take the first
+    // random disk that divides, with the same seed and then another, so
+    // that they do not pick the same largest disks again.
     let mut first_error = None;
     for attempt in 0..RETRIES {
-        let seed = opts.seed.wrapping_add(attempt.wrapping_mul(0x9e37_79b9_7f4a_7c15));
-        let mut d = decompose_in(&finder, &aug, seed, opts.leaf_parts.max(3));
+        let seed = opts.seed.wrapping_add(attempt.saturating_sub(1).wrapping_mul(0x9e37_79b9_7f4a_7c15));
+        let leaf_parts = opts.leaf_parts.max(3);
+        let mut d = if attempt == 0 {
+            decompose_in(&finder, &aug, seed, leaf_parts)
+        } else {
+            decompose_plain_in(&finder, &aug, seed, leaf_parts)
+        };
         let solved = solve_leaves(&finder, &mut d, seed);
         match solved
             .and_then(|locals| glue(&finder, &d.cuts, &locals))

@@ -234,8 +234,8 @@ pub fn leaf_size(shape: &Shape2d, s: &Subshape) -> usize {
 
 /// A random maximal disk of `s` to choose a balanced cut among: grown from
 /// a random point, or from a random reflex end along the middle of the
-/// vertex's fan of normals (there the largest disks of a spiky polygon
-/// start). With the point and its part's fraction range, as
+/// vertex's fan of normals (the direction into the widest part of the
+/// shape there, rather than along one of the elements). With the point and its part's fraction range, as
 /// [`pick_point`] gives them.
 pub(super) fn candidate<K: AxisKernel>(
     finder: &DiskFinder<K>,

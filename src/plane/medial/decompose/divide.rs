@@ -93,13 +93,40 @@ pub fn decompose_in<K: AxisKernel>(
     seed: u64,
     leaf_parts: usize,
 ) -> Decomposition {
+    decompose_by(finder, aug, seed, leaf_parts, BALANCE_PARTS)
+}
+
+/// [`decompose_in`] with every subshape cut by the first random disk that
+/// divides it, as the thesis does, never by the largest of a few: slower
+/// on spiky polygons (their cuts peel), but the dividing disks fall
+/// elsewhere. The retry after a breakdown, where the largest disks of a
+/// nearly circular curve (all hugging hundreds of arcs) broke a base case.
+pub fn decompose_plain_in<K: AxisKernel>(
+    finder: &DiskFinder<K>,
+    aug: &Augmentation,
+    seed: u64,
+    leaf_parts: usize,
+) -> Decomposition {
+    decompose_by(finder, aug, seed, leaf_parts, usize::MAX)
+}
+
+/// [`decompose_in`] with balanced cuts from `balance_parts` parts on.
+fn decompose_by<K: AxisKernel>(
+    finder: &DiskFinder<K>,
+    aug: &Augmentation,
+    seed: u64,
+    leaf_parts: usize,
+    balance_parts: usize,
+) -> Decomposition {
     let mut out = Decomposition { cuts: aug.cuts.clone(), ..Decomposition::default() };
-    if aug.cuts.is_empty() {
-        divide_into(finder, &mut out, vec![aug.boundary.clone()], seed, leaf_parts);
+    let (roots, tour) = if aug.cuts.is_empty() {
+        // Plain subshapes hold no range: the empty cycle is never looked into.
+        (vec![Ranged::from(aug.boundary.clone())], Tour::default())
     } else {
         let tour = Tour::new(finder.shape(), &aug.boundary);
-        divide_along(finder, &mut out, vec![tour.root()], seed, leaf_parts, &tour);
-    }
+        (vec![tour.root()], tour)
+    };
+    divide_along(finder, &mut out, roots, (seed, leaf_parts, balance_parts), &tour);
     out
 }
 
@@ -115,7 +142,8 @@ pub fn divide_into<K: AxisKernel>(
     leaf_parts: usize,
 ) {
     // Plain subshapes hold no range: the empty cycle is never looked into.
-    divide_along(finder, out, roots.into_iter().map(Ranged::from).collect(), seed, leaf_parts, &Tour::default());
+    let roots = roots.into_iter().map(Ranged::from).collect();
+    divide_along(finder, out, roots, (seed, leaf_parts, BALANCE_PARTS), &Tour::default());
 }
 
 /// The dividing disks a subshape of the divide step sees: those cut before
@@ -163,6 +191,8 @@ struct Divide<'a, K: AxisKernel> {
     tour: &'a Tour,
     seed: u64,
     leaf_parts: usize,
+    /// Subshapes of at least this many parts take a balanced cut.
+    balance_parts: usize,
     /// A cut whose children include two of at least this many parts hands
     /// them to parallel tasks.
     fork_parts: usize,
@@ -191,8 +221,7 @@ fn divide_along<K: AxisKernel>(
     finder: &DiskFinder<K>,
     out: &mut Decomposition,
     roots: Vec<Ranged>,
-    seed: u64,
-    leaf_parts: usize,
+    (seed, leaf_parts, balance_parts): (u64, usize, usize),
     tour: &Tour,
 ) {
     let shape = finder.shape();
@@ -200,7 +229,7 @@ fn divide_along<K: AxisKernel>(
     // forks even when every cut peels a sliver off a large subshape.
     let fork_parts = FORK_MIN_PARTS.max(shape.element_count() / 64);
     let (steps, span) = {
-        let ctx = Divide { finder, base: &out.cuts, tour, seed, leaf_parts, fork_parts };
+        let ctx = Divide { finder, base: &out.cuts, tour, seed, leaf_parts, balance_parts, fork_parts };
         ctx.divide(roots, Vec::new())
     };
     out.span += span;
@@ -246,10 +275,14 @@ impl<K: AxisKernel> Divide<'_, K> {
         // then exactly `path[..depth]` when it is popped.
         while let Some((s, depth)) = todo.pop() {
             path.truncate(depth);
-            let Some((cut, children)) = self.divide_one(s, &path, &mut steps) else { continue };
+            let Some((cut, children, parts)) = self.divide_one(s, &path, &mut steps) else { continue };
             steps.push(Step::Cut(cut, depth));
             path.push(cut);
-            let big = children.len() >= 2
+            // Each child has fewer parts than its parent: only a parent of
+            // `fork_parts` or more can have two children that large, and
+            // only then are the children counted (a pass over each).
+            let big = parts >= self.fork_parts
+                && children.len() >= 2
                 && children.iter().filter(|c| parts_in(shape, c, self.tour) >= self.fork_parts).take(2).count() == 2;
             if big {
                 // The children's subtrees in the order the stack would
@@ -268,9 +301,9 @@ impl<K: AxisKernel> Divide<'_, K> {
     }
 
     /// One subshape whose ancestors are `path`: a leaf or a stuck subshape
-    /// goes to `steps`; a dividing disk and the children it cuts are
-    /// returned.
-    fn divide_one(&self, mut s: Ranged, path: &[Cut], steps: &mut Vec<Step>) -> Option<(Cut, Vec<Ranged>)> {
+    /// goes to `steps`; a dividing disk, the children it cuts and the
+    /// subshape's count of original parts are returned.
+    fn divide_one(&self, mut s: Ranged, path: &[Cut], steps: &mut Vec<Step>) -> Option<(Cut, Vec<Ranged>, usize)> {
         let (finder, tour, leaf_parts) = (self.finder, self.tour, self.leaf_parts);
         let shape = finder.shape();
         let cuts = PathCuts { base: self.base, path };
@@ -301,7 +334,7 @@ impl<K: AxisKernel> Divide<'_, K> {
         }
         let mut rng = Mix(seed_of(self.seed, &s, &cuts));
         let points = points_in(shape, &s, tour);
-        let balanced = if parts >= BALANCE_PARTS { self.balanced_cut(&s, parts, &cuts, &mut rng) } else { None };
+        let balanced = if parts >= self.balance_parts { self.balanced_cut(&s, parts, &cuts, &mut rng) } else { None };
         let found = balanced
             .or_else(|| {
                 (0..ATTEMPTS + ((parts + points) as u32) / 4).find_map(|_| {
@@ -324,7 +357,7 @@ impl<K: AxisKernel> Divide<'_, K> {
         if found.is_none() {
             steps.push(Step::Stuck(tour.expand(&s)));
         }
-        found
+        found.map(|(cut, children)| (cut, children, parts))
     }
 
     /// A cut of a large subshape by the largest of a few random maximal
@@ -333,9 +366,12 @@ impl<K: AxisKernel> Divide<'_, K> {
     /// Random points of a spiky polygon mostly grow small disks inside one
     /// spike, whose cuts peel a few parts off and leave the rest (a random
     /// star of 3·10^5 vertices: twenty thousand such cuts of subshapes of
-    /// 10^4 parts and more, each copying the subshape); the largest disks
-    /// sit where the shape is widest and cut it into comparable halves,
-    /// which both bounds the copying and gives the parallel tasks work.
+    /// 10^4 parts and more, each copying the subshape); the largest of a
+    /// few disks more often sits where the shape is wide and cuts off a
+    /// larger share, which bounds the copying and gives the parallel tasks
+    /// work. It does not guarantee balance: a star of 10^6 vertices still
+    /// makes 8 360 such cuts, and its divide step's critical path is most
+    /// of its work (docs/PERFORMANCE.md, "Work and span").
     fn balanced_cut(&self, s: &Ranged, parts: usize, cuts: &PathCuts, rng: &mut Mix) -> Option<(Cut, Vec<Ranged>)> {
         let (finder, tour) = (self.finder, self.tour);
         let mut found: Vec<(MaxDisk, BoundaryPos, (f64, f64))> =

@@ -85,7 +85,8 @@ pub fn fourier_curve(n: usize, seed: u64, spread: f64) -> Vec<Vec<Vertex>> {
 /// own random series, shrunk and placed at random where it keeps a gap of
 /// at least a third of its size to the outer curve and to every other
 /// hole): about `n` arcs in all, half on the outer curve and half shared
-/// among the holes (at least 8 each). Holes that find no room after many
+/// among the holes (at least 8 each, so a request of many holes and few
+/// arcs gives more than `n`). Holes that find no room after many
 /// tries are left out, so a crowded request gives fewer. The second family
 /// issue 17 found breaking down (40 holes, 5·10^5 arcs).
 pub fn fourier_with_holes(n: usize, holes: usize, seed: u64) -> Vec<Vec<Vertex>> {
@@ -117,8 +118,11 @@ pub fn fourier_with_holes(n: usize, holes: usize, seed: u64) -> Vec<Vec<Vertex>>
         }
     }
     let per_hole = if placed.is_empty() { 0 } else { (n / 2 / placed.len()).max(8) };
-    let mut loops =
-        vec![outer.loop_of((n - per_hole * placed.len()).max(8).div_ceil(2), Point::new(0.0, 0.0), 1.0, true)];
+    // Many holes of at least 8 arcs each may take more than `n`: the outer
+    // curve keeps at least half (fewer arcs would stray from the series
+    // the holes were placed against).
+    let outer_arcs = n.saturating_sub(per_hole * placed.len()).max(n / 2).max(8);
+    let mut loops = vec![outer.loop_of(outer_arcs.div_ceil(2), Point::new(0.0, 0.0), 1.0, true)];
     for &(c, reach) in &placed {
         let series = Series::random(&mut rng, 0.35);
         loops.push(series.loop_of(per_hole.div_ceil(2), c, reach / 1.8, false));

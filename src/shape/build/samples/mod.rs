@@ -252,6 +252,9 @@ mod tests {
             let opts = ShapeOptions::default();
             let holes = Shape2d::from_bulge_loops(fourier_with_holes(20_000, 40, seed), &opts).expect("valid");
             assert_eq!(holes.loops().len(), 41, "seed {seed}: every hole finds room");
+            // More holes than arcs to share: the outer curve keeps half.
+            let crowded = Shape2d::from_bulge_loops(fourier_with_holes(1_000, 200, seed), &opts).expect("valid");
+            assert!(crowded.loops()[0].len() >= 500 && crowded.loops().len() > 1);
             assert!((19_900..=20_100).contains(&holes.element_count()), "{}", holes.element_count());
             let text = Shape2d::from_bulge_loops(text_plate(20_000, seed), &opts).expect("valid");
             assert!((17_000..=23_000).contains(&text.element_count()), "{}", text.element_count());
