@@ -85,7 +85,11 @@ pub fn circle_circle(c1: Point, r1: f64, c2: Point, r2: f64) -> Vec<Point> {
 
 /// The angle `x` (radians) shifted by whole turns to within π of `mid`.
 pub fn unwrap_near(x: f64, mid: f64) -> f64 {
-    mid + (x - mid + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU) - std::f64::consts::PI
+    let y = x - mid + std::f64::consts::PI;
+    // `rem_euclid` returns a value already in [0, 2π) unchanged: skip its
+    // division there (this runs for every footpoint of every base case).
+    let y = if (0.0..std::f64::consts::TAU).contains(&y) { y } else { y.rem_euclid(std::f64::consts::TAU) };
+    mid + y - std::f64::consts::PI
 }
 
 /// Orthogonal projection parameter of `p` on the line `a + s·(b − a)`.

@@ -37,6 +37,48 @@ impl SitePiece {
         footpoint(&self.site, u).0
     }
 
+    /// A disk (centre, radius; model units) holding the whole piece: the
+    /// point of a fan, the circle on a segment's or a short arc's chord as
+    /// diameter (an arc of at most half a turn sees its chord at an angle
+    /// of at least a right angle), an arc's own circle beyond that. Exact
+    /// up to the rounding of the piece's end points; callers allow a
+    /// tolerance for it.
+    pub fn bound(&self) -> (Point, f64) {
+        match self.site {
+            Site::Point(q) => (q, 0.0),
+            Site::Circle { o, r, .. } if (self.u1 - self.u0).abs() > std::f64::consts::PI => (o, r),
+            Site::Line { .. } | Site::Circle { .. } => {
+                let (a, b) = (self.point_at(self.u0), self.point_at(self.u1));
+                ((a + b) * 0.5, 0.5 * a.dist(b))
+            }
+        }
+    }
+
+    /// [`distance`](Self::distance) without trigonometry, given the
+    /// piece's points at `u0` and `u1` (`ends`): the same value except
+    /// where `c`'s direction from an arc's centre is within rounding of an
+    /// end's, where the two differ by rounding.
+    pub fn distance_near(&self, c: Point, ends: [Point; 2]) -> f64 {
+        match self.site {
+            Site::Point(q) => c.dist(q),
+            Site::Line { .. } => self.distance(c).0,
+            Site::Circle { o, r, .. } => {
+                let (va, vb, v) = (ends[0] - o, ends[1] - o, c - o);
+                let s = if self.u1 >= self.u0 { 1.0 } else { -1.0 };
+                let inside = if (self.u1 - self.u0).abs() <= std::f64::consts::PI {
+                    s * va.cross(v) >= 0.0 && s * v.cross(vb) >= 0.0
+                } else {
+                    !(s * vb.cross(v) > 0.0 && s * v.cross(va) > 0.0)
+                };
+                if inside {
+                    (c.dist(o) - r).abs()
+                } else {
+                    c.dist(ends[0]).min(c.dist(ends[1]))
+                }
+            }
+        }
+    }
+
     /// Distance (model units) from `c` to the piece, and the parameter of
     /// the piece's point nearest to it (clamped to the piece).
     pub fn distance(&self, c: Point) -> (f64, f64) {

@@ -10,6 +10,7 @@ use crate::kernel::apollonius::Site;
 use crate::kernel::fan::Fan;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::CircleArc;
+use crate::kernel::SitePiece;
 use crate::kernel::{AxisKernel, Point};
 use crate::plane::axis::Primitive;
 use crate::plane::medial::decompose::subshape::{ChainParts, Cut, Piece, Subshape};
@@ -17,7 +18,9 @@ use crate::shape::{ElementRef, JointKind};
 
 impl<K: AxisKernel> Builder<'_, K> {
     pub(super) fn push_site(&mut self, prim: Primitive, site: Site, u0: f64, u1: f64) {
-        self.sites.push(LocalSite { prim, site, u0, u1, joined_next: true });
+        let piece = SitePiece { site, u0, u1 };
+        let (ends, bound) = ([piece.point_at(u0), piece.point_at(u1)], piece.bound());
+        self.sites.push(LocalSite { prim, site, u0, u1, joined_next: true, ends, bound });
     }
 
     /// A reflex vertex's fan between directions `from` and `to` (clockwise),

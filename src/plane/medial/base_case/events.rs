@@ -60,7 +60,12 @@ impl<K: AxisKernel> Builder<'_, K> {
 
     /// How the circle (`c`, `r`) meets site `i`'s piece, within `tol`.
     pub(super) fn contact(&self, i: SiteRef, c: Point, r: f64, tol: f64) -> Contact {
-        self.k().piece_contact(Disk::new(c, r), &self.piece(i), tol)
+        let (disk, s) = (Disk::new(c, r), &self.sites[i]);
+        let piece = self.piece(i);
+        self.k()
+            .bound_contact(disk, s.bound, tol)
+            .or_else(|| self.k().quick_contact(disk, &piece, s.ends, tol))
+            .unwrap_or_else(|| self.k().piece_contact(disk, &piece, tol))
     }
 
     /// True when the disk (`c`, `r`) crosses one of the auxiliary arcs.
@@ -80,6 +85,12 @@ impl<K: AxisKernel> Builder<'_, K> {
                     whole.push(i);
                     continue;
                 }
+            }
+            let (disk, s) = (Disk::new(c, r), &self.sites[i]);
+            if self.k().bound_contact(disk, s.bound, self.touch).is_some()
+                || self.k().quick_contact(disk, &self.piece(i), s.ends, self.touch).is_some()
+            {
+                continue;
             }
             let (contact, u) = self.k().piece_contact_at(Disk::new(c, r), &self.piece(i), self.touch);
             if contact == Contact::Touching && self.faces_inside(i, c, u) {
@@ -194,6 +205,8 @@ impl<K: AxisKernel> Builder<'_, K> {
         let g = GrowingDisk { p, n: nrm };
         let t_min = self.tol.least_growth();
         let mut best = f64::INFINITY;
+        // The piece ends first (boundary points, always safe contacts, and
+        // cheap): the smallest of them rules out most carriers below.
         for i in self.site_refs() {
             let s = &self.sites[i];
             if own.contains(&i) {
@@ -204,19 +217,29 @@ impl<K: AxisKernel> Builder<'_, K> {
                 }
                 continue;
             }
-            let (lo, hi) = (s.u0.min(s.u1), s.u0.max(s.u1));
-            // The piece's ends are boundary points: always safe contacts.
-            for q in [self.point_of(i, s.u0), self.point_of(i, s.u1)] {
+            for q in s.ends {
                 if q.dist(p) > self.tol.touch() {
                     if let Some(t) = self.k().through_point(&g, q).filter(|&t| t > t_min) {
                         best = best.min(t);
                     }
                 }
             }
-            if let Site::Point(_) = s.site {
+        }
+        for i in self.site_refs() {
+            let s = &self.sites[i];
+            if own.contains(&i) || matches!(s.site, Site::Point(_)) {
                 continue;
             }
-            if let Some(t) = self.k().touch_site(&g, &s.site).filter(|&t| t > t_min) {
+            // The disks grown at `p` are nested: a site wholly outside the
+            // smallest found so far cannot touch a smaller one.
+            if best.is_finite()
+                && self.k().bound_contact(Disk::new(g.center(best), best), s.bound, self.tol.touch())
+                    == Some(Contact::Apart)
+            {
+                continue;
+            }
+            let (lo, hi) = (s.u0.min(s.u1), s.u0.max(s.u1));
+            if let Some(t) = self.k().touch_site(&g, &s.site).filter(|&t| t > t_min && t < best) {
                 let c = g.center(t);
                 let u = self.param(i, c, t);
                 let slack = match s.site {

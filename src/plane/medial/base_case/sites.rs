@@ -19,6 +19,11 @@ pub(super) struct LocalSite {
     pub(super) u1: f64,
     /// The next primitive in the cycle follows without an auxiliary arc.
     pub(super) joined_next: bool,
+    /// The boundary points at `u0` and `u1` (every grown disk tests them).
+    pub(super) ends: [Point; 2],
+    /// A disk holding the piece ([`SitePiece::bound`]): most disks tested
+    /// against a site are decided by it without trigonometry.
+    pub(super) bound: (Point, f64),
 }
 
 /// A site of the cycle: its index in the builder's sites. Valid for one
@@ -119,7 +124,14 @@ impl<K: AxisKernel> Builder<'_, K> {
 
     /// The boundary point at parameter `u` of site `i`.
     pub(super) fn point_of(&self, i: SiteRef, u: f64) -> Point {
-        self.piece(i).point_at(u)
+        let s = &self.sites[i];
+        if u == s.u0 {
+            s.ends[0]
+        } else if u == s.u1 {
+            s.ends[1]
+        } else {
+            self.piece(i).point_at(u)
+        }
     }
 
     /// The cycle key of parameter `u` on site `i`: ends snapped when within
