@@ -48,7 +48,10 @@ fn main() {
         lap("index (run hierarchy)", &mut phases);
         let aug = augment(&finder).expect("augmenting disks");
         lap("augment (holes)", &mut phases);
-        let opts = AxisOptions::default();
+        let mut opts = AxisOptions::default();
+        if let Some(k) = std::env::var("MEDAX_LEAF_PARTS").ok().and_then(|s| s.parse().ok()) {
+            opts.leaf_parts = k;
+        }
         let mut d = decompose_in(&finder, &aug, opts.seed, opts.leaf_parts.max(3));
         lap("divide", &mut phases);
         span = d.span;

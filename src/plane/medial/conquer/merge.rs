@@ -10,6 +10,8 @@ use crate::kernel::{AxisKernel, Point};
 use crate::plane::axis::{AxisEdge, MedialAxis2d, NodeKind, Primitive};
 use crate::plane::medial::conquer::check::root;
 use crate::shape::Shape2d;
+use crate::util::fast_hash::FastMap;
+use rayon::prelude::*;
 
 /// Same unordered pair of primitives.
 fn same_pair(a: [Primitive; 2], b: [Primitive; 2]) -> bool {
@@ -20,18 +22,14 @@ fn same_pair(a: [Primitive; 2], b: [Primitive; 2]) -> bool {
 /// two edges, and compacts the node list.
 pub(crate) fn merge_pass_through(shape: &Shape2d, axis: &mut MedialAxis2d, is_port: &[bool], is_joint: &[bool]) {
     let n = axis.nodes.len();
-    let mut at: Vec<Vec<usize>> = vec![Vec::new(); n];
-    for (i, e) in axis.edges.iter().enumerate() {
-        at[e.from].push(i);
-        at[e.to].push(i);
-    }
+    let mut at = Incidence::of(axis);
     let mut alive = vec![true; axis.edges.len()];
     let mut keep = vec![true; n];
     for v in 0..n {
         if !is_port[v] && !is_joint[v] {
             continue;
         }
-        let live: Vec<usize> = at[v].iter().copied().filter(|&i| alive[i]).collect();
+        let live: Vec<usize> = at.of_node(v).iter().copied().filter(|&i| alive[i]).collect();
         if live.len() != 2 || live[0] == live[1] {
             continue;
         }
@@ -84,30 +82,89 @@ pub(crate) fn merge_pass_through(shape: &Shape2d, axis: &mut MedialAxis2d, is_po
         keep[v] = false;
         // The far end of e2 now sees the merged edge.
         for end in [merged.from, merged.to] {
-            for slot in at[end].iter_mut() {
+            for slot in at.of_node_mut(end) {
                 if *slot == live[1] {
                     *slot = live[0];
                 }
             }
         }
     }
+    compact(axis, |v| keep[v].then_some(v), |i, _| alive[i]);
+}
+
+/// Compacts `axis` in place (fresh memory costs more than the work here on
+/// 10^6 nodes): node `v` stays when `source(v)` is `Some(w)`, taking node
+/// `w`'s disk (`w ≥ v`, not yet moved); the others go, and each edge `i`
+/// with `keep_edge(i, edge)` stays, its ends renumbered (the ends of a
+/// kept edge must stay).
+pub(crate) fn compact(
+    axis: &mut MedialAxis2d,
+    mut source: impl FnMut(usize) -> Option<usize>,
+    mut keep_edge: impl FnMut(usize, &AxisEdge) -> bool,
+) {
+    let n = axis.nodes.len();
     let mut new_id = vec![usize::MAX; n];
-    let mut nodes = Vec::new();
-    for v in 0..n {
-        if keep[v] {
-            new_id[v] = nodes.len();
-            nodes.push(axis.nodes[v]);
+    let mut kept = 0;
+    for (v, id) in new_id.iter_mut().enumerate() {
+        if let Some(w) = source(v) {
+            debug_assert!(w >= v);
+            *id = kept;
+            axis.nodes[kept] = axis.nodes[w];
+            kept += 1;
         }
     }
-    let edges = axis
-        .edges
-        .iter()
-        .zip(&alive)
-        .filter(|(_, &a)| a)
-        .map(|(e, _)| AxisEdge { from: new_id[e.from], to: new_id[e.to], ..*e })
-        .collect();
-    axis.nodes = nodes;
-    axis.edges = edges;
+    axis.nodes.truncate(kept);
+    let mut i = 0;
+    axis.edges.retain_mut(|e| {
+        i += 1;
+        keep_edge(i - 1, e) && {
+            e.from = new_id[e.from];
+            e.to = new_id[e.to];
+            true
+        }
+    });
+}
+
+/// The edges at each node, in one array (compressed rows): a vector per
+/// node cost more to allocate and free than the merge itself on 10^6
+/// nodes.
+struct Incidence {
+    /// Node v's edges are `edges[start[v]..start[v + 1]]`.
+    start: Vec<usize>,
+    edges: Vec<usize>,
+}
+
+impl Incidence {
+    /// Each edge of `axis` listed at both ends, in edge order (a loop
+    /// twice at its node).
+    fn of(axis: &MedialAxis2d) -> Incidence {
+        let n = axis.nodes.len();
+        let mut start = vec![0usize; n + 1];
+        for e in &axis.edges {
+            start[e.from + 1] += 1;
+            start[e.to + 1] += 1;
+        }
+        for v in 0..n {
+            start[v + 1] += start[v];
+        }
+        let mut fill = start.clone();
+        let mut edges = vec![0usize; start[n]];
+        for (i, e) in axis.edges.iter().enumerate() {
+            for v in [e.from, e.to] {
+                edges[fill[v]] = i;
+                fill[v] += 1;
+            }
+        }
+        Incidence { start, edges }
+    }
+
+    fn of_node(&self, v: usize) -> &[usize] {
+        &self.edges[self.start[v]..self.start[v + 1]]
+    }
+
+    fn of_node_mut(&mut self, v: usize) -> &mut [usize] {
+        &mut self.edges[self.start[v]..self.start[v + 1]]
+    }
 }
 
 /// Multi-branching (thesis 2.2.2.2): a disk touching m ≥ 4 primitives is
@@ -141,62 +198,60 @@ pub(crate) fn merge_coinciding_branches(shape: &Shape2d, axis: &mut MedialAxis2d
     // The group's node is the member whose disk fits every primitive of
     // the group's outer edges best; a group that no member fits within
     // half the final check's slack stays apart.
-    let prims = primitives_at(axis, |k| !inner[k], |v| root(&mut parent, v));
-    let misfit = |v: usize, ps: &[Primitive]| {
-        let node = &axis.nodes[v];
-        ps.iter().map(|p| (p.distance(shape, node.point) - node.radius).abs()).fold(0.0, f64::max)
-    };
-    let mut best: Vec<Option<(f64, usize)>> = vec![None; n];
-    for v in 0..n {
-        let g = root(&mut parent, v);
-        let m = misfit(v, &prims[g]);
-        if best[g].is_none_or(|(bm, _)| m < bm) {
-            best[g] = Some((m, v));
-        }
+    // Only groups of two or more nodes (ends of inner edges) are looked at.
+    let group: Vec<usize> = (0..n).map(|v| root(&mut parent, v)).collect();
+    let mut grouped = vec![false; n];
+    for (e, _) in axis.edges.iter().zip(&inner).filter(|(_, &i)| i) {
+        grouped[e.from] = true;
+        grouped[e.to] = true;
     }
-    let fits = |g: usize| best[g].is_some_and(|(m, _)| m <= t.branch_group_fit());
-    let mut new_id = vec![usize::MAX; n];
-    let mut kept = Vec::new();
-    for (v, id) in new_id.iter_mut().enumerate() {
-        let g = root(&mut parent, v);
-        let alone = !fits(g);
-        if alone || g == v {
-            *id = kept.len();
-            kept.push(axis.nodes[if alone { v } else { best[g].map_or(v, |b| b.1) }]);
-        }
-    }
-    let mut edges = Vec::with_capacity(axis.edges.len());
-    for (e, &i) in axis.edges.iter().zip(&inner) {
-        let (ga, gb) = (root(&mut parent, e.from), root(&mut parent, e.to));
-        if i && fits(ga) {
-            continue;
-        }
-        let id = |v: usize, g: usize| if fits(g) { new_id[g] } else { new_id[v] };
-        edges.push(AxisEdge { from: id(e.from, ga), to: id(e.to, gb), ..*e });
-    }
-    axis.edges = edges;
-    axis.nodes = kept;
-}
-
-/// The primitives of the edges `keep(edge index)` at each of their ends,
-/// gathered at `group(node)` (each primitive once, in edge order).
-fn primitives_at(
-    axis: &MedialAxis2d,
-    keep: impl Fn(usize) -> bool,
-    mut group: impl FnMut(usize) -> usize,
-) -> Vec<Vec<Primitive>> {
-    let mut prims: Vec<Vec<Primitive>> = vec![Vec::new(); axis.nodes.len()];
-    for (_, e) in axis.edges.iter().enumerate().filter(|(k, _)| keep(*k)) {
-        for v in [e.from, e.to] {
-            let g = group(v);
+    let mut prims: FastMap<usize, Vec<Primitive>> = FastMap::default();
+    for (e, _) in axis.edges.iter().zip(&inner).filter(|(_, &i)| !i) {
+        for v in [e.from, e.to].into_iter().filter(|&v| grouped[v]) {
+            let ps = prims.entry(group[v]).or_default();
             for p in e.sites {
-                if !prims[g].contains(&p) {
-                    prims[g].push(p);
+                if !ps.contains(&p) {
+                    ps.push(p);
                 }
             }
         }
     }
-    prims
+    let misfit = |v: usize, ps: &[Primitive]| {
+        let node = &axis.nodes[v];
+        ps.iter().map(|p| (p.distance(shape, node.point) - node.radius).abs()).fold(0.0, f64::max)
+    };
+    let mut best: FastMap<usize, (f64, usize)> = FastMap::default();
+    for v in (0..n).filter(|&v| grouped[v]) {
+        let g = group[v];
+        let m = misfit(v, prims.get(&g).map_or(&[][..], Vec::as_slice));
+        if best.get(&g).is_none_or(|&(bm, _)| m < bm) {
+            best.insert(g, (m, v));
+        }
+    }
+    let fits = |g: usize| best.get(&g).is_some_and(|&(m, _)| m <= t.branch_group_fit());
+    // A fitting group's edges end at its root (its smallest member), which
+    // takes the disk of its best member (a later one or itself).
+    let home = |v: usize| if fits(group[v]) { group[v] } else { v };
+    for (e, &i) in axis.edges.iter_mut().zip(&inner) {
+        if !(i && fits(group[e.from])) {
+            e.from = home(e.from);
+            e.to = home(e.to);
+        }
+    }
+    compact(
+        axis,
+        |v| {
+            let g = group[v];
+            if !fits(g) {
+                Some(v)
+            } else {
+                (g == v).then(|| best.get(&g).map_or(v, |b| b.1))
+            }
+        },
+        // An edge inside a fitting group goes (its ends were left as they
+        // were, and a kept edge's remapped ends are their own group's).
+        |i, e| !(inner[i] && fits(group[e.from])),
+    );
 }
 
 /// The edge walked the other way.
@@ -218,10 +273,21 @@ fn reversed(e: AxisEdge) -> AxisEdge {
 /// fits every primitive of the node (otherwise the triples are
 /// ill-conditioned and the slide's disk stays).
 pub(crate) fn polish_branches(kernel: &impl AxisKernel, shape: &Shape2d, axis: &mut MedialAxis2d) {
-    let prims = primitives_at(axis, |_| true, |v| v);
-    for (node, ps) in axis.nodes.iter_mut().zip(&prims) {
-        if node.kind != NodeKind::Branch || ps.len() < 3 {
-            continue;
+    let at = Incidence::of(axis);
+    let edges = &axis.edges;
+    axis.nodes.par_iter_mut().enumerate().for_each(|(v, node)| {
+        if node.kind != NodeKind::Branch {
+            return;
+        }
+        // The node's primitives, each once, in edge order.
+        let mut ps: Vec<Primitive> = Vec::new();
+        for p in at.of_node(v).iter().flat_map(|&i| edges[i].sites) {
+            if !ps.contains(&p) {
+                ps.push(p);
+            }
+        }
+        if ps.len() < 3 {
+            return;
         }
         // Of the disks tangent to three of the node's primitives (every
         // triple of the first eight), the one nearest to fitting them all.
@@ -253,5 +319,5 @@ pub(crate) fn polish_branches(kernel: &impl AxisKernel, shape: &Shape2d, axis: &
                 node.radius = r;
             }
         }
-    }
+    });
 }

@@ -3,10 +3,11 @@
 //! node on both sides, closing a cycle a few tolerances wide that can hold
 //! no hole. The cluster of nodes is one node of the axis.
 
-use std::collections::HashMap;
-
 use crate::plane::axis::{AxisEdge, MedialAxis2d};
-use crate::plane::medial::conquer::check::{root, undirected};
+use crate::plane::medial::conquer::check::{first_of_each, root};
+use crate::plane::medial::conquer::merge::compact;
+use crate::util::fast_hash::FastMap;
+use rayon::prelude::*;
 
 /// Nodes a search for a cycle visits at most, so that it costs little.
 const SEARCH: usize = 64;
@@ -27,14 +28,18 @@ pub(crate) fn contract_rounding_cycles(axis: &mut MedialAxis2d, reach: f64) {
     let n = nodes.len();
     let big = |w: usize| nodes[w].radius > 4.0 * reach;
     let mut parent: Vec<usize> = (0..n).collect();
-    let mut near: HashMap<usize, Vec<usize>> = HashMap::new();
+    let mut near: FastMap<usize, Vec<usize>> = FastMap::default();
     let mut contracted = false;
-    for e in &axis.edges {
+    // Few edges are that short: find them in parallel, then walk them in
+    // order.
+    let short: Vec<&AxisEdge> = axis
+        .edges
+        .par_iter()
+        .filter(|e| e.from != e.to && nodes[e.from].point.dist(nodes[e.to].point) <= reach)
+        .collect();
+    for e in short {
         let (u, v) = (e.from, e.to);
         let p = nodes[u].point;
-        if u == v || p.dist(nodes[v].point) > reach {
-            continue;
-        }
         // Is v already reached from u over short edges, near u?
         let mut seen = vec![u];
         let mut k = 0;
@@ -76,24 +81,23 @@ pub(crate) fn contract_rounding_cycles(axis: &mut MedialAxis2d, reach: f64) {
             chosen[g] = Some(v);
         }
     }
-    let mut new_id = vec![usize::MAX; n];
-    let mut kept = Vec::new();
-    for v in 0..n {
-        if chosen[group[v]] == Some(v) {
-            new_id[group[v]] = kept.len();
-            kept.push(axis.nodes[v]);
+    // In place: edges inside a cluster become loops at its node and go.
+    for e in axis.edges.iter_mut() {
+        let (a, b) = (group[e.from], group[e.to]);
+        if a == b {
+            e.to = e.from;
+        } else {
+            e.from = chosen[a].unwrap_or(e.from);
+            e.to = chosen[b].unwrap_or(e.to);
         }
     }
-    let mut seen = std::collections::HashSet::new();
-    let edges: Vec<AxisEdge> = axis
-        .edges
-        .iter()
-        .filter(|e| group[e.from] != group[e.to])
-        .map(|e| AxisEdge { from: new_id[group[e.from]], to: new_id[group[e.to]], ..*e })
-        .filter(|e| seen.insert(undirected(e)))
-        .collect();
-    axis.nodes = kept;
-    axis.edges = edges;
+    compact(axis, |v| (chosen[group[v]] == Some(v)).then_some(v), |_, e| e.from != e.to);
+    let first = first_of_each(&axis.edges, axis.nodes.len());
+    let mut k = 0;
+    axis.edges.retain(|_| {
+        k += 1;
+        first[k - 1]
+    });
 }
 
 #[cfg(test)]

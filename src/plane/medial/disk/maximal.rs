@@ -422,7 +422,7 @@ fn seen_from_inside(k: &impl AxisKernel, e: &Element, q: Point, c: Point, r: f64
 /// grid of cells `tol` wide, not by comparing with each.
 fn apart(feet: impl Iterator<Item = Footpoint>, tol: f64) -> Vec<Footpoint> {
     let mut out: Vec<Footpoint> = Vec::new();
-    let mut grid: std::collections::HashMap<(i64, i64), Vec<usize>, CellHash> = Default::default();
+    let mut grid: crate::util::fast_hash::FastMap<(i64, i64), Vec<usize>> = Default::default();
     let cell = |p: Point| ((p.x / tol).floor() as i64, (p.y / tol).floor() as i64);
     for f in feet {
         let (i, j) = cell(f.point);
@@ -440,34 +440,6 @@ fn apart(feet: impl Iterator<Item = Footpoint>, tol: f64) -> Vec<Footpoint> {
     }
     out
 }
-
-/// Hashes grid cells with one multiply per coordinate: the default
-/// SipHash took an eighth of the time on a nearly circular curve of 10^6
-/// arcs, and cells need no protection from chosen collisions.
-#[derive(Default)]
-struct CellHasher(u64);
-
-impl std::hash::Hasher for CellHasher {
-    fn finish(&self) -> u64 {
-        self.0
-    }
-
-    fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.write_u64(b as u64);
-        }
-    }
-
-    fn write_i64(&mut self, v: i64) {
-        self.write_u64(v as u64);
-    }
-
-    fn write_u64(&mut self, v: u64) {
-        self.0 = (self.0.rotate_left(26) ^ v).wrapping_mul(0x9e37_79b9_7f4a_7c15);
-    }
-}
-
-type CellHash = std::hash::BuildHasherDefault<CellHasher>;
 
 #[cfg(test)]
 mod tests {
