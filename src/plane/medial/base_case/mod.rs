@@ -38,6 +38,7 @@ use crate::shape::Shape2d;
 mod branch;
 mod cycle;
 mod events;
+mod foot_index;
 mod hug_runs;
 mod hugged;
 mod port;

@@ -3,30 +3,12 @@
 
 use super::branch::Pocket;
 use super::events::EventRef;
+use super::foot_index::FootIndex;
 use super::sites::SiteRef;
 use super::{BaseCaseError, Builder, EventKind, Key, LocalAxis, LocalEdge, LocalNode};
 use crate::kernel::apollonius::Site;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{AxisKernel, Point};
-
-/// A footpoint of another event met walking into a pocket.
-#[derive(Debug, Clone, Copy)]
-struct Met {
-    /// Offset along the cycle from the pocket's start.
-    offset: f64,
-    /// The event it belongs to.
-    event: EventRef,
-    /// Where it lies.
-    key: Key,
-}
-
-impl Met {
-    /// Whether `self` comes before `other` walking into the pocket: by
-    /// offset, and where both share a position by their contacts' lags.
-    fn before(&self, other: &Met) -> bool {
-        self.offset < other.offset || (self.offset == other.offset && self.key.lag < other.key.lag)
-    }
-}
 
 impl<K: AxisKernel> Builder<'_, K> {
     /// True when the pocket of event `d` from `a` to `b` holds no more
@@ -86,6 +68,7 @@ impl<K: AxisKernel> Builder<'_, K> {
         // Every pocket is walked a few times (once more per branch point
         // found in it); far more steps means the walk is going round.
         let budget = 64 * (self.n() + self.events.len()) + 64;
+        let mut index = FootIndex::new(&self, &self.events);
         let mut steps = 0;
         while let Some((d, j)) = work.pop() {
             steps += 1;
@@ -96,32 +79,7 @@ impl<K: AxisKernel> Builder<'_, K> {
             let (a, b) = (feet[j], feet[(j + 1) % feet.len()]);
             let span = if a == b { 2.0 * self.n() as f64 } else { self.offset(a, b) };
             // The first footpoints of other events met from either end.
-            let (mut first, mut last): (Option<Met>, Option<Met>) = (None, None);
-            for (id, e) in self.events.iter().enumerate().map(|(i, e)| (EventRef(i), e)) {
-                if id == d {
-                    continue;
-                }
-                for &k in &e.feet {
-                    let o = self.offset(a, k);
-                    // A footpoint snapped onto the pocket's start or end
-                    // is inside when its contact lies on the inner side.
-                    let inside = match () {
-                        _ if o == 0.0 => k.lag > a.lag,
-                        _ if o == span => k.lag < b.lag,
-                        _ => o > 0.0 && o < span,
-                    };
-                    if !inside {
-                        continue;
-                    }
-                    let met = Met { offset: o, event: id, key: k };
-                    if first.is_none_or(|f| met.before(&f)) {
-                        first = Some(met);
-                    }
-                    if last.is_none_or(|f| f.before(&met)) {
-                        last = Some(met);
-                    }
-                }
-            }
+            let (first, last) = index.first_and_last(&self, d, a, b, span);
             // A pocket with no other event in it must hold no boundary (but
             // slivers); one with events is walked even if it is thin.
             let (Some(first), Some(last)) = (first, last) else {
@@ -169,6 +127,7 @@ impl<K: AxisKernel> Builder<'_, K> {
             feet.retain(|k| found.snapped.iter().zip(&found.contacts).all(|(sn, ct)| k != sn || sn == ct));
             let feet = self.one_per_hug(c, r, feet, &found.contacts, &whole);
             let id = self.add_event(c, r, EventKind::Branch, feet, whole);
+            index.update(&self, id, &self.events[id].feet);
             work.push((d, j));
             work.extend((0..self.events[id].feet.len()).map(|k| (id, k)));
         }
