@@ -137,8 +137,11 @@ fn tangent_disks_at_origin(sites: [Site; 3]) -> Vec<(Point, f64)> {
     let a: [[f64; 4]; 3] = eqs.map(|e| e.0);
     let b: [f64; 3] = eqs.map(|e| -e.1);
     // The null vector of A: signed 3×3 minors (a generalised cross product).
+    // The three columns other than `skip` (arrays, not vectors: this runs
+    // for every candidate branch point of every base case).
+    let others = |skip: usize| [0, 1, 2].map(|k| if k < skip { k } else { k + 1 });
     let minor = |skip: usize| {
-        let cols: Vec<usize> = (0..4).filter(|&j| j != skip).collect();
+        let cols = others(skip);
         det3([0, 1, 2].map(|i| [a[i][cols[0]], a[i][cols[1]], a[i][cols[2]]]))
     };
     let v = [minor(0), -minor(1), minor(2), -minor(3)];
@@ -150,7 +153,7 @@ fn tangent_disks_at_origin(sites: [Site; 3]) -> Vec<(Point, f64)> {
     // A particular solution: the one orthogonal to v, from the 3×3 system
     // in the three coordinates where v is smallest (Cramer's rule).
     let big = (0..4).max_by(|&i, &j| v[i].abs().total_cmp(&v[j].abs())).unwrap_or(0);
-    let cols: Vec<usize> = (0..4).filter(|&j| j != big).collect();
+    let cols = others(big);
     let m = [0, 1, 2].map(|i| [a[i][cols[0]], a[i][cols[1]], a[i][cols[2]]]);
     let d = det3(m);
     let mut x0 = [0.0; 4];
@@ -166,7 +169,11 @@ fn tangent_disks_at_origin(sites: [Site; 3]) -> Vec<(Point, f64)> {
     let qa = q(v, v);
     let qb = 2.0 * q(x0, v) - v[3];
     let qc = q(x0, x0) - x0[3];
-    let mut lambdas = Vec::with_capacity(2);
+    let mut lambdas: [Option<f64>; 2] = [None; 2];
+    let mut push = |l: f64| {
+        let slot = usize::from(lambdas[0].is_some());
+        lambdas[slot] = Some(l);
+    };
     // Linear only when the quadratic term moves the near root by less than
     // rounding: its relative effect there is qa·qc / qb². (Comparing qa
     // with the other coefficients alone dropped it for a point and two
@@ -174,7 +181,7 @@ fn tangent_disks_at_origin(sites: [Site; 3]) -> Vec<(Point, f64)> {
     // cone, and placed the disk 2 % of its radius off the point.)
     if qa == 0.0 || (qa * qc).abs() <= 1e-17 * qb * qb {
         if qb != 0.0 {
-            lambdas.push(-qc / qb);
+            push(-qc / qb);
         }
     } else {
         let disc = qb * qb - 4.0 * qa * qc;
@@ -182,16 +189,19 @@ fn tangent_disks_at_origin(sites: [Site; 3]) -> Vec<(Point, f64)> {
             // Stable roots: no cancellation between −b and ±√disc.
             let s = -0.5 * (qb + qb.signum() * disc.sqrt());
             if s != 0.0 {
-                lambdas.push(qc / s);
+                push(qc / s);
             }
-            lambdas.push(s / qa);
+            push(s / qa);
         }
     }
-    let mut out: Vec<(Point, f64)> = lambdas
-        .into_iter()
-        .map(|l| (Point::new(x0[0] + l * v[0], x0[1] + l * v[1]), x0[2] + l * v[2]))
-        .filter(|(c, r)| c.is_finite() && r.is_finite() && *r > 0.0)
-        .collect();
+    let mut out: Vec<(Point, f64)> = Vec::with_capacity(2);
+    out.extend(
+        lambdas
+            .into_iter()
+            .flatten()
+            .map(|l| (Point::new(x0[0] + l * v[0], x0[1] + l * v[1]), x0[2] + l * v[2]))
+            .filter(|(c, r)| c.is_finite() && r.is_finite() && *r > 0.0),
+    );
     out.sort_by(|a, b| a.1.total_cmp(&b.1));
     out.dedup_by(|a, b| (a.1 - b.1).abs() <= 1e-12 * b.1 && a.0.dist(b.0) <= 1e-12 * (1.0 + b.1));
     out
