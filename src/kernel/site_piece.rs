@@ -63,20 +63,46 @@ impl SitePiece {
             Site::Point(q) => c.dist(q),
             Site::Line { .. } => self.distance(c).0,
             Site::Circle { o, r, .. } => {
-                let (va, vb, v) = (ends[0] - o, ends[1] - o, c - o);
-                let s = if self.u1 >= self.u0 { 1.0 } else { -1.0 };
-                let inside = if (self.u1 - self.u0).abs() <= std::f64::consts::PI {
-                    s * va.cross(v) >= 0.0 && s * v.cross(vb) >= 0.0
-                } else {
-                    !(s * vb.cross(v) > 0.0 && s * v.cross(va) > 0.0)
-                };
-                if inside {
+                if self.in_sweep(c, ends) {
                     (c.dist(o) - r).abs()
                 } else {
                     c.dist(ends[0]).min(c.dist(ends[1]))
                 }
             }
         }
+    }
+
+    /// Whether the direction of `c` from a circle's centre lies within the
+    /// piece's range of angles (`ends` its points at `u0`, `u1`), decided
+    /// by signs instead of angles: the same answer as comparing
+    /// [`param`](Self::param) with the range, except within rounding of an
+    /// end. False for other carriers.
+    pub fn in_sweep(&self, c: Point, ends: [Point; 2]) -> bool {
+        let Site::Circle { o, .. } = self.site else { return false };
+        let (va, vb, v) = (ends[0] - o, ends[1] - o, c - o);
+        let s = if self.u1 >= self.u0 { 1.0 } else { -1.0 };
+        if (self.u1 - self.u0).abs() <= std::f64::consts::PI {
+            s * va.cross(v) >= 0.0 && s * v.cross(vb) >= 0.0
+        } else {
+            !(s * vb.cross(v) > 0.0 && s * v.cross(va) > 0.0)
+        }
+    }
+
+    /// [`in_sweep`](Self::in_sweep) with an answer for outside too:
+    /// `Some(true)` within the range of angles, `Some(false)` more than
+    /// twice `slack` (radians) beyond both ends, `None` near an end (or for
+    /// another carrier), where angles must decide.
+    pub fn sweep_side(&self, c: Point, ends: [Point; 2], slack: f64) -> Option<bool> {
+        let Site::Circle { o, .. } = self.site else { return None };
+        if self.in_sweep(c, ends) {
+            return Some(true);
+        }
+        let v = c - o;
+        let beyond = |e: Point| {
+            let e = e - o;
+            v.dot(e) <= 0.0 || v.cross(e).abs() > 2.0 * slack * v.norm() * e.norm()
+        };
+        (beyond(ends[0]) && beyond(ends[1])).then_some(false)
     }
 
     /// Distance (model units) from `c` to the piece, and the parameter of

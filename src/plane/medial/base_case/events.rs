@@ -103,7 +103,14 @@ impl<K: AxisKernel> Builder<'_, K> {
                         continue;
                     }
                 }
-                let k = self.key_of_contact(i, u, self.param(i, c, r), r);
+                // Strictly inside a fan's or an arc's range the nearest
+                // point's parameter is the tangency's (one angle, not two).
+                let (lo, hi) = (s.u0.min(s.u1), s.u0.max(s.u1));
+                let free = match s.site {
+                    Site::Point(_) | Site::Circle { .. } if lo < u && u < hi => u,
+                    _ => self.param(i, c, r),
+                };
+                let k = self.key_of_contact(i, u, free, r);
                 // A touch at a reflex vertex belongs to the vertex's fan,
                 // at the disk's direction, not to the element's end.
                 if self.fan_owns(i, k) {
@@ -241,12 +248,17 @@ impl<K: AxisKernel> Builder<'_, K> {
             let (lo, hi) = (s.u0.min(s.u1), s.u0.max(s.u1));
             if let Some(t) = self.k().touch_site(&g, &s.site).filter(|&t| t > t_min && t < best) {
                 let c = g.center(t);
-                let u = self.param(i, c, t);
                 let slack = match s.site {
                     Site::Circle { r, .. } => self.tol.touch() / r,
                     _ => self.tol.touch(),
                 };
-                if u >= lo - slack && u <= hi + slack && s.site.contact(c, t).dist(p) > self.tol.touch() {
+                // An arc's sweep decided by signs where the direction is
+                // clearly in or out (the slack is far above rounding).
+                let in_range = self.piece(i).sweep_side(c, s.ends, slack).unwrap_or_else(|| {
+                    let u = self.param(i, c, t);
+                    u >= lo - slack && u <= hi + slack
+                });
+                if in_range && s.site.contact(c, t).dist(p) > self.tol.touch() {
                     best = best.min(t);
                 }
             }
@@ -350,7 +362,10 @@ impl<K: AxisKernel> Builder<'_, K> {
             // the rest of the fan is real boundary for the axis.
             return false;
         }
-        (0..=8).all(|k| {
+        // The far end and the middle first: where the boundary leaves the
+        // circle it is farthest there, and most calls end at the first
+        // sample (the answer does not depend on the order).
+        [8, 4, 0, 2, 6, 1, 3, 5, 7].into_iter().all(|k| {
             let w = w0 + (w1 - w0) * k as f64 / 8.0;
             self.k().point_contact(Disk::new(c, r), self.point_of(i, self.u_at(i, w)), self.tol.hug())
                 == Contact::Touching
