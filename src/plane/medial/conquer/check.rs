@@ -11,6 +11,7 @@ use crate::plane::axis::{AxisEdge, MedialAxis2d, NodeKind};
 use crate::plane::medial::conquer::error::AxisError;
 use crate::plane::medial::disk::maximal::DiskFinder;
 use crate::shape::{JointKind, Shape2d};
+use crate::util::fast_hash::FastSet;
 use rayon::prelude::*;
 
 /// Where along each edge (fractions of its parameter range) [`check_disks`]
@@ -164,49 +165,16 @@ pub(crate) fn undirected(e: &AxisEdge) -> (usize, usize, [Primitive; 2]) {
     }
 }
 
-/// Buckets of [`first_of_each`] longer than this are sorted rather than
-/// compared pairwise.
-const LONG_BUCKET: usize = 16;
-
-/// For each edge, whether it is the first of the edges with its
-/// [`undirected`] key (`n` nodes): two subshapes that hold the same
-/// stretch of axis give it twice. Edges are bucketed by their smaller end
-/// and compared within a bucket; a hash set of 10^6 keys spent most of
-/// its time in page faults as it grew.
-pub(crate) fn first_of_each(edges: &[AxisEdge], n: usize) -> Vec<bool> {
-    let low = |e: &AxisEdge| e.from.min(e.to);
-    let mut start = vec![0usize; n + 1];
-    for e in edges {
-        start[low(e) + 1] += 1;
-    }
-    for v in 0..n {
-        start[v + 1] += start[v];
-    }
-    let mut fill = start.clone();
-    let mut at = vec![0usize; edges.len()];
-    for (i, e) in edges.iter().enumerate() {
-        at[fill[low(e)]] = i;
-        fill[low(e)] += 1;
-    }
-    let mut first = vec![true; edges.len()];
-    for v in 0..n {
-        let bucket = &mut at[start[v]..start[v + 1]];
-        if bucket.len() <= LONG_BUCKET {
-            // In edge order: an edge is a repeat when an earlier one in
-            // its bucket has its key.
-            for k in 0..bucket.len() {
-                let key = undirected(&edges[bucket[k]]);
-                first[bucket[k]] = !bucket[..k].iter().any(|&j| undirected(&edges[j]) == key);
-            }
-        } else {
-            // A node of many edges (the centre of a regular polygon of many
-            // sides before its branch points merge): sorted by key, then
-            // by edge order.
-            bucket.sort_unstable_by_key(|&i| (undirected(&edges[i]), i));
-            for k in 1..bucket.len() {
-                first[bucket[k]] = undirected(&edges[bucket[k]]) != undirected(&edges[bucket[k - 1]]);
-            }
-        }
-    }
-    first
+/// Keeps the first edge of each [`undirected`] key among the edges marked
+/// in `maybe` (in edge order; the others stay whatever their keys): the
+/// caller marks every edge that can repeat another, a few of 10^6, so
+/// the set stays small (a set of all keys spent most of its time in page
+/// faults as it grew).
+pub(crate) fn drop_repeats(edges: &mut Vec<AxisEdge>, maybe: &[bool]) {
+    let mut seen = FastSet::default();
+    let mut i = 0;
+    edges.retain(|e| {
+        i += 1;
+        !maybe[i - 1] || seen.insert(undirected(e))
+    });
 }

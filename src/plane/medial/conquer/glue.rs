@@ -8,7 +8,7 @@ use crate::kernel::tolerance::Tolerance;
 use crate::kernel::AxisKernel;
 use crate::plane::axis::{edge_kind, AxisEdge, AxisNode, MedialAxis2d, NodeKind};
 use crate::plane::medial::base_case::{EventKind, LocalAxis};
-use crate::plane::medial::conquer::check::{check_graph, first_of_each};
+use crate::plane::medial::conquer::check::{check_graph, drop_repeats};
 use crate::plane::medial::conquer::error::AxisError;
 use crate::plane::medial::conquer::merge::{merge_coinciding_branches, merge_pass_through, polish_branches};
 use crate::plane::medial::conquer::rounding::contract_rounding_cycles;
@@ -71,14 +71,12 @@ pub fn glue<K: AxisKernel>(
         }
     }
     // Two subshapes that both hold the same stretch of axis (between two
-    // disks met twice) give the same edge twice: keep one.
+    // disks met twice) give the same edge twice: keep one. Only an edge
+    // between two ports can repeat (every other node is one subshape's,
+    // whose walk links each pair once).
     edges.retain(|e| e.from != e.to);
-    let first = first_of_each(&edges, nodes.len());
-    let mut k = 0;
-    edges.retain(|_| {
-        k += 1;
-        first[k - 1]
-    });
+    let between_ports: Vec<bool> = edges.iter().map(|e| is_port[e.from] && is_port[e.to]).collect();
+    drop_repeats(&mut edges, &between_ports);
     let mut axis = MedialAxis2d { nodes, edges };
     is_joint.resize(axis.nodes.len(), false);
     merge_pass_through(shape, &mut axis, &is_port, &is_joint);

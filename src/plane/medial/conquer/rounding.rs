@@ -3,8 +3,8 @@
 //! node on both sides, closing a cycle a few tolerances wide that can hold
 //! no hole. The cluster of nodes is one node of the axis.
 
-use crate::plane::axis::{AxisEdge, MedialAxis2d};
-use crate::plane::medial::conquer::check::{first_of_each, root};
+use crate::plane::axis::MedialAxis2d;
+use crate::plane::medial::conquer::check::drop_repeats;
 use crate::plane::medial::conquer::merge::compact;
 use crate::util::fast_hash::FastMap;
 use rayon::prelude::*;
@@ -27,18 +27,44 @@ pub(crate) fn contract_rounding_cycles(axis: &mut MedialAxis2d, reach: f64) {
     let nodes = &axis.nodes;
     let n = nodes.len();
     let big = |w: usize| nodes[w].radius > 4.0 * reach;
-    let mut parent: Vec<usize> = (0..n).collect();
-    let mut near: FastMap<usize, Vec<usize>> = FastMap::default();
-    let mut contracted = false;
     // Few edges are that short: find them in parallel, then walk them in
-    // order.
-    let short: Vec<&AxisEdge> = axis
+    // order. Everything below is sized by them, not by the axis (10^6
+    // nodes: fresh memory per node cost more than the search).
+    let short: Vec<(usize, usize)> = axis
         .edges
         .par_iter()
         .filter(|e| e.from != e.to && nodes[e.from].point.dist(nodes[e.to].point) <= reach)
+        .map(|e| (e.from, e.to))
         .collect();
-    for e in short {
-        let (u, v) = (e.from, e.to);
+    if short.is_empty() {
+        return;
+    }
+    // The short edges seen so far at each node, in the order seen: a list
+    // per node threaded through `links` (first and last link per node).
+    let mut ends = vec![(NONE, NONE); n];
+    let mut links: Vec<(usize, u32)> = Vec::with_capacity(2 * short.len());
+    let link = |ends: &mut Vec<(u32, u32)>, links: &mut Vec<(usize, u32)>, a: usize, b: usize| {
+        let id = links.len() as u32;
+        links.push((b, NONE));
+        match ends[a] {
+            (NONE, _) => ends[a] = (id, id),
+            (first, last) => {
+                links[last as usize].1 = id;
+                ends[a] = (first, id);
+            }
+        }
+    };
+    // Union-find over the nodes of contracted clusters only; a root is its
+    // set's smallest node.
+    let mut parent: FastMap<usize, usize> = FastMap::default();
+    let find = |parent: &FastMap<usize, usize>, mut x: usize| {
+        while let Some(&p) = parent.get(&x) {
+            x = p;
+        }
+        x
+    };
+    let mut members: Vec<usize> = Vec::new();
+    for &(u, v) in &short {
         let p = nodes[u].point;
         // Is v already reached from u over short edges, near u?
         let mut seen = vec![u];
@@ -47,65 +73,93 @@ pub(crate) fn contract_rounding_cycles(axis: &mut MedialAxis2d, reach: f64) {
         while k < seen.len() && seen.len() < SEARCH && !closes {
             let w = seen[k];
             k += 1;
-            for &x in near.get(&w).map_or(&[][..], Vec::as_slice) {
+            let mut at = ends[w].0;
+            while at != NONE {
+                let (x, next) = links[at as usize];
                 if x == v {
                     closes = true;
                 } else if !seen.contains(&x) && nodes[x].point.dist(p) <= reach {
                     seen.push(x);
                 }
+                at = next;
             }
         }
         if closes && big(v) && seen.iter().all(|&w| big(w)) {
             for &w in seen.iter().chain([&v]) {
-                let (a, b) = (root(&mut parent, u), root(&mut parent, w));
-                parent[a.max(b)] = a.min(b);
+                let (a, b) = (find(&parent, u), find(&parent, w));
+                if a != b {
+                    parent.insert(a.max(b), a.min(b));
+                }
+                members.extend([u, w]);
             }
-            contracted = true;
         }
-        near.entry(u).or_default().push(v);
-        near.entry(v).or_default().push(u);
+        link(&mut ends, &mut links, u, v);
+        link(&mut ends, &mut links, v, u);
     }
-    if !contracted {
+    if members.is_empty() {
         return;
     }
-    let group: Vec<usize> = (0..n).map(|v| root(&mut parent, v)).collect();
-    let mut leaving = vec![0usize; n];
-    for e in axis.edges.iter().filter(|e| group[e.from] != group[e.to]) {
-        leaving[e.from] += 1;
-        leaving[e.to] += 1;
+    drop(ends);
+    members.sort_unstable();
+    members.dedup();
+    let mut in_cluster = vec![false; n];
+    for &v in &members {
+        in_cluster[v] = true;
     }
-    let mut chosen: Vec<Option<usize>> = vec![None; n];
-    for v in 0..n {
-        let g = group[v];
-        if chosen[g].is_none_or(|c| leaving[v] > leaving[c]) {
-            chosen[g] = Some(v);
+    let group = |v: usize| if in_cluster[v] { find(&parent, v) } else { v };
+    let mut leaving: FastMap<usize, usize> = FastMap::default();
+    for e in axis.edges.iter().filter(|e| in_cluster[e.from] || in_cluster[e.to]) {
+        if group(e.from) != group(e.to) {
+            for v in [e.from, e.to].into_iter().filter(|&v| in_cluster[v]) {
+                *leaving.entry(v).or_default() += 1;
+            }
         }
     }
+    // The cluster's node: the member with most edges leaving (the first
+    // of those in node order).
+    let mut chosen: FastMap<usize, usize> = FastMap::default();
+    let left = |v: usize| leaving.get(&v).copied().unwrap_or(0);
+    for &v in &members {
+        let g = group(v);
+        if chosen.get(&g).is_none_or(|&c| left(v) > left(c)) {
+            chosen.insert(g, v);
+        }
+    }
+    let node_of = |v: usize| if in_cluster[v] { chosen[&group(v)] } else { v };
     // In place: edges inside a cluster become loops at its node and go.
-    for e in axis.edges.iter_mut() {
-        let (a, b) = (group[e.from], group[e.to]);
-        if a == b {
+    for e in axis.edges.iter_mut().filter(|e| in_cluster[e.from] || in_cluster[e.to]) {
+        if group(e.from) == group(e.to) {
             e.to = e.from;
         } else {
-            e.from = chosen[a].unwrap_or(e.from);
-            e.to = chosen[b].unwrap_or(e.to);
+            e.from = node_of(e.from);
+            e.to = node_of(e.to);
         }
     }
-    compact(axis, |v| (chosen[group[v]] == Some(v)).then_some(v), |_, e| e.from != e.to);
-    let first = first_of_each(&axis.edges, axis.nodes.len());
-    let mut k = 0;
-    axis.edges.retain(|_| {
-        k += 1;
-        first[k - 1]
-    });
+    // Only an edge that now ends at a cluster's node can repeat another.
+    let mut at_cluster = Vec::with_capacity(axis.edges.len());
+    compact(
+        axis,
+        |v| (node_of(v) == v).then_some(v),
+        |_, e| {
+            let keep = e.from != e.to;
+            if keep {
+                at_cluster.push(in_cluster[e.from] || in_cluster[e.to]);
+            }
+            keep
+        },
+    );
+    drop_repeats(&mut axis.edges, &at_cluster);
 }
+
+/// No link (the end of a node's list of short edges).
+const NONE: u32 = u32::MAX;
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::kernel::bisector::ConicKind;
     use crate::kernel::Point;
-    use crate::plane::axis::{AxisNode, NodeKind, Primitive};
+    use crate::plane::axis::{AxisEdge, AxisNode, NodeKind, Primitive};
     use crate::shape::ElementRef;
 
     fn node(x: f64, y: f64, radius: f64) -> AxisNode {
