@@ -76,6 +76,15 @@ fn nearly_circular_curves() {
 
 #[test]
 #[ignore = "slow tier: scripts/test-all runs it in release"]
+fn inputs_that_broke_down_until_stop_33() {
+    // "the axis fell apart into pieces" before; computes since stop 33.
+    sweep("within 1e-5 of a circle 5e4", samples::fourier_curve(50_000, 1, 1e-5));
+    // "no branch point in a pocket" after three decompositions before.
+    sweep("random holes 450x450 seed 3", samples::random_holes(450, 3));
+}
+
+#[test]
+#[ignore = "slow tier: scripts/test-all runs it in release"]
 fn star_polygons_and_flowers_at_1e5_and_3e5() {
     for seed in 1..=2 {
         sweep(&format!("star 1e5 seed {seed}"), samples::star_polygon(100_000, seed));
@@ -89,8 +98,8 @@ fn star_polygons_and_flowers_at_1e5_and_3e5() {
 #[test]
 #[ignore = "slow tier: scripts/test-all runs it in release"]
 fn plates_of_random_holes() {
-    // About 5 elements per hole: 10^5 and 3·10^5 elements. At 9·10^5
-    // (450 × 450, seed 3) a pocket still loses its branch point (issue 17).
+    // About 5 elements per hole: 10^5 and 3·10^5 elements (9·10^5 in
+    // `inputs_that_broke_down_until_stop_33`).
     for (k, seed) in [(140, 1), (245, 2)] {
         sweep(&format!("random holes {k}x{k} seed {seed}"), samples::random_holes(k, seed));
     }
