@@ -149,38 +149,38 @@ pub trait AxisKernel: Kernel + Copy + Send + Sync + 'static {
         (self.contact(d, disk.radius, tol), u)
     }
 
-    /// How `disk` meets every primitive inside the disk `bound` (centre,
-    /// radius), when the bound alone decides it within `tol`: `Apart` when
-    /// all its points lie more than `tol` outside the circle, `Overlapping`
-    /// when the nearest lies more than `tol` inside; `None` otherwise. A
-    /// cheap test before [`piece_contact_at`](Self::piece_contact_at),
-    /// with twice `tol` of room for the rounding of either distance.
+    /// How `disk` meets a primitive whose distance from the disk's centre
+    /// lies in `[near, far]` (model units), when that range alone decides
+    /// it within `tol`: `Apart` when even `near` is more than `tol` outside
+    /// the circle, `Overlapping` when even `far` is more than `tol` inside;
+    /// `None` otherwise. Twice `tol` of room for the rounding of the range.
     #[inline]
-    fn bound_contact(&self, disk: Disk, bound: (Point, f64), tol: f64) -> Option<Contact> {
-        let d = disk.center.dist(bound.0);
-        if d - disk.radius > bound.1 + 2.0 * tol {
+    fn range_contact(&self, near: f64, far: f64, radius: f64, tol: f64) -> Option<Contact> {
+        if near > radius + 2.0 * tol {
             Some(Contact::Apart)
-        } else if d + bound.1 < disk.radius - 2.0 * tol {
+        } else if far < radius - 2.0 * tol {
             Some(Contact::Overlapping)
         } else {
             None
         }
     }
 
-    /// How `disk` meets `piece` (whose points at `u0`, `u1` are `ends`)
-    /// when that is clear without trigonometry: `Apart` or `Overlapping`
-    /// by more than twice `tol`; `None` when the contact is within reach
-    /// and [`piece_contact_at`](Self::piece_contact_at) decides.
+    /// [`range_contact`](Self::range_contact) for every primitive inside
+    /// the disk `bound` (centre, radius): a cheap test before
+    /// [`piece_contact_at`](Self::piece_contact_at).
+    #[inline]
+    fn bound_contact(&self, disk: Disk, bound: (Point, f64), tol: f64) -> Option<Contact> {
+        let d = disk.center.dist(bound.0);
+        self.range_contact(d - bound.1, d + bound.1, disk.radius, tol)
+    }
+
+    /// [`range_contact`](Self::range_contact) for `piece` (whose points at
+    /// `u0`, `u1` are `ends`) at its distance without trigonometry
+    /// ([`SitePiece::distance_near`]).
     #[inline]
     fn quick_contact(&self, disk: Disk, piece: &SitePiece, ends: [Point; 2], tol: f64) -> Option<Contact> {
         let d = piece.distance_near(disk.center, ends);
-        if d > disk.radius + 2.0 * tol {
-            Some(Contact::Apart)
-        } else if d < disk.radius - 2.0 * tol {
-            Some(Contact::Overlapping)
-        } else {
-            None
-        }
+        self.range_contact(d, d, disk.radius, tol)
     }
 
     /// Where `v` points relative to the direction `n`: the side of the

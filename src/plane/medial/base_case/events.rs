@@ -60,12 +60,15 @@ impl<K: AxisKernel> Builder<'_, K> {
 
     /// How the circle (`c`, `r`) meets site `i`'s piece, within `tol`.
     pub(super) fn contact(&self, i: SiteRef, c: Point, r: f64, tol: f64) -> Contact {
-        let (disk, s) = (Disk::new(c, r), &self.sites[i]);
-        let piece = self.piece(i);
-        self.k()
-            .bound_contact(disk, s.bound, tol)
-            .or_else(|| self.k().quick_contact(disk, &piece, s.ends, tol))
-            .unwrap_or_else(|| self.k().piece_contact(disk, &piece, tol))
+        let disk = Disk::new(c, r);
+        self.clear_contact(i, disk, tol).unwrap_or_else(|| self.k().piece_contact(disk, &self.piece(i), tol))
+    }
+
+    /// How `disk` meets site `i` when its bounding disk or its distance
+    /// without trigonometry decides it within `tol`; `None` near contact.
+    fn clear_contact(&self, i: SiteRef, disk: Disk, tol: f64) -> Option<Contact> {
+        let s = &self.sites[i];
+        self.k().bound_contact(disk, s.bound, tol).or_else(|| self.k().quick_contact(disk, &self.piece(i), s.ends, tol))
     }
 
     /// True when the disk (`c`, `r`) crosses one of the auxiliary arcs.
@@ -87,12 +90,10 @@ impl<K: AxisKernel> Builder<'_, K> {
                 }
             }
             let (disk, s) = (Disk::new(c, r), &self.sites[i]);
-            if self.k().bound_contact(disk, s.bound, self.touch).is_some()
-                || self.k().quick_contact(disk, &self.piece(i), s.ends, self.touch).is_some()
-            {
+            if self.clear_contact(i, disk, self.touch).is_some() {
                 continue;
             }
-            let (contact, u) = self.k().piece_contact_at(Disk::new(c, r), &self.piece(i), self.touch);
+            let (contact, u) = self.k().piece_contact_at(disk, &self.piece(i), self.touch);
             if contact == Contact::Touching && self.faces_inside(i, c, u) {
                 if let Site::Point(q) = self.sites[i].site {
                     // A disk through a reflex vertex from outside its fan

@@ -7,23 +7,27 @@ use super::events::{Event, EventRef};
 use super::{Builder, Key};
 use crate::kernel::AxisKernel;
 
-/// One footpoint: its cycle position and contact lag (the order), then the
-/// event and the footpoint's index in it (the order among exact ties, the
-/// order in which the walk once met them).
+/// One footpoint: its cycle position (kept for the binary searches) and
+/// its key's lag (the order), then the event and the footpoint's index in
+/// it (the order among exact ties, the order in which the walk once met
+/// them).
 #[derive(Debug, Clone, Copy)]
 struct Entry {
     pos: f64,
-    lag: f64,
     event: usize,
     foot: usize,
     key: Key,
 }
 
 impl Entry {
+    fn new<K: AxisKernel>(b: &Builder<'_, K>, event: usize, foot: usize, key: Key) -> Entry {
+        Entry { pos: b.pos(key), event, foot, key }
+    }
+
     fn order(&self, o: &Entry) -> std::cmp::Ordering {
         self.pos
             .total_cmp(&o.pos)
-            .then(self.lag.total_cmp(&o.lag))
+            .then(self.key.lag.total_cmp(&o.key.lag))
             .then(self.event.cmp(&o.event))
             .then(self.foot.cmp(&o.foot))
     }
@@ -55,7 +59,7 @@ impl Met {
 }
 
 /// The footpoints of all events, sorted by [`Entry::order`].
-#[derive(Debug, Default)]
+#[derive(Debug)]
 pub(super) struct FootIndex {
     entries: Vec<Entry>,
 }
@@ -66,15 +70,7 @@ impl FootIndex {
         let mut entries: Vec<Entry> = events
             .iter()
             .enumerate()
-            .flat_map(|(event, e)| {
-                e.feet.iter().enumerate().map(move |(foot, &key)| Entry {
-                    pos: b.pos(key),
-                    lag: key.lag,
-                    event,
-                    foot,
-                    key,
-                })
-            })
+            .flat_map(|(event, e)| e.feet.iter().enumerate().map(move |(foot, &key)| Entry::new(b, event, foot, key)))
             .collect();
         entries.sort_by(Entry::order);
         FootIndex { entries }
@@ -84,7 +80,7 @@ impl FootIndex {
     pub(super) fn update<K: AxisKernel>(&mut self, b: &Builder<'_, K>, id: EventRef, feet: &[Key]) {
         self.entries.retain(|e| e.event != id.0);
         for (foot, &key) in feet.iter().enumerate() {
-            let entry = Entry { pos: b.pos(key), lag: key.lag, event: id.0, foot, key };
+            let entry = Entry::new(b, id.0, foot, key);
             let at = self.entries.partition_point(|e| e.order(&entry).is_lt());
             self.entries.insert(at, entry);
         }
@@ -121,8 +117,8 @@ impl FootIndex {
         // along them, so the first inside is met first scanning forwards and
         // the last scanning backwards. Offsets that rounding makes equal for
         // distinct positions are settled by `Met::before`, as in a full scan.
-        let start = self.entries.partition_point(|e| e.pos < pa || (e.pos == pa && e.lag <= a.lag));
-        let stop = self.entries.partition_point(|e| e.pos < pb || (e.pos == pb && e.lag < b.lag));
+        let start = self.entries.partition_point(|e| e.pos < pa || (e.pos == pa && e.key.lag <= a.lag));
+        let stop = self.entries.partition_point(|e| e.pos < pb || (e.pos == pb && e.key.lag < b.lag));
         let count = if a == b { n } else { (stop + n - start) % n };
         let at = |k: usize| &self.entries[(start + k) % n];
         let mut first: Option<Met> = None;
