@@ -79,3 +79,44 @@ fn a_band_whose_other_side_is_only_a_joint() {
     assert_eq!((local.nodes.len(), local.edges.len()), (2, 1));
     assert!(local.edges[0].straight);
 }
+
+/// Replays `files` of `shape` and checks each leaf's axis by brute force.
+fn replay_checked(shape: &Shape2d, files: &[&str]) {
+    let finder = DiskFinder::new(shape);
+    let tol = 1e-9 * shape.bbox().diagonal();
+    for file in files {
+        let local = replay(shape, &finder, file);
+        assert_eq!(local.edges.len() + 1, local.nodes.len(), "{file}: not a tree");
+        for n in &local.nodes {
+            let d = boundary_distance(shape, n.center);
+            assert!((d - n.radius).abs() <= tol, "{file}: node {n:?} is {d} from the boundary");
+        }
+    }
+}
+
+#[test]
+fn leaves_where_contacts_are_placed_by_rounding() {
+    // A smooth random curve of 3·10^5 biarcs (Fourier seed 11), where arcs
+    // are shorter than the √(τ·r) to which a contact along them is placed.
+    // Leaf 10723: two chains between dividing disks 3·10^-4 apart; a joint
+    // of two segments that turn by 7·10^-7 rad (smooth within the angular
+    // tolerance) grows its disk along their mean normal, which touches
+    // each side 8·10^-8 (25τ) from the joint, while another disk's contact
+    // clamped onto the joint was ordered after it (measured from the
+    // segment's end, not from the joint's own disk). Leaf 1093: three
+    // dividing disks 2·10^-4 apart; the branch point touches one side's
+    // carrier half an arc before the chain's end, within τ of that end.
+    let shape = Shape2d::from_bulge_loops(samples::fourier_biarcs(300_000, 11), &ShapeOptions::default()).unwrap();
+    replay_checked(&shape, &["fourier3e5_seed11_leaf_10723.txt", "fourier3e5_seed11_leaf_1093.txt"]);
+}
+
+#[test]
+fn a_branch_point_far_from_the_origin_between_long_lines() {
+    // A comb of 75 000 slanted teeth 53 033 long: the branch point at a
+    // channel's foot (x ≈ 53 404) touches the base line, whose anchor is
+    // at x = 0, and a wall anchored at the tooth's far end. Solved around
+    // the mean of those anchors, the construction lost 10^-4 of the radius
+    // and the disk overlapped the vertex beside it.
+    let shape = Shape2d::from_bulge_loops(samples::slanted_comb(75_000, 37_500.0), &ShapeOptions::default()).unwrap();
+    replay_checked(&shape, &["comb3e5_leaf_8080.txt"]);
+}

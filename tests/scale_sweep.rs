@@ -85,6 +85,18 @@ fn inputs_that_broke_down_until_stop_33() {
 
 #[test]
 #[ignore = "slow tier: scripts/test-all runs it in release"]
+fn inputs_that_broke_down_until_stop_34() {
+    // Fresh seeds, "no branch point in a pocket" until stop 34: arcs
+    // shorter than the √(τ·r) to which contacts along them are placed (a
+    // smooth joint's disk, a branch point past a chain's end), and a
+    // branch point between lines anchored 5·10^4 away.
+    sweep("fourier 3e5 seed 11", samples::fourier_biarcs(300_000, 11));
+    sweep("slanted comb 3e5", samples::slanted_comb(75_000, 37_500.0));
+    sweep("fourier 1e6 with 40 holes seed 13", samples::fourier_with_holes(1_000_000, 40, 13));
+}
+
+#[test]
+#[ignore = "slow tier: scripts/test-all runs it in release"]
 fn star_polygons_and_flowers_at_1e5_and_3e5() {
     for seed in 1..=2 {
         sweep(&format!("star 1e5 seed {seed}"), samples::star_polygon(100_000, seed));

@@ -717,8 +717,14 @@ fn many_random_segments() {
     // 1 500 random disjoint segments broke down ("no branch point in a
     // pocket": a footpoint at a segment's end exactly opposite the arc
     // before its chain went to the wrong part of the half-turn fan); so
-    // did 1 000 of them in a square 4 diagonals wide, in a corner.
-    for name in ["random_segments_1500", "random_segments_1000_square_4_diagonals"] {
+    // did 1 000 of them in a square 4 diagonals wide, in a corner. 3 000
+    // random points in a square 1 024 diagonals wide broke down until the
+    // branch-point construction was solved near its sites rather than
+    // near the mean of their anchors (a frame side's anchor lies 512
+    // diagonals away).
+    for name in
+        ["random_segments_1500", "random_segments_1000_square_4_diagonals", "random_points_3000_square_1024_diagonals"]
+    {
         let text =
             std::fs::read_to_string(format!("{}/tests/data/voronoi_{name}.json", env!("CARGO_MANIFEST_DIR"))).unwrap();
         let (sites, boundary) = medax::plane::read_sites(&text).unwrap();

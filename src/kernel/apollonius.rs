@@ -107,8 +107,38 @@ fn det3(m: [[f64; 3]; 3]) -> f64 {
 pub fn tangent_disks(sites: [Site; 3]) -> Vec<(Point, f64)> {
     // Solve around the sites' own origin: the equations carry |q|², whose
     // rounding would swamp a small configuration far from (0, 0).
-    let origin = sites.iter().map(Site::anchor).fold(Point::default(), |a, b| a + b) * (1.0 / 3.0);
+    let origin = working_origin(&sites);
     tangent_disks_at_origin(sites.map(|s| s.shifted(-origin))).into_iter().map(|(c, r)| (c + origin, r)).collect()
+}
+
+/// A point near all three sites, where the equations are solved: the
+/// least-squares point of the distances to the sites' anchors, a line's
+/// measured across it only (its anchor may lie far along it, as on a long
+/// straight edge, and the mean of anchors with it). A circle counts by
+/// its centre: the equations carry |o|² − R², exact around the centre,
+/// and a frame's circle reaches far beyond the disks touching it.
+/// Parallel lines leave a direction free: it is pinned weakly to the
+/// anchors' mean.
+fn working_origin(sites: &[Site; 3]) -> Point {
+    let mean = sites.iter().map(Site::anchor).fold(Point::default(), |a, b| a + b) * (1.0 / 3.0);
+    // Σ Mᵢ·x = Σ Mᵢ·pᵢ around the mean, Mᵢ = I for points, n·nᵀ for lines.
+    let (mut m, mut rhs) = ([0.0f64; 3], Point::default());
+    for s in sites {
+        let (w, p) = match *s {
+            Site::Point(q) => ([1.0, 0.0, 1.0], q - mean),
+            Site::Line { a, n } => ([n.x * n.x, n.x * n.y, n.y * n.y], n * n.dot(a - mean)),
+            Site::Circle { o, .. } => ([1.0, 0.0, 1.0], o - mean),
+        };
+        m = [m[0] + w[0], m[1] + w[1], m[2] + w[2]];
+        rhs = rhs + p;
+    }
+    let pin = 1e-6 * (m[0] + m[2]);
+    let (a, b, c) = (m[0] + pin, m[1], m[2] + pin);
+    let det = a * c - b * b;
+    if det.is_nan() || det <= 0.0 || !rhs.is_finite() {
+        return mean;
+    }
+    mean + Point::new((c * rhs.x - b * rhs.y) / det, (a * rhs.y - b * rhs.x) / det)
 }
 
 impl Site {
@@ -252,6 +282,28 @@ mod tests {
             for s in &sites {
                 assert!(s.defect(c, r).abs() < 1e-9, "{eps}: {s:?} misses {c:?} {r} by {}", s.defect(c, r));
             }
+        }
+    }
+
+    #[test]
+    fn long_lines_anchored_far_from_the_disk() {
+        // The foot of a channel of a long slanted comb: the base line y = -1
+        // anchored at x = 0, a wall x - y = 53 404 anchored at its far end
+        // (90 904, 37 500), and the vertex (53 405, 0). The disk touching
+        // all three has radius r with 5.828r² − 11.657r + 5 = 0 (the
+        // smaller root), wherever the lines are anchored.
+        let h = std::f64::consts::FRAC_1_SQRT_2;
+        let sites = [
+            Site::Line { a: Point::new(0.0, -1.0), n: Point::new(0.0, 1.0) },
+            Site::Line { a: Point::new(90_904.0, 37_500.0), n: Point::new(h, -h) },
+            Site::Point(Point::new(53_405.0, 0.0)),
+        ];
+        let (a, b, c) = (3.0 + 2.0 * 2f64.sqrt(), -(6.0 + 4.0 * 2f64.sqrt()), 5.0);
+        let want = (-b - (b * b - 4.0 * a * c).sqrt()) / (2.0 * a);
+        let (centre, r) = tangent_disks(sites)[0];
+        assert!((r - want).abs() < 1e-9, "radius {r}, want {want}");
+        for s in &sites {
+            assert!(s.defect(centre, r).abs() < 1e-9, "{s:?} misses by {}", s.defect(centre, r));
         }
     }
 

@@ -4,6 +4,7 @@
 use super::events::EventRef;
 use super::sites::SiteRef;
 use super::{Builder, Key};
+use crate::kernel::apollonius::Site;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Disk;
 use crate::kernel::{AxisKernel, Contact, Point};
@@ -98,11 +99,24 @@ impl<K: AxisKernel> Builder<'_, K> {
                 let slack = |i: SiteRef| {
                     (self.tol.branch_contact_slack() / self.length(i, 0.0, 1.0, r).max(f64::MIN_POSITIVE)).min(cap)
                 };
+                // A tangency past an element's end at an auxiliary arc,
+                // along a curve the disk nearly follows (contacts there are
+                // placed only to about √(τ·r) in length), that touches the
+                // end within τ in distance is a contact at the end: the
+                // element beyond belongs to another subshape. (Past a joint
+                // the next site is tried for itself; a fan's end is its
+                // point, which every disk through it touches.)
                 let at = |i: SiteRef| {
                     let u = self.param(i, c, r);
                     let w = self.fraction(i, u);
                     let sl = slack(i);
-                    ((-sl..=1.0 + sl).contains(&w)).then(|| self.offset(a, self.key(i, u, r)))
+                    let s = &self.sites[i];
+                    let past_end = w > 0.5;
+                    let joined = if past_end { s.joined_next } else { self.sites[i.prev(self.n())].joined_next };
+                    let near_end = !joined
+                        && !matches!(s.site, Site::Point(_))
+                        && (s.ends[usize::from(past_end)].dist(c) - r).abs() <= self.tol.touch();
+                    ((-sl..=1.0 + sl).contains(&w) || near_end).then(|| self.offset(a, self.key(i, u, r)))
                 };
                 let (Some(o1), Some(o2), Some(ot)) = (at(s1), at(s2), at(t)) else { continue };
                 let o2 = if o2 == 0.0 { span } else { o2 };

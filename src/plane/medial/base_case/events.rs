@@ -323,16 +323,10 @@ impl<K: AxisKernel> Builder<'_, K> {
                 }
             };
             let (er, at_end) = grow_from;
-            let elements = &self.shape.loops()[er.loop_index];
-            let e = elements.element(er.element);
-            let mut nrm = if at_end { e.end_tangent() } else { e.start_tangent() }.perp();
-            if let (Primitive::Element(ea), Primitive::Element(_)) = (a.prim, b.prim) {
-                // A smooth joint's two normals agree only within the angular
-                // tolerance: grow along their mean, so that a mirror image
-                // grows the mirrored disk and one disk met from two joints
-                // is found twice alike.
-                nrm = (elements.element(ea.element).end_tangent().perp() + nrm).unit();
-            }
+            let nrm = self.joint_normal(j).unwrap_or_else(|| {
+                let e = self.shape.loops()[er.loop_index].element(er.element);
+                if at_end { e.end_tangent() } else { e.start_tangent() }.perp()
+            });
             let (c, r) = self.grow(p, nrm, &[i, j]).ok_or(BaseCaseError::NoDisk(p))?.parts();
             let (feet, whole) = self.touching(c, r);
             let feet = self.one_per_hug(c, r, feet, &[key], &whole);

@@ -7,7 +7,7 @@ use crate::kernel::tolerance::Tolerance;
 use crate::kernel::SitePiece;
 use crate::kernel::{AxisKernel, CarrierSide, Point};
 use crate::plane::axis::Primitive;
-use crate::shape::Element;
+use crate::shape::{Element, JointKind};
 
 /// A primitive as one subshape sees it: a range of footpoint parameters
 /// (see [`crate::kernel::bisector::footpoint`]) travelled from `u0` to `u1`.
@@ -161,20 +161,61 @@ impl<K: AxisKernel> Builder<'_, K> {
             w = 1.0;
         }
         let lag = |w: f64| (raw - w) * (s.u1 - s.u0).abs() * scale;
+        let n = self.n();
         if w == 1.0 && s.joined_next {
-            return Key { site: i.next(self.n()), w: 0.0, lag: lag(1.0) };
+            let j = i.next(n);
+            return Key { site: j, w: 0.0, lag: lag(1.0) - self.joint_lag(j, i, 1.0, r) };
         }
         // Where a site meets an auxiliary arc only the dividing disk itself
         // touches (a maximal disk tangent there lies on the same normal,
         // so it is that disk or not maximal): any other disk's contact
         // there is rounding of one just inside the site.
-        let n = self.n();
         if w == 0.0 && !self.sites[i.prev(n)].joined_next {
             w = Tolerance::nudge();
         } else if w == 1.0 && !s.joined_next {
             w = 1.0 - Tolerance::nudge();
+        } else if w == 0.0 {
+            return Key { site: i, w, lag: lag(0.0) - self.joint_lag(i, i, 0.0, r) };
         }
         Key { site: i, w, lag: lag(w) }
+    }
+
+    /// The normal a joint's own disk grows along at the start of site `j`,
+    /// where two element pieces meet without a corner event: the mean of
+    /// their normals, which agree only within the angular tolerance (so
+    /// that a mirror image grows the mirrored disk, and one disk met from
+    /// two joints is found twice alike). `None` at other joints.
+    pub(super) fn joint_normal(&self, j: SiteRef) -> Option<Point> {
+        let i = j.prev(self.n());
+        let (Primitive::Element(ea), Primitive::Element(eb)) = (self.sites[i].prim, self.sites[j].prim) else {
+            return None;
+        };
+        if !self.sites[i].joined_next || self.shape.joint(eb.loop_index, eb.element) == JointKind::Convex {
+            return None;
+        }
+        let elements = &self.shape.loops()[eb.loop_index];
+        let n_out = elements.element(eb.element).start_tangent().perp();
+        Some((elements.element(ea.element).end_tangent().perp() + n_out).unit())
+    }
+
+    /// Where the joint at the start of site `j` lies among contacts of
+    /// disks of radius `r` measured on site `i` (one of its two sides)
+    /// from fraction `w_end`: the lag of the joint's own disk of that
+    /// radius. A smooth joint turns by up to the angular tolerance, so
+    /// its disk touches the two sides' carriers up to r × that angle / 2
+    /// from the joint (far above the touching tolerance for large disks);
+    /// measured from it, contacts clamped onto the joint keep the order
+    /// their disks have about the joint's disk, whose own footpoint there
+    /// is placed exactly.
+    fn joint_lag(&self, j: SiteRef, i: SiteRef, w_end: f64, r: f64) -> f64 {
+        let Some(nrm) = self.joint_normal(j) else { return 0.0 };
+        let s = &self.sites[i];
+        let scale = match s.site {
+            Site::Circle { r: rc, .. } => rc,
+            _ => 1.0,
+        };
+        let c = self.sites[j].ends[0] + nrm * r;
+        (self.fraction(i, self.param(i, c, r)) - w_end) * (s.u1 - s.u0).abs() * scale
     }
 
     /// False when a disk centred `c` touches site `i` at parameter `u`
