@@ -33,11 +33,14 @@ const PROBES: usize = 300;
 const CHECKED: usize = 1000;
 
 fn sweep(name: &str, loops: Vec<Vec<Vertex>>) {
-    let shape = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).expect("valid sample");
-    let axis = medial_axis(&shape, &AxisOptions::default())
+    check_shape(name, &Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).expect("valid sample"));
+}
+
+fn check_shape(name: &str, shape: &Shape2d) {
+    let axis = medial_axis(shape, &AxisOptions::default())
         .unwrap_or_else(|e| panic!("{name} ({} elements): {e}", shape.element_count()));
     let stride = axis.edges.len().div_ceil(CHECKED);
-    let report = check_strided(&shape, &axis, PROBES, 7, stride, SLACK);
+    let report = check_strided(shape, &axis, PROBES, 7, stride, SLACK);
     eprintln!(
         "{name}: {} elements, {} nodes, {} samples checked, {} of {PROBES} probes nested (up to {:.1e} off the axis)",
         shape.element_count(),
@@ -163,4 +166,19 @@ fn a_flower_of_a_million_arcs() {
     // but is not checked here: the oracle's grids bucket every item by its
     // box, and the star's long radial sides and spines cover about 10^5
     // cells each at that size (killed at 24 GB).
+}
+
+/// The same oracle on shape files named in `MEDAX_SWEEP_FILES` (spaces
+/// between; `examples/write_sample` writes fresh seeds of every family):
+/// `MEDAX_SWEEP_FILES="a.json b.json" cargo test --release --test
+/// scale_sweep -- --ignored shape_files`. Nothing without it.
+#[test]
+#[ignore = "a tool for fresh inputs: set MEDAX_SWEEP_FILES"]
+fn shape_files_from_the_environment() {
+    let files = std::env::var("MEDAX_SWEEP_FILES").unwrap_or_default();
+    for path in files.split_whitespace() {
+        let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path}: {e}"));
+        let shape = Shape2d::from_json_str(&text, &ShapeOptions::default()).unwrap_or_else(|e| panic!("{path}: {e}"));
+        check_shape(path, &shape);
+    }
 }

@@ -794,3 +794,35 @@ fn star_sites_walk_their_trees_of_self_edges_in_face_order() {
         check_diagram(&sites, &vd, 60, 90 + seed);
     }
 }
+
+#[test]
+fn a_given_boundary_thousands_of_diagonals_away() {
+    // Random points, and short segments one per cell of a grid, in a unit
+    // of about 110 model units, inside a square 4 096 and 16 384 of their
+    // diagonals wide: broke down ("no branch point in a pocket") while
+    // branch points were solved around the mean of their sites' anchors,
+    // a square side's lying half the square away.
+    let mut rng = rand::rngs::SmallRng::seed_from_u64(41);
+    let points: Vec<Point> =
+        (0..1500).map(|_| Point::new(rng.gen_range(0.0..77.5), rng.gen_range(0.0..77.5))).collect();
+    let mut curves = Vec::new();
+    for i in 0..20 {
+        for j in 0..20 {
+            let mut at =
+                || Point::new(4.0 * i as f64 + rng.gen_range(0.2..3.8), 4.0 * j as f64 + rng.gen_range(0.2..3.8));
+            curves.push(vec![Vertex { p: at(), bulge: 0.0 }, Vertex { p: at(), bulge: 0.0 }]);
+        }
+    }
+    for (sites, width) in [
+        (Sites { points: points.clone(), ..Sites::default() }, 4096.0),
+        (Sites { points, ..Sites::default() }, 16384.0),
+        (Sites { curves, ..Sites::default() }, 16384.0),
+    ] {
+        let h = 0.5 * width * 80.0 * std::f64::consts::SQRT_2;
+        let square = rect(40.0 - h, 40.0 - h, 40.0 + h, 40.0 + h);
+        let opts = VoronoiOptions { boundary: Some(square), ..VoronoiOptions::default() };
+        let vd = voronoi(&sites, &opts).unwrap_or_else(|e| panic!("{width} diagonals: {e}"));
+        check(vd.shape(), &vd.axis, 20, 43);
+        assert!(vd.regions.iter().all(|r| r.walks == 1), "{width} diagonals");
+    }
+}

@@ -101,10 +101,19 @@ pub fn bisected_radius(s: &medax::shape::Shape2d, p: Point, n: Point, diag: f64)
 }
 
 /// The largest t ≤ `reach` for which `distance(p + t·n) ≥ t` up to
-/// 1e-12 × `diag`, by 80 bisection steps.
+/// 1e-12 × `diag`: doubled from 1e-9 × `diag` while it fits, then 80
+/// bisection steps.
 pub fn bisect_radius(distance: impl Fn(Point) -> f64, p: Point, n: Point, reach: f64, diag: f64) -> f64 {
     let fits = |t: f64| distance(p + n * t) >= t - 1e-12 * diag;
-    let (mut lo, mut hi) = (0.0, reach);
+    // Grown from below first (the disks along the normal are nested, so
+    // `fits` holds up to the answer and fails beyond): centres far beyond
+    // the answer make a nearest-item search sweep most of a grid.
+    let (mut lo, mut hi) = (0.0, 1e-9 * diag);
+    while hi < reach && fits(hi) {
+        lo = hi;
+        hi *= 2.0;
+    }
+    hi = hi.min(reach);
     for _ in 0..80 {
         let mid = 0.5 * (lo + hi);
         if fits(mid) {

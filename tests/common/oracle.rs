@@ -19,9 +19,25 @@ pub struct Grid<T> {
     cells: Vec<Vec<u32>>,
 }
 
+/// Where an item lies, for bucketing: its box, or for a segment the
+/// segment itself (a long slanted side's box would cover a square of
+/// cells, 10^5 of them each on a comb of long teeth).
+#[derive(Debug, Clone, Copy)]
+pub enum Extent {
+    Box(BBox),
+    Segment(Point, Point),
+}
+
 impl<T> Grid<T> {
     /// Buckets `items` (each with its box) into about `items.len()` cells of `bbox`.
     pub fn new(items: Vec<(T, BBox)>, bbox: BBox) -> Grid<T> {
+        Self::with_extents(items.into_iter().map(|(t, b)| (t, Extent::Box(b))).collect(), bbox)
+    }
+
+    /// [`new`](Self::new) for items given by their extents: an item is in
+    /// every cell it meets (a segment row by row, its x-range in each row
+    /// widened by a thousandth of a cell against rounding).
+    pub fn with_extents(items: Vec<(T, Extent)>, bbox: BBox) -> Grid<T> {
         let n = items.len().max(1) as f64;
         let (w, h) = (bbox.width().max(1e-300), bbox.height().max(1e-300));
         let cell = (w * h / n).sqrt().max(w.max(h) / 4096.0);
@@ -31,11 +47,26 @@ impl<T> Grid<T> {
         let origin = bbox.min;
         let ix = |x: f64, n: usize| ((x / cell).floor().max(0.0) as usize).min(n - 1);
         let mut kept = Vec::with_capacity(items.len());
-        for (i, (t, b)) in items.into_iter().enumerate() {
+        for (i, (t, extent)) in items.into_iter().enumerate() {
+            let b = match extent {
+                Extent::Box(b) => b,
+                Extent::Segment(a, c) => BBox::of_points(a, c),
+            };
             let (x0, x1) = (ix(b.min.x - origin.x, nx), ix(b.max.x - origin.x, nx));
             let (y0, y1) = (ix(b.min.y - origin.y, ny), ix(b.max.y - origin.y, ny));
             for y in y0..=y1 {
-                for x in x0..=x1 {
+                let (xa, xb) = match extent {
+                    Extent::Segment(a, c) if a.y != c.y => {
+                        // The segment's x-range within this row of cells.
+                        let (lo, hi) = (origin.y + y as f64 * cell, origin.y + (y + 1) as f64 * cell);
+                        let at = |yy: f64| a.x + (c.x - a.x) * ((yy - a.y) / (c.y - a.y)).clamp(0.0, 1.0);
+                        let (p, q) = (at(lo.max(b.min.y)), at(hi.min(b.max.y)));
+                        let margin = 1e-3 * cell;
+                        (ix(p.min(q) - margin - origin.x, nx).max(x0), ix(p.max(q) + margin - origin.x, nx).min(x1))
+                    }
+                    _ => (x0, x1),
+                };
+                for x in xa..=xb {
                     cells[y * nx + x].push(i as u32);
                 }
             }
@@ -96,9 +127,13 @@ pub struct Boundary<'s> {
 impl<'s> Boundary<'s> {
     /// Indexes the elements of `shape`.
     pub fn new(shape: &'s Shape2d) -> Boundary<'s> {
-        let items = shape.loops().iter().flat_map(|l| l.elements()).map(|e| (e, e.bbox())).collect();
+        let extent = |e: &Element| match e {
+            Element::Segment(g) => Extent::Segment(g.a, g.b),
+            Element::Arc(_) => Extent::Box(e.bbox()),
+        };
+        let items = shape.loops().iter().flat_map(|l| l.elements()).map(|e| (e, extent(&e))).collect();
         let boxes = shape.loops().iter().map(|l| l.bbox()).collect();
-        Boundary { shape, grid: Grid::new(items, shape.bbox()), boxes }
+        Boundary { shape, grid: Grid::with_extents(items, shape.bbox()), boxes }
     }
 
     /// Distance from `p` to the boundary.
@@ -232,15 +267,13 @@ pub fn check_strided(s: &Shape2d, axis: &MedialAxis2d, probes: usize, seed: u64,
     // Completeness: the maximal disk at random boundary points is centred
     // on the axis.
     let mut rng = rand::rngs::SmallRng::seed_from_u64(seed);
-    let mut pieces: Vec<((Disk, Disk), BBox)> = Vec::new();
+    let mut pieces: Vec<((Disk, Disk), Extent)> = Vec::new();
     for pl in &lines {
         for w in pl.windows(2).map(|w| (w[0], w[1])).chain((pl.len() == 1).then(|| (pl[0], pl[0]))) {
-            let (a, b) = (w.0.center, w.1.center);
-            let bb = BBox { min: Point::new(a.x.min(b.x), a.y.min(b.y)), max: Point::new(a.x.max(b.x), a.y.max(b.y)) };
-            pieces.push((w, bb));
+            pieces.push((w, Extent::Segment(w.0.center, w.1.center)));
         }
     }
-    let axis_grid = Grid::new(pieces, s.bbox());
+    let axis_grid = Grid::with_extents(pieces, s.bbox());
     let mut nested = (0, 0.0f64);
     for _ in 0..probes {
         let lp = &s.loops()[rng.gen_range(0..s.loops().len())];
