@@ -75,6 +75,14 @@ impl Tolerance {
         64.0 * self.touch
     }
 
+    /// A dividing disk within this of one already glued into another node
+    /// (centre and radius) is glued into that node too, 8τ: the same disk
+    /// met twice, however far the node it joined lies.
+    #[inline]
+    pub fn same_merged_cut(self) -> f64 {
+        8.0 * self.touch
+    }
+
     /// Two edges joining one pair of nodes whose centres are within this,
     /// 256τ, each node's disk more than twice as large, close a cycle of
     /// rounding, not one round a hole: a hole inside the lens the two

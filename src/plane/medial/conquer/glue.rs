@@ -116,21 +116,33 @@ fn coinciding_cuts(cuts: &[Cut], apart: &FastSet<(usize, usize)>, t: Tolerance) 
     let (tol, side) = (t.same_disk(), t.merge_cell());
     let cell = |x: f64| (x / side).floor() as i64;
     let mut grid: FastMap<(i64, i64), Vec<usize>> = FastMap::default();
-    let mut out = Vec::with_capacity(cuts.len());
+    // Cuts merged into an earlier one, by cell.
+    let mut merged: FastMap<(i64, i64), Vec<usize>> = FastMap::default();
+    let mut out: Vec<usize> = Vec::with_capacity(cuts.len());
     for (i, c) in cuts.iter().enumerate() {
         let (gx, gy) = (cell(c.center.x), cell(c.center.y));
-        let found = (-1..=1)
-            .flat_map(|dx| (-1..=1).map(move |dy| (gx + dx, gy + dy)))
-            .filter_map(|k| grid.get(&k))
-            .flatten()
-            .copied()
-            .find(|&j| {
-                cuts[j].center.dist(c.center) <= tol
-                    && (cuts[j].radius - c.radius).abs() <= tol
-                    && !apart.contains(&(j.min(i), j.max(i)))
-            });
+        let near = |j: usize, tol: f64| {
+            cuts[j].center.dist(c.center) <= tol
+                && (cuts[j].radius - c.radius).abs() <= tol
+                && !apart.contains(&(j.min(i), j.max(i)))
+        };
+        let cells = || (-1..=1).flat_map(|dx| (-1..=1).map(move |dy| (gx + dx, gy + dy)));
+        let found = cells().filter_map(|k| grid.get(&k)).flatten().copied().find(|&j| near(j, tol));
+        // A disk within rounding of one that was merged into a disk
+        // farther away is that one's node too: matched to representatives
+        // only, a cut 4τ from another stayed a node of its own when the
+        // other had merged into a disk just over 64τ from it, and the
+        // sliver subshape between the two (whose axis is its one port)
+        // left it unjoined.
+        let found = found.or_else(|| {
+            let close = t.same_merged_cut();
+            cells().filter_map(|k| merged.get(&k)).flatten().copied().find(|&j| near(j, close)).map(|j| out[j])
+        });
         match found {
-            Some(j) => out.push(j),
+            Some(j) => {
+                merged.entry((gx, gy)).or_default().push(i);
+                out.push(j)
+            }
             None => {
                 grid.entry((gx, gy)).or_default().push(i);
                 out.push(i);
@@ -191,5 +203,27 @@ fn classify(axis: &mut MedialAxis2d, tol: f64) {
         } else {
             NodeKind::Joint
         };
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kernel::Point;
+
+    #[test]
+    fn a_disk_met_twice_joins_the_node_its_twin_joined() {
+        // Cut 1 lies 60τ from cut 0 (one node); cut 2 lies 4τ from cut 1
+        // but 64.5τ from cut 0: it is the node cuts 0 and 1 are. Cut 3,
+        // 20τ from cut 1 and 80τ from cut 0, is a disk of its own.
+        let tau = 1e-9;
+        let t = Tolerance::new(tau);
+        let cut = |x: f64| Cut { center: Point::new(x * tau, 0.0), radius: 1.0 };
+        let cuts = [cut(0.0), cut(60.0), cut(64.5), cut(80.0)];
+        assert_eq!(coinciding_cuts(&cuts, &FastSet::default(), t), [0, 0, 0, 3]);
+        // Joined by a subshape's edge, two disks stay two nodes (and cut 3
+        // is then within 64τ of a node of its own, cut 2's).
+        let apart: FastSet<(usize, usize)> = [(1, 2)].into_iter().collect();
+        assert_eq!(coinciding_cuts(&cuts, &apart, t), [0, 0, 2, 2]);
     }
 }
