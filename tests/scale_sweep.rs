@@ -100,6 +100,23 @@ fn inputs_that_broke_down_until_stop_34() {
 
 #[test]
 #[ignore = "slow tier: scripts/test-all runs it in release"]
+fn a_nearly_circular_curve_of_a_million_arcs() {
+    // Fell apart into pieces until stop 34 (a cut 4τ from its twin, which
+    // had merged into a disk just over 64τ away, stayed a node of its
+    // own). The oracle passed on it once (`MEDAX_SWEEP_FILES`, 10 min of
+    // checking: every disk near the centre reaches across the whole
+    // grid); here the library's own final check (a tree whose node and
+    // edge disks are maximal and touch their primitives) and the tree's
+    // counts.
+    let shape =
+        Shape2d::from_bulge_loops(samples::fourier_curve(1_000_000, 4, 1e-3), &ShapeOptions::default()).unwrap();
+    let axis = medial_axis(&shape, &AxisOptions::default()).unwrap_or_else(|e| panic!("near circle 1e6 seed 4: {e}"));
+    assert_eq!(axis.edges.len() + 1, axis.nodes.len());
+    assert!(axis.nodes.len() > 700_000, "{} nodes", axis.nodes.len());
+}
+
+#[test]
+#[ignore = "slow tier: scripts/test-all runs it in release"]
 fn star_polygons_and_flowers_at_1e5_and_3e5() {
     for seed in 1..=2 {
         sweep(&format!("star 1e5 seed {seed}"), samples::star_polygon(100_000, seed));
