@@ -106,17 +106,19 @@ impl<K: AxisKernel> Builder<'_, K> {
                 // element beyond belongs to another subshape. (Past a joint
                 // the next site is tried for itself; a fan's end is its
                 // point, which every disk through it touches.)
+                let near_end = |i: SiteRef, w: f64| {
+                    let s = &self.sites[i];
+                    let past_end = w > 0.5;
+                    let joined = if past_end { s.joined_next } else { self.sites[i.prev(self.n())].joined_next };
+                    !joined
+                        && !matches!(s.site, Site::Point(_))
+                        && (s.ends[usize::from(past_end)].dist(c) - r).abs() <= self.tol.touch()
+                };
                 let at = |i: SiteRef| {
                     let u = self.param(i, c, r);
                     let w = self.fraction(i, u);
                     let sl = slack(i);
-                    let s = &self.sites[i];
-                    let past_end = w > 0.5;
-                    let joined = if past_end { s.joined_next } else { self.sites[i.prev(self.n())].joined_next };
-                    let near_end = !joined
-                        && !matches!(s.site, Site::Point(_))
-                        && (s.ends[usize::from(past_end)].dist(c) - r).abs() <= self.tol.touch();
-                    ((-sl..=1.0 + sl).contains(&w) || near_end).then(|| self.offset(a, self.key(i, u, r)))
+                    ((-sl..=1.0 + sl).contains(&w) || near_end(i, w)).then(|| self.offset(a, self.key(i, u, r)))
                 };
                 let (Some(o1), Some(o2), Some(ot)) = (at(s1), at(s2), at(t)) else { continue };
                 let o2 = if o2 == 0.0 { span } else { o2 };

@@ -20,7 +20,7 @@ impl<K: AxisKernel> Builder<'_, K> {
     pub(super) fn push_site(&mut self, prim: Primitive, site: Site, u0: f64, u1: f64) {
         let piece = SitePiece { site, u0, u1 };
         let (ends, bound) = ([piece.point_at(u0), piece.point_at(u1)], piece.bound());
-        self.sites.push(LocalSite { prim, site, u0, u1, joined_next: true, ends, bound });
+        self.sites.push(LocalSite { prim, site, u0, u1, joined_next: true, ends, bound, joint_normal: None });
     }
 
     /// A reflex vertex's fan between directions `from` and `to` (clockwise),

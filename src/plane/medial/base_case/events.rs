@@ -278,6 +278,7 @@ impl<K: AxisKernel> Builder<'_, K> {
     }
 
     pub(super) fn collect_events(&mut self, cuts: &[Cut]) -> Result<(), BaseCaseError> {
+        self.set_joint_normals();
         let n = self.n();
         // Ports: the auxiliary arcs, between the site before and after.
         for &Port { disk, site_after: next, .. } in &self.aux.clone() {
@@ -323,7 +324,7 @@ impl<K: AxisKernel> Builder<'_, K> {
                 }
             };
             let (er, at_end) = grow_from;
-            let nrm = self.joint_normal(j).unwrap_or_else(|| {
+            let nrm = self.sites[j].joint_normal.unwrap_or_else(|| {
                 let e = self.shape.loops()[er.loop_index].element(er.element);
                 if at_end { e.end_tangent() } else { e.start_tangent() }.perp()
             });

@@ -24,6 +24,10 @@ pub(super) struct LocalSite {
     /// A disk holding the piece ([`SitePiece::bound`]): most disks tested
     /// against a site are decided by it without trigonometry.
     pub(super) bound: (Point, f64),
+    /// The normal the joint's own disk grows along at this site's start
+    /// ([`Builder::mean_joint_normal`]), set once the cycle is complete:
+    /// every contact clamped onto the joint is measured from it.
+    pub(super) joint_normal: Option<Point>,
 }
 
 /// A site of the cycle: its index in the builder's sites. Valid for one
@@ -160,7 +164,7 @@ impl<K: AxisKernel> Builder<'_, K> {
         if (u - s.u1).abs() * scale <= self.tol.touch() {
             w = 1.0;
         }
-        let lag = |w: f64| (raw - w) * (s.u1 - s.u0).abs() * scale;
+        let lag = |w: f64| self.signed_length(i, raw - w, r);
         let n = self.n();
         if w == 1.0 && s.joined_next {
             let j = i.next(n);
@@ -184,8 +188,9 @@ impl<K: AxisKernel> Builder<'_, K> {
     /// where two element pieces meet without a corner event: the mean of
     /// their normals, which agree only within the angular tolerance (so
     /// that a mirror image grows the mirrored disk, and one disk met from
-    /// two joints is found twice alike). `None` at other joints.
-    pub(super) fn joint_normal(&self, j: SiteRef) -> Option<Point> {
+    /// two joints is found twice alike). `None` at other joints. Kept in
+    /// [`LocalSite::joint_normal`] by [`Builder::set_joint_normals`].
+    fn mean_joint_normal(&self, j: SiteRef) -> Option<Point> {
         let i = j.prev(self.n());
         let (Primitive::Element(ea), Primitive::Element(eb)) = (self.sites[i].prim, self.sites[j].prim) else {
             return None;
@@ -208,14 +213,17 @@ impl<K: AxisKernel> Builder<'_, K> {
     /// their disks have about the joint's disk, whose own footpoint there
     /// is placed exactly.
     fn joint_lag(&self, j: SiteRef, i: SiteRef, w_end: f64, r: f64) -> f64 {
-        let Some(nrm) = self.joint_normal(j) else { return 0.0 };
-        let s = &self.sites[i];
-        let scale = match s.site {
-            Site::Circle { r: rc, .. } => rc,
-            _ => 1.0,
-        };
+        let Some(nrm) = self.sites[j].joint_normal else { return 0.0 };
         let c = self.sites[j].ends[0] + nrm * r;
-        (self.fraction(i, self.param(i, c, r)) - w_end) * (s.u1 - s.u0).abs() * scale
+        self.signed_length(i, self.fraction(i, self.param(i, c, r)) - w_end, r)
+    }
+
+    /// Fills [`LocalSite::joint_normal`] for every site of the complete
+    /// cycle (which sites are joined is known only then).
+    pub(super) fn set_joint_normals(&mut self) {
+        for j in self.site_refs() {
+            self.sites[j.0].joint_normal = self.mean_joint_normal(j);
+        }
     }
 
     /// False when a disk centred `c` touches site `i` at parameter `u`
@@ -251,8 +259,14 @@ impl<K: AxisKernel> Builder<'_, K> {
     /// Length (model units) of the part of site `i` between fractions
     /// `w0` and `w1`, for a disk of radius `r` at a vertex.
     pub(super) fn length(&self, i: SiteRef, w0: f64, w1: f64, r: f64) -> f64 {
+        self.signed_length(i, w1 - w0, r).abs()
+    }
+
+    /// Length (model units, signed as `dw`) of a fraction `dw` of site
+    /// `i`, for a disk of radius `r` at a vertex.
+    pub(super) fn signed_length(&self, i: SiteRef, dw: f64, r: f64) -> f64 {
         let s = &self.sites[i];
-        let du = (s.u1 - s.u0).abs() * (w1 - w0).abs();
+        let du = (s.u1 - s.u0).abs() * dw;
         match s.site {
             Site::Line { .. } => du,
             Site::Circle { r: rc, .. } => du * rc,
