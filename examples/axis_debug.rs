@@ -5,11 +5,12 @@
 //! `cargo run --release --example axis_debug -- star|flower N [SEED]` or
 //! `-- plate K [SEED]` or `-- SHAPE.json 0 [SEED]` (a shape file, or a Voronoi sites file: the
 //! shape its diagram is computed on first, frame or boundary with the sites as holes); `MEDAX_NEAR=x,y` lists the dividing disks near a point;
-//! `MEDAX_DUMP=DIR` writes each failing leaf for `examples/leaf_replay`.
+//! `MEDAX_DUMP=DIR` writes each failing leaf for `examples/leaf_replay`;
+//! `MEDAX_PLAIN=1` decomposes as the retries after a breakdown do.
 use medax::kernel::Disk;
 use medax::plane::internals::augment;
 use medax::plane::internals::base_case;
-use medax::plane::internals::decompose_in;
+use medax::plane::internals::{decompose_in, decompose_plain_in};
 use medax::plane::AxisOptions;
 use medax::plane::DiskFinder;
 use medax::plane::Piece;
@@ -37,7 +38,14 @@ fn main() {
     let opts = AxisOptions::default();
     let seed: u64 = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(opts.seed);
     let aug = augment(&finder).expect("augmenting disks");
-    let d = decompose_in(&finder, &aug, seed, opts.leaf_parts);
+    // MEDAX_PLAIN: the decomposition of `medial_axis`'s retries (first
+    // dividing disk, no balanced cuts); their seeds are SEED and
+    // SEED + 0x9e3779b97f4a7c15.
+    let d = if std::env::var_os("MEDAX_PLAIN").is_some() {
+        decompose_plain_in(&finder, &aug, seed, opts.leaf_parts)
+    } else {
+        decompose_in(&finder, &aug, seed, opts.leaf_parts)
+    };
     println!("{} cuts, {} leaves, {} stuck", d.cuts.len(), d.leaves.len(), d.stuck.len());
     if std::env::var("MEDAX_CORNERS").is_ok() || std::env::var("MEDAX_CHECK").is_ok() {
         glued_corners(&shape, &finder, seed);

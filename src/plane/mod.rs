@@ -53,7 +53,7 @@ pub mod internals {
     pub use crate::plane::medial::conquer::{final_check, glue, solve_leaves};
     pub use crate::plane::medial::decompose::augment::augment;
     pub use crate::plane::medial::decompose::divide::{
-        decompose, decompose_in, decompose_with, divide_into, leaf_size, Decomposition,
+        decompose, decompose_in, decompose_plain_in, decompose_with, divide_into, leaf_size, Decomposition,
     };
     pub use crate::plane::medial::decompose::leaf_text::{read_leaf, write_leaf};
     pub use crate::plane::medial::decompose::subshape::ChainParts;
