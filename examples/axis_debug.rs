@@ -146,13 +146,13 @@ fn glued_corners(shape: &Shape2d, finder: &DiskFinder, seed: u64) {
         Err(e) => return println!("solve_leaves: {e}"),
     };
     for (k, local) in locals.iter().enumerate() {
-        for n in &local.nodes {
+        for n in local.nodes {
             if n.radius <= shape.tolerance() && n.kind != base_case::EventKind::Corner {
                 println!("local {k}: tiny non-corner node {n:?}");
             }
         }
     }
-    let axis = match medax::plane::internals::glue(finder, &d.cuts, &locals) {
+    let axis = match medax::plane::internals::glue(finder, &d.cuts, locals.clone()) {
         Ok(a) => a,
         Err(e) => return println!("glue: {e}"),
     };
@@ -217,7 +217,7 @@ fn glued_corners(shape: &Shape2d, finder: &DiskFinder, seed: u64) {
                 let touches = sub.chains().any(|(a, b)| [a, b].iter().any(|q| q.point(shape).dist(p) < 1e-6));
                 if touches {
                     println!("   leaf {k}: {:?}", sub.pieces);
-                    println!("      nodes {:?}", locals[k].nodes);
+                    println!("      nodes {:?}", locals.get(k).nodes);
                 }
             }
             for (k, local) in locals.iter().enumerate() {

@@ -21,9 +21,11 @@ fn main() {
     let threads: usize = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(0);
     let seed: u64 = std::env::var("MEDAX_SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(1);
     let mut phases: Vec<(&str, f64)> = Vec::new();
+    let mut memory: Vec<(u64, u64)> = Vec::new();
     let mut clock = Instant::now();
     let mut lap = |name: &'static str, phases: &mut Vec<(&str, f64)>| {
         phases.push((name, clock.elapsed().as_secs_f64()));
+        memory.push((status_kb("VmRSS:"), status_kb("VmHWM:")));
         clock = Instant::now();
     };
     let loops = match kind {
@@ -57,21 +59,24 @@ fn main() {
         span = d.span;
         let locals = solve_leaves(&finder, &mut d, opts.seed).expect("leaves solved");
         lap("base cases", &mut phases);
-        let axis = glue(&finder, &d.cuts, &locals).expect("glued");
+        let leaves = locals.count();
+        let axis = glue(&finder, &d.cuts, locals).expect("glued");
         lap("glue (conquer)", &mut phases);
         final_check(&finder, &axis).expect("checked");
         lap("final check", &mut phases);
-        println!(
-            "{kind} {}: {} elements, {} leaves, {} nodes",
-            n,
-            shape.element_count(),
-            locals.len(),
-            axis.nodes.len()
-        );
+        println!("{kind} {}: {} elements, {} leaves, {} nodes", n, shape.element_count(), leaves, axis.nodes.len());
     });
     let total: f64 = phases.iter().skip(1).map(|p| p.1).sum();
-    for (name, t) in &phases {
-        println!("{name:>24} {t:8.3} s {:5.1} %", 100.0 * t / total);
+    // Resident memory after each phase and the peak so far, bytes per
+    // input element (Linux /proc; 0 elsewhere).
+    let per = |kb: u64| kb as f64 * 1024.0 / n.max(1) as f64;
+    for ((name, t), (rss, peak)) in phases.iter().zip(&memory) {
+        println!(
+            "{name:>24} {t:8.3} s {:5.1} %   resident {:7.0} B/elt, peak {:7.0} B/elt",
+            100.0 * t / total,
+            per(*rss),
+            per(*peak)
+        );
     }
     println!("{:>24} {total:8.3} s (without generate)", "total");
     let t = |name: &str| phases.iter().find(|p| p.0 == name).map_or(0.0, |p| p.1);
@@ -84,4 +89,13 @@ fn main() {
         let predicted = serial + flat / p + t("divide") / p + span;
         println!("{:>24} {predicted:8.3} s on {p} cores ({:.1}x)", "predicted", total / predicted);
     }
+}
+
+/// A memory line of /proc/self/status (`VmRSS:`, `VmHWM:`), kB; 0 where
+/// there is none.
+fn status_kb(key: &str) -> u64 {
+    std::fs::read_to_string("/proc/self/status")
+        .ok()
+        .and_then(|s| s.lines().find(|l| l.starts_with(key)).and_then(|l| l.split_whitespace().nth(1)?.parse().ok()))
+        .unwrap_or(0)
 }

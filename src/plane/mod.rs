@@ -50,6 +50,7 @@ pub mod internals {
     pub mod leaf_text {
         pub use crate::plane::medial::decompose::leaf_text::{read_leaf, write_leaf, LeafTextError};
     }
+    pub use crate::plane::medial::conquer::locals::{LocalAxes, LocalView};
     pub use crate::plane::medial::conquer::{final_check, glue, solve_leaves};
     pub use crate::plane::medial::decompose::augment::augment;
     pub use crate::plane::medial::decompose::divide::{

@@ -6,10 +6,11 @@
 use crate::kernel::bisector::ConicKind;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::AxisKernel;
-use crate::plane::axis::{edge_kind, AxisEdge, AxisNode, MedialAxis2d, NodeKind};
-use crate::plane::medial::base_case::{EventKind, LocalAxis};
+use crate::plane::axis::{edge_kind, AxisNode, MedialAxis2d, NodeKind};
+use crate::plane::medial::base_case::EventKind;
 use crate::plane::medial::conquer::check::{check_graph, drop_repeats};
 use crate::plane::medial::conquer::error::AxisError;
+use crate::plane::medial::conquer::locals::{LocalAxes, LocalView};
 use crate::plane::medial::conquer::merge::{merge_coinciding_branches, merge_pass_through, polish_branches};
 use crate::plane::medial::conquer::rounding::contract_rounding_cycles;
 use crate::plane::medial::decompose::subshape::Cut;
@@ -18,63 +19,58 @@ use crate::util::fast_hash::{FastMap, FastSet};
 
 /// Glues the axes of the subshapes (`locals`) at the centres of the
 /// dividing disks `cuts`; `finder` indexes the shape they were made of.
-pub fn glue<K: AxisKernel>(
-    finder: &DiskFinder<K>,
-    cuts: &[Cut],
-    locals: &[LocalAxis],
-) -> Result<MedialAxis2d, AxisError> {
+/// The subshapes' edges become the axis's edges in place.
+pub fn glue<K: AxisKernel>(finder: &DiskFinder<K>, cuts: &[Cut], locals: LocalAxes) -> Result<MedialAxis2d, AxisError> {
     let shape = finder.shape();
     let tol = shape.tolerance();
+    let same_as = coinciding_cuts(cuts, &joined_ports(&locals), Tolerance::new(tol));
+    let skip = redundant_bands(&locals, &same_as);
     // Sized once: growing vectors of 10^6 items by doubling spends more
     // on fresh pages than on the gluing.
-    let (node_count, edge_count) = locals.iter().fold((0, 0), |(n, m), l| (n + l.nodes.len(), m + l.edges.len()));
-    let mut nodes: Vec<AxisNode> = Vec::with_capacity(node_count);
+    let mut nodes: Vec<AxisNode> = Vec::with_capacity(locals.nodes.len());
     let mut port_node: Vec<Option<usize>> = vec![None; cuts.len()];
-    let same_as = coinciding_cuts(cuts, &joined_ports(locals), Tolerance::new(tol));
-    let mut edges: Vec<AxisEdge> = Vec::with_capacity(edge_count);
-    let mut is_port: Vec<bool> = Vec::with_capacity(node_count);
-    let mut is_joint: Vec<bool> = Vec::with_capacity(node_count);
-    let skip = redundant_bands(locals, &same_as);
+    let mut is_port: Vec<bool> = Vec::with_capacity(locals.nodes.len());
+    let mut is_joint: Vec<bool> = Vec::with_capacity(locals.nodes.len());
+    // The axis node of every subshape node; `usize::MAX` for the nodes of
+    // a subshape left out, whose edges go with them.
+    let mut ids: Vec<usize> = vec![usize::MAX; locals.nodes.len()];
     for (local, _) in locals.iter().zip(&skip).filter(|(_, &redundant)| !redundant) {
-        let ids: Vec<usize> = local
-            .nodes
-            .iter()
-            .map(|n| {
-                let make = |nodes: &mut Vec<AxisNode>, is_port: &mut Vec<bool>, port: bool| {
-                    // Kinds are settled from the degrees once all is glued.
-                    nodes.push(AxisNode { point: n.center, radius: n.radius, kind: NodeKind::Joint });
-                    is_port.push(port);
-                    nodes.len() - 1
-                };
-                match n.kind {
-                    EventKind::Port(c) => {
-                        *port_node[same_as[c]].get_or_insert_with(|| make(&mut nodes, &mut is_port, true))
-                    }
-                    _ => {
-                        let id = make(&mut nodes, &mut is_port, false);
-                        is_joint.resize(id + 1, false);
-                        is_joint[id] = n.kind == EventKind::Joint;
-                        id
-                    }
+        for (k, n) in local.nodes.iter().enumerate() {
+            let make = |nodes: &mut Vec<AxisNode>, is_port: &mut Vec<bool>, port: bool| {
+                // Kinds are settled from the degrees once all is glued.
+                nodes.push(AxisNode { point: n.center, radius: n.radius, kind: NodeKind::Joint });
+                is_port.push(port);
+                nodes.len() - 1
+            };
+            ids[local.first_node + k] = match n.kind {
+                EventKind::Port(c) => {
+                    *port_node[same_as[c]].get_or_insert_with(|| make(&mut nodes, &mut is_port, true))
                 }
-            })
-            .collect();
-        for e in &local.edges {
-            edges.push(AxisEdge {
-                from: ids[e.from],
-                to: ids[e.to],
-                sites: e.sites,
-                params: e.params,
-                kind: if e.straight { ConicKind::Line } else { edge_kind(shape, e.sites[0], e.sites[1]) },
-                straight: e.straight,
-            });
+                _ => {
+                    let id = make(&mut nodes, &mut is_port, false);
+                    is_joint.resize(id + 1, false);
+                    is_joint[id] = n.kind == EventKind::Joint;
+                    id
+                }
+            };
         }
     }
+    drop(port_node);
+    let LocalAxes { nodes: local_nodes, mut edges, .. } = locals;
+    drop(local_nodes);
     // Two subshapes that both hold the same stretch of axis (between two
     // disks met twice) give the same edge twice: keep one. Only an edge
     // between two ports can repeat (every other node is one subshape's,
     // whose walk links each pair once).
-    edges.retain(|e| e.from != e.to);
+    edges.retain_mut(|e| {
+        if ids[e.from] == usize::MAX {
+            return false;
+        }
+        (e.from, e.to) = (ids[e.from], ids[e.to]);
+        e.kind = if e.straight { ConicKind::Line } else { edge_kind(shape, e.sites[0], e.sites[1]) };
+        e.from != e.to
+    });
+    drop(ids);
     let between_ports: Vec<bool> = edges.iter().map(|e| is_port[e.from] && is_port[e.to]).collect();
     drop_repeats(&mut edges, &between_ports);
     let mut axis = MedialAxis2d { nodes, edges };
@@ -93,16 +89,12 @@ pub fn glue<K: AxisKernel>(
 
 /// Pairs of dividing disks (smaller id first) that some subshape's axis
 /// joins by an edge: two nodes of that axis, so two disks, however close.
-fn joined_ports(locals: &[LocalAxis]) -> FastSet<(usize, usize)> {
-    let port = |l: &LocalAxis, v: usize| match l.nodes[v].kind {
+fn joined_ports(locals: &LocalAxes) -> FastSet<(usize, usize)> {
+    let port = |v: usize| match locals.nodes[v].kind {
         EventKind::Port(c) => Some(c),
         _ => None,
     };
-    locals
-        .iter()
-        .flat_map(|l| l.edges.iter().filter_map(move |e| Some((port(l, e.from)?, port(l, e.to)?))))
-        .map(|(a, b)| (a.min(b), a.max(b)))
-        .collect()
+    locals.edges.iter().filter_map(|e| Some((port(e.from)?, port(e.to)?))).map(|(a, b)| (a.min(b), a.max(b))).collect()
 }
 
 /// For each dividing disk, the first one that is the same disk (centre and
@@ -157,12 +149,12 @@ fn coinciding_cuts(cuts: &[Cut], apart: &FastSet<(usize, usize)>, t: Tolerance) 
 /// stretch (between two disks met twice) has those ports too, its axis is
 /// kept instead, and of two bands with the same ports one is kept.
 /// `same_as` maps a dividing disk to the one it coincides with.
-fn redundant_bands(locals: &[LocalAxis], same_as: &[usize]) -> Vec<bool> {
-    let is_band = |local: &LocalAxis| local.edges.len() == 1 && local.edges[0].straight;
-    if !locals.iter().any(is_band) {
-        return vec![false; locals.len()];
+fn redundant_bands(locals: &LocalAxes, same_as: &[usize]) -> Vec<bool> {
+    let is_band = |local: &LocalView| local.edges.len() == 1 && local.edges[0].straight;
+    if !locals.iter().any(|l| is_band(&l)) {
+        return vec![false; locals.count()];
     }
-    let ports_of = |local: &LocalAxis| {
+    let ports_of = |local: &LocalView| {
         let mut p: Vec<usize> = local
             .nodes
             .iter()
@@ -175,13 +167,13 @@ fn redundant_bands(locals: &[LocalAxis], same_as: &[usize]) -> Vec<bool> {
         p
     };
     let solved: FastSet<Vec<usize>> =
-        locals.iter().filter(|l| !is_band(l)).map(ports_of).filter(|p| p.len() == 2).collect();
+        locals.iter().filter(|l| !is_band(l)).map(|l| ports_of(&l)).filter(|p| p.len() == 2).collect();
     let mut bands: FastSet<Vec<usize>> = FastSet::default();
     locals
         .iter()
         .map(|local| {
-            is_band(local) && {
-                let ports = ports_of(local);
+            is_band(&local) && {
+                let ports = ports_of(&local);
                 solved.contains(&ports) || !bands.insert(ports)
             }
         })

@@ -18,6 +18,7 @@
 pub(crate) mod check;
 pub(crate) mod error;
 pub(crate) mod glue;
+pub(crate) mod locals;
 pub(crate) mod merge;
 pub(crate) mod refine;
 pub(crate) mod rounding;
@@ -110,7 +111,7 @@ pub fn medial_axis_with<K: AxisKernel>(
         };
         let solved = solve_leaves(&finder, &mut d, seed);
         match solved
-            .and_then(|locals| glue(&finder, &d.cuts, &locals))
+            .and_then(|locals| glue(&finder, &d.cuts, locals))
             .and_then(|axis| final_check(&finder, &axis).map(|_| axis))
         {
             Ok(axis) => return Ok(axis),

@@ -4,6 +4,7 @@
 use crate::kernel::AxisKernel;
 use crate::plane::medial::base_case::{self, BaseCaseError, LocalAxis};
 use crate::plane::medial::conquer::error::AxisError;
+use crate::plane::medial::conquer::locals::LocalAxes;
 use crate::plane::medial::decompose::divide::{divide_into, leaf_size, Decomposition};
 use crate::plane::medial::decompose::subshape::Subshape;
 use crate::plane::medial::disk::maximal::DiskFinder;
@@ -24,21 +25,25 @@ pub fn solve_leaves<K: AxisKernel>(
     finder: &DiskFinder<K>,
     d: &mut Decomposition,
     seed: u64,
-) -> Result<Vec<LocalAxis>, AxisError> {
+) -> Result<LocalAxes, AxisError> {
     let shape = finder.shape();
     let tol = shape.tolerance();
     let mut pending: Vec<Subshape> = std::mem::take(&mut d.leaves);
     pending.append(&mut d.stuck);
-    let mut locals = Vec::with_capacity(pending.len());
+    let mut locals = LocalAxes::default();
     for round in 0..=REFINES {
-        let results: Vec<Result<LocalAxis, BaseCaseError>> =
-            pending.par_iter().map(|s| base_case::solve(shape, s, &d.cuts, tol, finder)).collect();
         let mut failed = Vec::new();
-        for (s, r) in pending.into_iter().zip(results) {
-            match r {
-                Ok(local) => locals.push(local),
-                Err(e) if round == REFINES => return Err(e.into()),
-                Err(_) => failed.push(s),
+        // A batch at a time: only one batch of leaves' axes is ever held
+        // both as its own vectors and in `locals`.
+        for batch in pending.chunks(BATCH) {
+            let results: Vec<Result<LocalAxis, BaseCaseError>> =
+                batch.par_iter().map(|s| base_case::solve(shape, s, &d.cuts, tol, finder)).collect();
+            for (s, r) in batch.iter().zip(results) {
+                match r {
+                    Ok(local) => locals.push(local),
+                    Err(e) if round == REFINES => return Err(e.into()),
+                    Err(_) => failed.push(s.clone()),
+                }
             }
         }
         if failed.is_empty() {
@@ -58,3 +63,7 @@ pub fn solve_leaves<K: AxisKernel>(
     }
     Ok(locals)
 }
+
+/// Leaves solved in parallel at a time: enough to keep every core busy,
+/// few enough that their own vectors are a small part of the whole.
+const BATCH: usize = 4096;
