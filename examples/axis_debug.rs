@@ -146,8 +146,8 @@ fn glued_corners(shape: &Shape2d, finder: &DiskFinder, seed: u64) {
         Err(e) => return println!("solve_leaves: {e}"),
     };
     for (k, local) in locals.iter().enumerate() {
-        for n in local.nodes {
-            if n.radius <= shape.tolerance() && n.kind != base_case::EventKind::Corner {
+        for (n, kind) in local.nodes.iter().zip(local.events) {
+            if n.radius <= shape.tolerance() && *kind != base_case::EventKind::Corner {
                 println!("local {k}: tiny non-corner node {n:?}");
             }
         }
@@ -168,7 +168,7 @@ fn glued_corners(shape: &Shape2d, finder: &DiskFinder, seed: u64) {
                     let (a, b) = (&axis.nodes[e.from], &axis.nodes[e.to]);
                     println!("edge {ei} at {s}: no disk; {a:?} -> {b:?}, kind {:?}, sites {:?}", e.kind, e.sites);
                     for (k, local) in locals.iter().enumerate() {
-                        if local.nodes.iter().any(|n| n.center.dist(a.point) < 1e-9 || n.center.dist(b.point) < 1e-9) {
+                        if local.nodes.iter().any(|n| n.point.dist(a.point) < 1e-9 || n.point.dist(b.point) < 1e-9) {
                             println!("   from leaf {k} ({} nodes)", local.nodes.len());
                         }
                     }
@@ -187,7 +187,7 @@ fn glued_corners(shape: &Shape2d, finder: &DiskFinder, seed: u64) {
                 println!("edge {ei} at {s}: disk {c:?} r {r}, intruder {intruder:?}, primitive defects {apart:?}");
                 println!("   {:?} -> {:?}, sites {:?}", a, b, e.sites);
                 for (k, local) in locals.iter().enumerate() {
-                    if local.nodes.iter().any(|n| n.center.dist(a.point) < 1e-9 || n.center.dist(b.point) < 1e-9) {
+                    if local.nodes.iter().any(|n| n.point.dist(a.point) < 1e-9 || n.point.dist(b.point) < 1e-9) {
                         println!("   from leaf {k} ({} nodes)", local.nodes.len());
                         if let Ok(dir) = std::env::var("MEDAX_DUMP") {
                             if let Some(sub) = subshapes.get(k) {
@@ -221,7 +221,7 @@ fn glued_corners(shape: &Shape2d, finder: &DiskFinder, seed: u64) {
                 }
             }
             for (k, local) in locals.iter().enumerate() {
-                for n in local.nodes.iter().filter(|n| n.center.dist(p) < 1e-6) {
+                for n in local.nodes.iter().filter(|n| n.point.dist(p) < 1e-6) {
                     println!("   local {k}: {n:?}");
                 }
             }

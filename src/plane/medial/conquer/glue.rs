@@ -6,7 +6,7 @@
 use crate::kernel::bisector::ConicKind;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::AxisKernel;
-use crate::plane::axis::{edge_kind, AxisNode, MedialAxis2d, NodeKind};
+use crate::plane::axis::{edge_kind, MedialAxis2d, NodeKind};
 use crate::plane::medial::base_case::EventKind;
 use crate::plane::medial::conquer::check::{check_graph, drop_repeats};
 use crate::plane::medial::conquer::error::AxisError;
@@ -19,54 +19,52 @@ use crate::util::fast_hash::{FastMap, FastSet};
 
 /// Glues the axes of the subshapes (`locals`) at the centres of the
 /// dividing disks `cuts`; `finder` indexes the shape they were made of.
-/// The subshapes' edges become the axis's edges in place.
+/// The subshapes' nodes and edges become the axis's in place.
 pub fn glue<K: AxisKernel>(finder: &DiskFinder<K>, cuts: &[Cut], locals: LocalAxes) -> Result<MedialAxis2d, AxisError> {
     let shape = finder.shape();
     let tol = shape.tolerance();
     let same_as = coinciding_cuts(cuts, &joined_ports(&locals), Tolerance::new(tol));
     let skip = redundant_bands(&locals, &same_as);
-    // Sized once: growing vectors of 10^6 items by doubling spends more
-    // on fresh pages than on the gluing.
-    let mut nodes: Vec<AxisNode> = Vec::with_capacity(locals.nodes.len());
-    let mut port_node: Vec<Option<usize>> = vec![None; cuts.len()];
-    let mut is_port: Vec<bool> = Vec::with_capacity(locals.nodes.len());
-    let mut is_joint: Vec<bool> = Vec::with_capacity(locals.nodes.len());
-    // The axis node of every subshape node; `usize::MAX` for the nodes of
-    // a subshape left out, whose edges go with them.
-    let mut ids: Vec<usize> = vec![usize::MAX; locals.nodes.len()];
-    for (local, _) in locals.iter().zip(&skip).filter(|(_, &redundant)| !redundant) {
-        for (k, n) in local.nodes.iter().enumerate() {
-            let make = |nodes: &mut Vec<AxisNode>, is_port: &mut Vec<bool>, port: bool| {
-                // Kinds are settled from the degrees once all is glued.
-                nodes.push(AxisNode { point: n.center, radius: n.radius, kind: NodeKind::Joint });
-                is_port.push(port);
-                nodes.len() - 1
-            };
-            ids[local.first_node + k] = match n.kind {
-                EventKind::Port(c) => {
-                    *port_node[same_as[c]].get_or_insert_with(|| make(&mut nodes, &mut is_port, true))
-                }
-                _ => {
-                    let id = make(&mut nodes, &mut is_port, false);
-                    is_joint.resize(id + 1, false);
-                    is_joint[id] = n.kind == EventKind::Joint;
-                    id
-                }
-            };
+    let (mut nodes, events, mut edges) = locals.into_parts(&skip);
+    let mut port_node: Vec<Option<u32>> = vec![None; cuts.len()];
+    let mut is_port: Vec<bool> = Vec::with_capacity(nodes.len());
+    let mut is_joint: Vec<bool> = Vec::with_capacity(nodes.len());
+    // The axis node of every subshape node; `u32::MAX` for the nodes of a
+    // subshape left out, whose edges go with them. Nodes are compacted in
+    // place: a node's new index is never past its old one.
+    let mut ids: Vec<u32> = vec![u32::MAX; nodes.len()];
+    let mut count = 0u32;
+    for (v, event) in events.iter().enumerate() {
+        let Some(event) = event else { continue };
+        let fresh = match *event {
+            EventKind::Port(c) => port_node[same_as[c]].is_none(),
+            _ => true,
+        };
+        if fresh {
+            nodes[count as usize] = nodes[v];
+            is_port.push(matches!(event, EventKind::Port(_)));
+            is_joint.push(*event == EventKind::Joint);
+            if let EventKind::Port(c) = *event {
+                port_node[same_as[c]] = Some(count);
+            }
+            count += 1;
         }
+        ids[v] = match *event {
+            EventKind::Port(c) => port_node[same_as[c]].expect("set above"),
+            _ => count - 1,
+        };
     }
-    drop(port_node);
-    let LocalAxes { nodes: local_nodes, mut edges, .. } = locals;
-    drop(local_nodes);
+    nodes.truncate(count as usize);
+    drop((events, port_node));
     // Two subshapes that both hold the same stretch of axis (between two
     // disks met twice) give the same edge twice: keep one. Only an edge
     // between two ports can repeat (every other node is one subshape's,
     // whose walk links each pair once).
     edges.retain_mut(|e| {
-        if ids[e.from] == usize::MAX {
+        if ids[e.from] == u32::MAX {
             return false;
         }
-        (e.from, e.to) = (ids[e.from], ids[e.to]);
+        (e.from, e.to) = (ids[e.from] as usize, ids[e.to] as usize);
         e.kind = if e.straight { ConicKind::Line } else { edge_kind(shape, e.sites[0], e.sites[1]) };
         e.from != e.to
     });
@@ -90,7 +88,7 @@ pub fn glue<K: AxisKernel>(finder: &DiskFinder<K>, cuts: &[Cut], locals: LocalAx
 /// Pairs of dividing disks (smaller id first) that some subshape's axis
 /// joins by an edge: two nodes of that axis, so two disks, however close.
 fn joined_ports(locals: &LocalAxes) -> FastSet<(usize, usize)> {
-    let port = |v: usize| match locals.nodes[v].kind {
+    let port = |v: usize| match locals.events[v] {
         EventKind::Port(c) => Some(c),
         _ => None,
     };
@@ -156,9 +154,9 @@ fn redundant_bands(locals: &LocalAxes, same_as: &[usize]) -> Vec<bool> {
     }
     let ports_of = |local: &LocalView| {
         let mut p: Vec<usize> = local
-            .nodes
+            .events
             .iter()
-            .filter_map(|n| match n.kind {
+            .filter_map(|event| match *event {
                 EventKind::Port(c) => Some(same_as[c]),
                 _ => None,
             })

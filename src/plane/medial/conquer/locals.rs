@@ -4,20 +4,24 @@
 //! axis, and held as one small vector per leaf beside the glued copy they
 //! set the peak memory (a random star of 10^6 vertices: 0.83 kB per
 //! element, of which the leaves' axes were 0.33 kB). Here every leaf's
-//! edges are written once, already in the glued axis's edge type, into one
-//! list that gluing renumbers and filters in place and hands on as the
-//! axis's edges: no second copy of them ever exists.
+//! nodes and edges are written once, already in the glued axis's types,
+//! into lists that gluing compacts, renumbers and filters in place and
+//! hands on as the axis's nodes and edges: no second copy of them ever
+//! exists.
 
 use crate::kernel::bisector::ConicKind;
-use crate::plane::axis::AxisEdge;
-use crate::plane::medial::base_case::{LocalAxis, LocalNode};
+use crate::plane::axis::{AxisEdge, AxisNode, NodeKind};
+use crate::plane::medial::base_case::{EventKind, LocalAxis};
 
 /// The axes of many subshapes: each one's nodes and edges contiguous, in
 /// the order they were pushed.
 #[derive(Debug, Clone, Default)]
 pub struct LocalAxes {
-    /// Every subshape's nodes.
-    pub(crate) nodes: Vec<LocalNode>,
+    /// Every subshape's nodes (`kind` is [`NodeKind::Joint`] until gluing
+    /// settles it from the degrees).
+    pub(crate) nodes: Vec<AxisNode>,
+    /// Where each node comes from, beside `nodes`.
+    pub(crate) events: Vec<EventKind>,
     /// Every subshape's edges; `from` and `to` index `nodes` (the whole
     /// list, not the subshape's part of it). `kind` is not set yet (it is
     /// [`ConicKind::Line`] until gluing names the conic).
@@ -29,12 +33,14 @@ pub struct LocalAxes {
 /// One subshape's part of [`LocalAxes`].
 #[derive(Debug, Clone, Copy)]
 pub struct LocalView<'a> {
-    /// Its nodes.
-    pub nodes: &'a [LocalNode],
+    /// Its nodes (the debugging examples look at them; gluing needs only
+    /// the events).
+    #[cfg_attr(not(any(test, feature = "internals")), allow(dead_code))]
+    pub nodes: &'a [AxisNode],
+    /// Where each of its nodes comes from.
+    pub events: &'a [EventKind],
     /// Its edges, `from` and `to` relative to the whole list of nodes.
     pub edges: &'a [AxisEdge],
-    /// Index of its first node in the whole list.
-    pub first_node: usize,
 }
 
 impl LocalAxes {
@@ -52,7 +58,12 @@ impl LocalAxes {
             kind: ConicKind::Line,
             straight: e.straight,
         }));
-        self.nodes.extend(local.nodes);
+        self.nodes.extend(local.nodes.iter().map(|n| AxisNode {
+            point: n.center,
+            radius: n.radius,
+            kind: NodeKind::Joint,
+        }));
+        self.events.extend(local.nodes.iter().map(|n| n.kind));
         self.starts.push((self.nodes.len(), self.edges.len()));
     }
 
@@ -64,7 +75,17 @@ impl LocalAxes {
     /// Subshape `k`.
     pub fn get(&self, k: usize) -> LocalView<'_> {
         let ((n0, e0), (n1, e1)) = (self.starts[k], self.starts[k + 1]);
-        LocalView { nodes: &self.nodes[n0..n1], edges: &self.edges[e0..e1], first_node: n0 }
+        LocalView { nodes: &self.nodes[n0..n1], events: &self.events[n0..n1], edges: &self.edges[e0..e1] }
+    }
+
+    /// The lists, each node's origin `None` where its subshape is left out
+    /// (`skip[k]` for subshape `k`).
+    pub(crate) fn into_parts(self, skip: &[bool]) -> (Vec<AxisNode>, Vec<Option<EventKind>>, Vec<AxisEdge>) {
+        let mut events: Vec<Option<EventKind>> = self.events.into_iter().map(Some).collect();
+        for (w, _) in self.starts.windows(2).zip(skip).filter(|(_, &left_out)| left_out) {
+            events[w[0].0..w[1].0].fill(None);
+        }
+        (self.nodes, events, self.edges)
     }
 
     /// Every subshape, in order.
@@ -78,7 +99,7 @@ mod tests {
     use super::*;
     use crate::kernel::Point;
     use crate::plane::axis::Primitive;
-    use crate::plane::medial::base_case::{EventKind, LocalEdge};
+    use crate::plane::medial::base_case::{LocalEdge, LocalNode};
     use crate::shape::ElementRef;
 
     #[test]
@@ -92,8 +113,9 @@ mod tests {
         all.push(LocalAxis { nodes: vec![node(2.0), node(3.0)], edges: vec![edge] });
         assert_eq!(all.count(), 2);
         let second = all.get(1);
-        assert_eq!((second.first_node, second.nodes.len(), second.edges.len()), (2, 2, 1));
+        assert_eq!((second.nodes.len(), second.edges.len()), (2, 1));
         assert_eq!((second.edges[0].from, second.edges[0].to), (3, 2));
-        assert_eq!(all.nodes[second.edges[0].from].center.x, 3.0);
+        assert_eq!(all.nodes[second.edges[0].from].point.x, 3.0);
+        assert_eq!(second.events, [EventKind::Joint; 2]);
     }
 }
