@@ -8,9 +8,9 @@ use crate::kernel::fan::Fan;
 use crate::kernel::Disk;
 use crate::kernel::{AxisKernel, Contact, Point};
 use crate::plane::medial::decompose::parts::{foot_at_convex_corner, original_parts, parts_in, position, reflex_point};
-use crate::plane::medial::decompose::subshape::{BoundaryPos, ChainParts, Cut, CutIds, Piece, Subshape};
+use crate::plane::medial::decompose::subshape::{chain_holds, BoundaryPos, ChainParts, Cut, CutIds, Piece, Subshape};
 use crate::plane::medial::decompose::tour::{Ranged, Span, Tour};
-use crate::plane::medial::disk::maximal::{DiskFinder, MaxDisk};
+use crate::plane::medial::disk::maximal::{DiskFinder, Footpoint, MaxDisk};
 use crate::plane::medial::disk::slide::slide_to_third;
 use crate::shape::{ElementRef, JointKind, Shape2d};
 use crate::util::mix::Mix;
@@ -258,4 +258,116 @@ pub(super) fn candidate<K: AxisKernel>(
     let normal = |e: usize, t: f64| finder.boundary_point(ElementRef { element: e, ..at }, t).1;
     let middle = Fan::clockwise(normal(before, 1.0), normal(after, 0.0)).direction_at(0.5);
     Some((finder.max_disk_toward(at, pos.t, middle), pos, range))
+}
+
+/// A maximal disk from deep inside a large plain subshape `s`, to choose
+/// a balanced cut among. Random points of a spiky polygon fall on its
+/// spikes, whose disks peel one spike off at a time: a random star of
+/// 10^6 vertices was cut 1 459 times in a row, each cut waiting for the
+/// one before, until a random disk split it in two. Without auxiliary
+/// arcs: the disk grown at the boundary point nearest to the centre of
+/// the shape's bounding box, towards it (it holds the empty disk about
+/// that centre). Otherwise `s`'s largest dividing disk slid into `s`
+/// (`maxdisk*`, along the bisector of the two footpoints that bound its
+/// arc) to the first disk touching a third element: the next branch
+/// point of the axis beyond that disk, whose footpoints fall far apart
+/// on `s`'s chains. `None` when `s` holds ranges or no such disk is found.
+pub(super) fn deep_candidate<K: AxisKernel, C: CutIds + ?Sized>(
+    finder: &DiskFinder<K>,
+    s: &Ranged,
+    cuts: &C,
+) -> Option<(MaxDisk, BoundaryPos, (f64, f64))> {
+    let shape = finder.shape();
+    let plain = s.plain()?;
+    let m = plain.pieces.len();
+    let largest = (0..m)
+        .filter_map(|j| match plain.pieces[j] {
+            Piece::Aux { disk } => Some((j, cuts[disk])),
+            Piece::Chain { .. } => None,
+        })
+        .max_by(|a, b| a.1.radius.total_cmp(&b.1.radius));
+    let mut d = match largest {
+        None => grown_towards(finder, shape.bbox().center())?,
+        Some((j, disk)) => slid_into(finder, &plain, j, disk)?,
+    };
+    // The disk is grown at (cut from) a footpoint on one of `s`'s chains,
+    // inside one of its parts: put the first such footpoint first.
+    let part_of = |pos: BoundaryPos| {
+        plain.chains().filter(|&(from, to)| chain_holds(shape, from, to, pos).is_some()).find_map(|(from, to)| {
+            ChainParts::new(shape, from, to).iter().find(|&(e, lo, hi)| e == pos.element && lo <= pos.t && pos.t <= hi)
+        })
+    };
+    let (k, pos, (_, lo, hi)) = d
+        .footpoints
+        .iter()
+        .enumerate()
+        .find_map(|(k, f)| Some((k, position(shape, f), part_of(position(shape, f))?)))?;
+    d.footpoints.swap(0, k);
+    Some((d, pos, (lo, hi)))
+}
+
+/// The maximal disk grown at the boundary point nearest to `q`, towards
+/// `q` (along the element's normal inside an element; at a reflex vertex
+/// only when `q`'s direction lies in the vertex's fan).
+fn grown_towards<K: AxisKernel>(finder: &DiskFinder<K>, q: Point) -> Option<MaxDisk> {
+    let shape = finder.shape();
+    let (near, dist) = finder.nearest(q)?;
+    if dist.is_nan() || dist <= finder.contact_tolerance() {
+        return None;
+    }
+    let (_, foot) = shape.loops()[near.loop_index].element(near.element).closest_point(q);
+    let pos = position(shape, &Footpoint { element: near, point: foot });
+    let at = ElementRef { loop_index: pos.loop_index, element: pos.element };
+    if pos.t != 0.0 && pos.t != 1.0 {
+        return Some(finder.max_disk(at, pos.t));
+    }
+    let n = shape.loops()[pos.loop_index].len();
+    let (before, after) =
+        if pos.t == 0.0 { ((at.element + n - 1) % n, at.element) } else { (at.element, (at.element + 1) % n) };
+    let normal = |e: usize, t: f64| finder.boundary_point(ElementRef { element: e, ..at }, t).1;
+    let toward = (q - foot) * (1.0 / dist);
+    Fan::clockwise(normal(before, 1.0), normal(after, 0.0))
+        .contains(toward, 0.0)
+        .then(|| finder.max_disk_toward(at, pos.t, toward))
+}
+
+/// Dividing disk `disk`, whose arc is piece `j` of `s`, slid into `s`
+/// between the footpoints that bound the arc (the end of the chain before
+/// it and the start of the one after) to a disk touching a third element;
+/// with every footpoint of the disk reached, if it is empty.
+fn slid_into<K: AxisKernel>(finder: &DiskFinder<K>, s: &Subshape, j: usize, disk: Cut) -> Option<MaxDisk> {
+    let shape = finder.shape();
+    let m = s.pieces.len();
+    let Piece::Chain { to: end_before, .. } = s.pieces[(j + m - 1) % m] else { return None };
+    let Piece::Chain { from: start_after, to: end_after } = s.pieces[(j + 1) % m] else { return None };
+    let foot = |p: BoundaryPos| Footpoint {
+        element: ElementRef { loop_index: p.loop_index, element: p.element },
+        point: p.point(shape),
+    };
+    let (fa, fb) = (foot(end_before), foot(start_after));
+    // The slide goes away from the junction: put it across the disk from
+    // the middle of the chain after the arc, so the disk moves into `s`.
+    let parts = ChainParts::new(shape, start_after, end_after);
+    let middle = match parts.is_empty() {
+        true => fb.point,
+        false => {
+            let (e, lo, hi) = parts.get(parts.len() / 2);
+            shape.loops()[start_after.loop_index].element(e).point_at(0.5 * (lo + hi))
+        }
+    };
+    let junction = disk.center + (disk.center - middle);
+    let Disk { center: c, radius: r } =
+        slide_to_third(finder, &fa, &fb, Disk::new(disk.center, disk.radius), junction)?;
+    let tol = finder.contact_tolerance();
+    let touch = finder.touching(c, r);
+    let empty = finder.nearest(c).is_some_and(|(near, _)| {
+        let e = shape.loops()[near.loop_index].element(near.element);
+        finder.kernel().element_contact(Disk::new(c, r), &e, tol) == Contact::Touching
+    });
+    (touch.len() >= 3 && r > tol && empty).then_some(MaxDisk {
+        center: c,
+        radius: r,
+        footpoints: touch,
+        leaf_arc: false,
+    })
 }

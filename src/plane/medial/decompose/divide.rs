@@ -30,7 +30,7 @@ use crate::plane::medial::decompose::augment::Augmentation;
 use crate::plane::medial::decompose::augment::{augment, AugmentError};
 pub use crate::plane::medial::decompose::cut_rules::leaf_size;
 use crate::plane::medial::decompose::cut_rules::{
-    candidate, cluster_cut, cut_with, pick_point, reflex_points, seed_of, ATTEMPTS,
+    candidate, cluster_cut, cut_with, deep_candidate, pick_point, reflex_points, seed_of, ATTEMPTS,
 };
 use crate::plane::medial::decompose::fan_cut::fan_cut;
 use crate::plane::medial::decompose::parts::{parts_in, points_in};
@@ -205,6 +205,10 @@ const BALANCE_PARTS: usize = 2048;
 /// Random maximal disks a large subshape chooses its cut among.
 const CANDIDATES: usize = 8;
 
+/// A balanced cut peels when its largest child keeps more than all but
+/// 1/`PEEL` of the parts.
+const PEEL: usize = 64;
+
 /// A cut whose children include two of at least this many original parts
 /// divides them in parallel (below, the work of one subtree is a few
 /// milliseconds: less than a task costs to be worth it).
@@ -369,15 +373,31 @@ impl<K: AxisKernel> Divide<'_, K> {
     /// 10^4 parts and more, each copying the subshape); the largest of a
     /// few disks more often sits where the shape is wide and cuts off a
     /// larger share, which bounds the copying and gives the parallel tasks
-    /// work. It does not guarantee balance: a star of 10^6 vertices still
-    /// makes 8 360 such cuts, and its divide step's critical path is most
-    /// of its work (docs/PERFORMANCE.md, "Work and span").
+    /// work. Where even that disk only peels (its largest child keeps all
+    /// but 1/64 of the parts: spiky polygons, whose random disks fall on
+    /// spikes), a disk from deep inside is tried ([`deep_candidate`]: the
+    /// largest dividing disk slid on to the next branch point), and taken
+    /// when it divides without peeling. A star of 10^6 vertices made 8 360
+    /// peeling cuts in a row before (critical path 1.9 s of 2.3 s of
+    /// dividing), 0.14 s with it.
     fn balanced_cut(&self, s: &Ranged, parts: usize, cuts: &PathCuts, rng: &mut Mix) -> Option<(Cut, Vec<Ranged>)> {
         let (finder, tour) = (self.finder, self.tour);
         let mut found: Vec<(MaxDisk, BoundaryPos, (f64, f64))> =
             (0..CANDIDATES).filter_map(|_| candidate(finder, s, tour, rng)).collect();
         found.sort_by(|a, b| b.0.radius.total_cmp(&a.0.radius));
-        found.into_iter().find_map(|(d, pos, range)| cut_with(finder, s, parts, (cuts, tour), &d, pos, range))
+        let best =
+            found.into_iter().find_map(|(d, pos, range)| cut_with(finder, s, parts, (cuts, tour), &d, pos, range));
+        let shape = finder.shape();
+        let peels = |children: &[Ranged]| {
+            children.iter().map(|c| parts_in(shape, c, tour)).max().is_some_and(|m| m * PEEL > parts * (PEEL - 1))
+        };
+        if best.as_ref().is_some_and(|(_, children)| !peels(children)) {
+            return best;
+        }
+        deep_candidate(finder, s, cuts)
+            .and_then(|(d, pos, range)| cut_with(finder, s, parts, (cuts, tour), &d, pos, range))
+            .filter(|(_, children)| !peels(children))
+            .or(best)
     }
 }
 
