@@ -50,6 +50,17 @@ fn main() {
     if std::env::var("MEDAX_CORNERS").is_ok() || std::env::var("MEDAX_CHECK").is_ok() {
         glued_corners(&shape, &finder, seed);
     }
+    if let Some(v) = std::env::var("MEDAX_VERTEX").ok().and_then(|s| s.parse::<usize>().ok()) {
+        let n = shape.loops()[0].len();
+        for (i, s) in d.leaves.iter().chain(d.stuck.iter()).enumerate() {
+            for (from, to) in s.chains() {
+                let parts = medax::plane::internals::ChainParts::new(&shape, from, to);
+                if parts.iter().any(|(e, _, _)| e == v || e == (v + n - 1) % n) {
+                    println!("leaf {i}: {:?}", s.pieces);
+                }
+            }
+        }
+    }
     // MEDAX_NEAR=x,y: the dividing disks near a point of interest.
     if let Some((x, y)) = std::env::var("MEDAX_NEAR").ok().and_then(|v| {
         let (a, b) = v.split_once(',')?;

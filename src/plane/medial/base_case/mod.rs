@@ -31,8 +31,9 @@
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{AxisKernel, Point};
 use crate::plane::axis::Primitive;
-use crate::plane::medial::decompose::subshape::{hugged, Cut, Hugged, Piece, Subshape};
+use crate::plane::medial::decompose::subshape::{hugged, ChainParts, Cut, Hugged, Piece, Subshape};
 use crate::plane::medial::disk::maximal::DiskFinder;
+use crate::shape::JointKind;
 use crate::shape::Shape2d;
 
 mod branch;
@@ -146,8 +147,14 @@ pub fn solve<K: AxisKernel>(
         // axis runs on inside a sliver a few tolerances thin, where the
         // order of footpoints is rounding rather than geometry, and every
         // disk there is this one within those tolerances. The disk is the
-        // tip's whole axis, a leaf.
-        return Ok(tip_axis(cuts, disk));
+        // tip's whole axis, a leaf. A needle's tip cut a few tolerances
+        // from its convex vertex is walked all the same: the vertex is a
+        // corner node of the axis (a disk of 2.5·10^-7 from the tip of a
+        // random star's spike hugged it, and its corner went missing).
+        if !holds_convex_vertex(shape, s) {
+            return Ok(tip_axis(cuts, disk));
+        }
+        return walk_leaf(shape, s, cuts, tol, finder).or_else(|_| Ok(tip_axis(cuts, disk)));
     }
     // A band between two disks that both hug it is solved like any leaf,
     // and where the footpoint order (rounding there) leaves no consistent
@@ -157,6 +164,24 @@ pub fn solve<K: AxisKernel>(
         Some(band @ Hugged::Band(_)) => band_axis(shape, s, cuts, band).ok_or(e),
         Some(Hugged::Cluster) => cluster_axis(shape, s, cuts).ok_or(e),
         _ => Err(e),
+    })
+}
+
+/// Whether a convex vertex lies inside one of `s`'s chains or where two
+/// of its chains meet (at the loop's start, where the first chain of a
+/// whole loop ends).
+fn holds_convex_vertex(shape: &Shape2d, s: &Subshape) -> bool {
+    let convex = |l: usize, v: usize| shape.joint(l, v) == JointKind::Convex;
+    let m = s.pieces.len();
+    (0..m).any(|j| match (s.pieces[j], s.pieces[(j + 1) % m]) {
+        (Piece::Chain { from, to }, next) => {
+            let (l, n) = (from.loop_index, shape.loops()[from.loop_index].len());
+            let parts = ChainParts::new(shape, from, to);
+            let inside = parts.iter().skip(1).any(|(e, _, _)| convex(l, e));
+            let joined = matches!(next, Piece::Chain { from: f, .. } if to.t == 1.0 && f.t == 0.0 && f.element == (to.element + 1) % n);
+            inside || (joined && convex(l, (to.element + 1) % n))
+        }
+        _ => false,
     })
 }
 
@@ -253,6 +278,29 @@ mod tests {
 
     fn solve_whole(shape: &Shape2d) -> LocalAxis {
         solve(shape, &Subshape::whole_loop(shape, 0), &[], shape.tolerance(), &DiskFinder::new(shape)).unwrap()
+    }
+
+    #[test]
+    fn convex_vertices_inside_chains_and_where_two_chains_meet() {
+        let r = rectangle();
+        let at = |element: usize, t: f64| crate::plane::BoundaryPos { loop_index: 0, element, t };
+        let aux = Piece::Aux { disk: 0 };
+        let holds = |pieces: Vec<Piece>| holds_convex_vertex(&r, &Subshape { pieces });
+        assert!(holds(Subshape::whole_loop(&r, 0).pieces));
+        // Inside one side: no vertex.
+        assert!(!holds(vec![Piece::Chain { from: at(0, 0.2), to: at(0, 0.8) }, aux]));
+        // Over the corner (4, 0).
+        assert!(holds(vec![Piece::Chain { from: at(0, 0.5), to: at(1, 0.5) }, aux]));
+        // The loop's start (0, 0) between the last chain and the first.
+        let split = vec![
+            Piece::Chain { from: at(3, 0.5), to: at(3, 1.0) },
+            Piece::Chain { from: at(0, 0.0), to: at(0, 0.5) },
+            aux,
+        ];
+        assert!(holds(split));
+        // A chain ending at a vertex and an arc after it: the vertex is a
+        // footpoint, not inside.
+        assert!(!holds(vec![Piece::Chain { from: at(0, 0.5), to: at(0, 1.0) }, aux]));
     }
 
     #[test]
