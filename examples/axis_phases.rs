@@ -42,6 +42,7 @@ fn main() {
     };
     lap("generate", &mut phases);
     let mut span = 0.0;
+    let mut elements = n;
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().expect("thread pool");
     pool.install(|| {
         let shape = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).expect("valid shape");
@@ -64,12 +65,13 @@ fn main() {
         lap("glue (conquer)", &mut phases);
         final_check(&finder, &axis).expect("checked");
         lap("final check", &mut phases);
-        println!("{kind} {}: {} elements, {} leaves, {} nodes", n, shape.element_count(), leaves, axis.nodes.len());
+        elements = shape.element_count();
+        println!("{kind} {}: {} elements, {} leaves, {} nodes", n, elements, leaves, axis.nodes.len());
     });
     let total: f64 = phases.iter().skip(1).map(|p| p.1).sum();
     // Resident memory after each phase and the peak so far, bytes per
     // input element (Linux /proc; 0 elsewhere).
-    let per = |kb: u64| kb as f64 * 1024.0 / n.max(1) as f64;
+    let per = |kb: u64| kb as f64 * 1024.0 / elements.max(1) as f64;
     for ((name, t), (rss, peak)) in phases.iter().zip(&memory) {
         println!(
             "{name:>24} {t:8.3} s {:5.1} %   resident {:7.0} B/elt, peak {:7.0} B/elt",
