@@ -35,23 +35,18 @@ pub fn glue<K: AxisKernel>(finder: &DiskFinder<K>, cuts: &[Cut], locals: LocalAx
     let mut ids: Vec<u32> = vec![u32::MAX; nodes.len()];
     let mut count = 0u32;
     for (v, event) in events.iter().enumerate() {
-        let Some(event) = event else { continue };
-        let fresh = match *event {
-            EventKind::Port(c) => port_node[same_as[c]].is_none(),
-            _ => true,
-        };
-        if fresh {
+        let Some(event) = *event else { continue };
+        // Node `v` moved down to the next free index.
+        let mut keep = |port: bool| {
             nodes[count as usize] = nodes[v];
-            is_port.push(matches!(event, EventKind::Port(_)));
-            is_joint.push(*event == EventKind::Joint);
-            if let EventKind::Port(c) = *event {
-                port_node[same_as[c]] = Some(count);
-            }
+            is_port.push(port);
+            is_joint.push(event == EventKind::Joint);
             count += 1;
-        }
-        ids[v] = match *event {
-            EventKind::Port(c) => port_node[same_as[c]].expect("set above"),
-            _ => count - 1,
+            count - 1
+        };
+        ids[v] = match event {
+            EventKind::Port(c) => *port_node[same_as[c]].get_or_insert_with(|| keep(true)),
+            _ => keep(false),
         };
     }
     nodes.truncate(count as usize);
