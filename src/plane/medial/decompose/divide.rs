@@ -43,6 +43,7 @@ use crate::shape::Shape2d;
 use crate::util::mix::Mix;
 use rayon::prelude::*;
 use std::ops::Index;
+use std::sync::Mutex;
 use std::time::Instant;
 
 /// A subshape is a leaf once it has at most this many original parts.
@@ -214,6 +215,19 @@ const PEEL: usize = 64;
 /// milliseconds: less than a task costs to be worth it).
 const FORK_MIN_PARTS: usize = 512;
 
+/// A child of at least this many parts that a large subshape's cut peels
+/// off is divided by a task of its own (a few hundred microseconds of
+/// work, against a few microseconds a task costs).
+const DEFER_PARTS: usize = 128;
+
+/// What the divide loop's stack holds.
+enum Todo {
+    /// A subshape to divide, at this depth.
+    Divide(Ranged, usize),
+    /// Where the steps of the child handed to task `k` go.
+    Deferred(usize),
+}
+
 /// [`divide_into`] for subshapes that may hold ranges of the augmented
 /// cycle `tour`; leaves and stuck subshapes come out expanded.
 ///
@@ -267,28 +281,84 @@ impl<K: AxisKernel> Divide<'_, K> {
     /// Divides `roots` (the last first, as a stack pops them), each below
     /// the ancestors `path`, into the steps of the sequential order; with
     /// the critical path of that work, seconds.
-    fn divide(&self, roots: Vec<Ranged>, mut path: Vec<Cut>) -> (Vec<Step>, f64) {
+    ///
+    /// Two ways to share the work between threads. A cut whose children
+    /// include two large ones divides them in parallel and waits. A cut
+    /// of a large subshape that only peels a smaller child off (every cut
+    /// of a plate of holes: its augmented boundary walks the holes column
+    /// by column, so a disk between two neighbouring holes cuts off one
+    /// column's top and keeps the rest) hands that child to a task of its
+    /// own and goes on cutting the rest; the child's steps take its place
+    /// in the sequential order when the loop pops where it would have been.
+    fn divide(&self, roots: Vec<Ranged>, path: Vec<Cut>) -> (Vec<Step>, f64) {
+        let deferred: Mutex<Vec<(usize, Vec<Step>, f64)>> = Mutex::new(Vec::new());
+        let (steps, marks, own) = rayon::scope(|scope| self.divide_loop(roots, path, scope, &deferred));
+        let mut deferred: Vec<Option<(usize, Vec<Step>, f64)>> =
+            deferred.into_inner().unwrap_or_else(|e| e.into_inner()).into_iter().map(Some).collect();
+        if deferred.is_empty() {
+            return (steps, own);
+        }
+        deferred.sort_unstable_by_key(|d| d.as_ref().map(|d| d.0));
+        let mut span = own;
+        let mut all = Vec::with_capacity(steps.len() + deferred.iter().flatten().map(|d| d.1.len()).sum::<usize>());
+        let mut steps = steps.into_iter();
+        let mut at = 0;
+        for &(mark, k, handed_off) in &marks {
+            let Some((_, sub, sub_span)) = deferred[k].take() else { continue };
+            // A deferred child's critical path starts when it was handed off.
+            span = span.max(handed_off + sub_span);
+            all.extend(steps.by_ref().take(mark - at));
+            at = mark;
+            all.extend(sub);
+        }
+        all.extend(steps);
+        (all, span)
+    }
+
+    /// The loop of [`divide`](Self::divide): the steps of the sequential
+    /// order with the children handed to tasks of `scope` left out; where
+    /// each of those goes (its index into the steps, in order, and `k`:
+    /// task `k` writes `(k, steps, span)` to `deferred`) with the critical
+    /// path when it was handed off; and this loop's own critical path.
+    fn divide_loop<'s>(
+        &'s self,
+        roots: Vec<Ranged>,
+        mut path: Vec<Cut>,
+        scope: &rayon::Scope<'s>,
+        deferred: &'s Mutex<Vec<(usize, Vec<Step>, f64)>>,
+    ) -> (Vec<Step>, Vec<(usize, usize, f64)>, f64) {
         let start = Instant::now();
         // Time spent waiting for forked subtrees, and their critical paths.
         let (mut waited, mut forked) = (0.0, 0.0);
         let shape = self.finder.shape();
         let depth0 = path.len();
-        let mut todo: Vec<(Ranged, usize)> = roots.into_iter().map(|r| (r, depth0)).collect();
+        let mut todo: Vec<Todo> = roots.into_iter().map(|r| Todo::Divide(r, depth0)).collect();
         let mut steps = Vec::new();
+        let mut marks: Vec<(usize, usize, f64)> = Vec::new();
+        let mut handed_off: Vec<f64> = Vec::new();
         // Depth-first with an explicit stack: a subshape's ancestors are
         // then exactly `path[..depth]` when it is popped.
-        while let Some((s, depth)) = todo.pop() {
+        while let Some(next) = todo.pop() {
+            let (s, depth) = match next {
+                Todo::Divide(s, depth) => (s, depth),
+                Todo::Deferred(k) => {
+                    marks.push((steps.len(), k, handed_off[k]));
+                    continue;
+                }
+            };
             path.truncate(depth);
             let Some((cut, children, parts)) = self.divide_one(s, &path, &mut steps) else { continue };
             steps.push(Step::Cut(cut, depth));
             path.push(cut);
+            if parts < self.fork_parts || children.len() < 2 {
+                todo.extend(children.into_iter().map(|c| Todo::Divide(c, depth + 1)));
+                continue;
+            }
             // Each child has fewer parts than its parent: only a parent of
             // `fork_parts` or more can have two children that large, and
             // only then are the children counted (a pass over each).
-            let big = parts >= self.fork_parts
-                && children.len() >= 2
-                && children.iter().filter(|c| parts_in(shape, c, self.tour) >= self.fork_parts).take(2).count() == 2;
-            if big {
+            let sizes: Vec<usize> = children.iter().map(|c| parts_in(shape, c, self.tour)).collect();
+            if sizes.iter().filter(|&&p| p >= self.fork_parts).count() >= 2 {
                 // The children's subtrees in the order the stack would
                 // pop them: the last child first.
                 let fork = Instant::now();
@@ -297,11 +367,25 @@ impl<K: AxisKernel> Divide<'_, K> {
                 waited += fork.elapsed().as_secs_f64();
                 forked += subtrees.iter().map(|t| t.1).fold(0.0, f64::max);
                 steps.extend(subtrees.into_iter().rev().flat_map(|t| t.0));
-            } else {
-                todo.extend(children.into_iter().map(|c| (c, depth + 1)));
+                continue;
+            }
+            let largest = (0..sizes.len()).max_by_key(|&i| sizes[i]).unwrap_or(0);
+            for (i, c) in children.into_iter().enumerate() {
+                if i == largest || sizes[i] < DEFER_PARTS {
+                    todo.push(Todo::Divide(c, depth + 1));
+                    continue;
+                }
+                let k = handed_off.len();
+                handed_off.push(start.elapsed().as_secs_f64() - waited + forked);
+                todo.push(Todo::Deferred(k));
+                let path = path.clone();
+                scope.spawn(move |_| {
+                    let (sub, span) = self.divide(vec![c], path);
+                    deferred.lock().unwrap_or_else(|e| e.into_inner()).push((k, sub, span));
+                });
             }
         }
-        (steps, start.elapsed().as_secs_f64() - waited + forked)
+        (steps, marks, start.elapsed().as_secs_f64() - waited + forked)
     }
 
     /// One subshape whose ancestors are `path`: a leaf or a stuck subshape
@@ -438,6 +522,25 @@ mod tests {
             let again = decompose(&shape, 7).unwrap();
             assert_eq!(again.cuts, d.cuts);
         }
+    }
+
+    #[test]
+    fn the_decomposition_does_not_depend_on_the_thread_count() {
+        // A plate of 40 × 40 holes: its cuts peel children of hundreds of
+        // parts off the rest, which tasks divide while the loop goes on.
+        let shape = Shape2d::from_bulge_loops(samples::random_holes(40, 3), &ShapeOptions::default()).unwrap();
+        let on = |threads: usize| {
+            let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+            pool.install(|| decompose_with(&shape, 11, 32).unwrap())
+        };
+        let one = on(1);
+        for threads in [2, 3] {
+            let many = on(threads);
+            assert_eq!(many.cuts, one.cuts, "{threads} threads");
+            assert_eq!(many.leaves, one.leaves, "{threads} threads");
+            assert_eq!(many.stuck, one.stuck, "{threads} threads");
+        }
+        assert!(one.leaves.len() > 1000, "{} leaves", one.leaves.len());
     }
 
     #[test]
