@@ -29,10 +29,14 @@ pub(crate) fn merge_pass_through(shape: &Shape2d, axis: &mut MedialAxis2d, is_po
         if !is_port[v] && !is_joint[v] {
             continue;
         }
-        let live: Vec<usize> = at.of_node(v).iter().copied().filter(|&i| alive[i]).collect();
-        if live.len() != 2 || live[0] == live[1] {
-            continue;
-        }
+        // Exactly two live edges, without a vector per node.
+        let live = {
+            let mut live_edges = at.of_node(v).filter(|&i| alive[i]);
+            match (live_edges.next(), live_edges.next(), live_edges.next()) {
+                (Some(a), Some(b), None) if a != b => [a, b],
+                _ => continue,
+            }
+        };
         let (mut e1, mut e2) = (axis.edges[live[0]], axis.edges[live[1]]);
         // A straight edge across a hugged band stays apart from a conic.
         if !same_pair(e1.sites, e2.sites) || e1.straight != e2.straight {
@@ -83,8 +87,8 @@ pub(crate) fn merge_pass_through(shape: &Shape2d, axis: &mut MedialAxis2d, is_po
         // The far end of e2 now sees the merged edge.
         for end in [merged.from, merged.to] {
             for slot in at.of_node_mut(end) {
-                if *slot == live[1] {
-                    *slot = live[0];
+                if *slot as usize == live[1] {
+                    *slot = live[0] as u32;
                 }
             }
         }
@@ -129,9 +133,11 @@ pub(crate) fn compact(
 /// node cost more to allocate and free than the merge itself on 10^6
 /// nodes.
 struct Incidence {
-    /// Node v's edges are `edges[start[v]..start[v + 1]]`.
-    start: Vec<usize>,
-    edges: Vec<usize>,
+    /// Node v's edges are `edges[start[v]..start[v + 1]]` (32-bit: half
+    /// the memory traffic of these passes over 10^6 nodes; the axis's own
+    /// ids are 32-bit too).
+    start: Vec<u32>,
+    edges: Vec<u32>,
 }
 
 impl Incidence {
@@ -139,7 +145,7 @@ impl Incidence {
     /// twice at its node).
     fn of(axis: &MedialAxis2d) -> Incidence {
         let n = axis.nodes.len();
-        let mut start = vec![0usize; n + 1];
+        let mut start = vec![0u32; n + 1];
         for e in &axis.edges {
             start[e.from + 1] += 1;
             start[e.to + 1] += 1;
@@ -148,22 +154,23 @@ impl Incidence {
             start[v + 1] += start[v];
         }
         let mut fill = start.clone();
-        let mut edges = vec![0usize; start[n]];
+        let mut edges = vec![0u32; start[n] as usize];
         for (i, e) in axis.edges.iter().enumerate() {
             for v in [e.from, e.to] {
-                edges[fill[v]] = i;
+                edges[fill[v] as usize] = i as u32;
                 fill[v] += 1;
             }
         }
         Incidence { start, edges }
     }
 
-    fn of_node(&self, v: usize) -> &[usize] {
-        &self.edges[self.start[v]..self.start[v + 1]]
+    /// The edges at node `v`.
+    fn of_node(&self, v: usize) -> impl Iterator<Item = usize> + '_ {
+        self.edges[self.start[v] as usize..self.start[v + 1] as usize].iter().map(|&i| i as usize)
     }
 
-    fn of_node_mut(&mut self, v: usize) -> &mut [usize] {
-        &mut self.edges[self.start[v]..self.start[v + 1]]
+    fn of_node_mut(&mut self, v: usize) -> &mut [u32] {
+        &mut self.edges[self.start[v] as usize..self.start[v + 1] as usize]
     }
 }
 
@@ -281,7 +288,7 @@ pub(crate) fn polish_branches(kernel: &impl AxisKernel, shape: &Shape2d, axis: &
         }
         // The node's primitives, each once, in edge order.
         let mut ps: Vec<Primitive> = Vec::new();
-        for p in at.of_node(v).iter().flat_map(|&i| edges[i].sites) {
+        for p in at.of_node(v).flat_map(|i| edges[i].sites) {
             if !ps.contains(&p) {
                 ps.push(p);
             }
