@@ -12,6 +12,7 @@
 #include "test_support.hpp"
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -342,11 +343,14 @@ void test_invalid_arguments() {
     mx_shape_options o;
     MT_CHECK_OK(mx_shape_options_default(&o));
     mx_shape_options small = o;
-    small.struct_size = sizeof(mx_shape_options) - 1;
+    small.struct_size = offsetof(mx_shape_options, threads) - 1;  // short of 0.1.0
     EXPECT_ERROR(bulges({kUnitSquare}, &small), Err(invalid).says("struct_size"));
     small.struct_size = 0;
     EXPECT_ERROR(bulges({kUnitSquare}, &small), invalid);
     mx_shape_options bad = o;
+    bad.threads = 100000;
+    EXPECT_ERROR(bulges({kUnitSquare}, &bad), Err(invalid).says("mx_shape_options.threads"));
+    bad = o;
     bad.relative_tolerance = -1.0;
     EXPECT_ERROR(bulges({kUnitSquare}, &bad), Err(invalid).says("relative_tolerance"));
     bad = o;

@@ -63,8 +63,13 @@ inline double median_seconds(size_t runs, const std::function<void()>& f) {
 // medax from flat `x, y, bulge` triples, loop 0 outer, as a C caller would
 // (validation included in the time); the status of the call that failed.
 inline mx_status run_medax(const std::vector<double>& xyb, const std::vector<size_t>& loop_lengths, size_t threads) {
+    // The shape is checked on the same number of threads as the axis:
+    // "one thread" is the whole call on one thread.
+    mx_shape_options so;
+    mx_shape_options_default(&so);
+    so.threads = threads;
     mx_shape2d* shape = nullptr;
-    mx_status st = mx_shape2d_from_bulges(xyb.data(), xyb.size(), loop_lengths.data(), loop_lengths.size(), nullptr,
+    mx_status st = mx_shape2d_from_bulges(xyb.data(), xyb.size(), loop_lengths.data(), loop_lengths.size(), &so,
                                           &shape);
     if (st != MX_OK) return st;
     mx_axis_options o;

@@ -11,6 +11,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <cstddef>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -196,13 +197,24 @@ void test_options() {
 
     // A caller compiled against an older, smaller struct is refused.
     mx_shape_options small = o;
-    small.struct_size = sizeof(mx_shape_options) - sizeof(double);
+    small.struct_size = offsetof(mx_shape_options, max_radius_ratio);
     mx_shape2d* out = mt::sentinel_shape();
     MT_CHECK_STATUS(mt::from_loops(square, &out, &small), MX_ERR_INVALID_ARGUMENT);
     MT_CHECK(out == mt::sentinel_shape());
     small.struct_size = 0;
     MT_CHECK_STATUS(mt::from_loops(square, &out, &small), MX_ERR_INVALID_ARGUMENT);
     MT_CHECK(out == mt::sentinel_shape());
+    // A caller of 0.1.0, whose struct ends before `threads`, gets all cores.
+    mx_shape_options v010 = o;
+    v010.struct_size = offsetof(mx_shape_options, threads);
+    v010.threads = 1u << 20;  // not read
+    MT_CHECK(make(square, &v010) != nullptr);
+    // Checked on one thread: the same shape.
+    mx_shape_options one = o;
+    one.threads = 1;
+    auto on_one = make(square, &one);
+    Snapshot s1;
+    MT_CHECK(on_one != nullptr && snapshot(on_one.get(), s1) && s1 == sa);
     // A larger struct_size (a newer caller) is fine.
     mx_shape_options bigger = o;
     bigger.struct_size = sizeof(mx_shape_options) + 64;

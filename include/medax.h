@@ -810,6 +810,13 @@ typedef struct mx_shape_options {
    * segments (default 1e6; deviation at most diagonal / (8 × ratio)).
    */
   double max_radius_ratio;
+  /**
+   * Worker threads that check the shape (crossings, nesting of holes):
+   * 0 = all cores (default), else at most `MX_AXIS_MAX_THREADS`. Added
+   * after 0.1.0: a caller compiled against 0.1.0's struct (whose
+   * `struct_size` ends before this field) gets the default.
+   */
+  size_t threads;
 } mx_shape_options;
 
 /**

@@ -112,6 +112,24 @@ fn rectangle(options: *const mx_shape_options) -> (mx_status, *mut mx_shape2d) {
 }
 
 #[test]
+fn shape_threads_are_checked_and_leave_the_shape_as_it_is() {
+    let mut o: mx_shape_options = unsafe { std::mem::zeroed() };
+    assert_eq!(unsafe { mx_shape_options_default(&mut o) }, mx_status::MX_OK);
+    assert_eq!(o.threads, 0);
+    let mut tol = [0.0; 2];
+    for (i, threads) in [0, 1].into_iter().enumerate() {
+        let (st, s) = rectangle(&mx_shape_options { threads, ..o });
+        assert_eq!(st, mx_status::MX_OK, "{}", last_message());
+        assert_eq!(unsafe { mx_shape2d_tolerance(s, &mut tol[i]) }, mx_status::MX_OK);
+        unsafe { mx_shape2d_free(s) };
+    }
+    assert_eq!(tol[0], tol[1]);
+    let (st, s) = rectangle(&mx_shape_options { threads: MX_AXIS_MAX_THREADS + 1, ..o });
+    assert_eq!((st, s), (mx_status::MX_ERR_INVALID_ARGUMENT, null_mut()));
+    assert!(last_message().contains("mx_shape_options.threads"), "{}", last_message());
+}
+
+#[test]
 fn shape_options_of_0_1() {
     let o = old(ShapeOptionsV01 {
         struct_size: size_of::<ShapeOptionsV01>(),

@@ -1,7 +1,8 @@
 //! C functions for 2D shapes: create, inspect, draw, free. Mirrors
 //! `crate::shape`; no geometry is computed here.
 
-use super::boundary::{c_str, check_out, fill, guard, index_error, nth, slice, write_out};
+use super::axis::MX_AXIS_MAX_THREADS;
+use super::boundary::{c_str, check_out, fill, guard, in_pool, index_error, nth, slice, write_out};
 use super::handles::{arg, create, free, impl_options, options_default, query, Boxed, Handle, Options};
 use super::last_error::FfiError;
 use super::status::mx_status;
@@ -56,6 +57,11 @@ pub struct mx_shape_options {
     /// Arcs with a radius above this multiple of the diagonal become
     /// segments (default 1e6; deviation at most diagonal / (8 × ratio)).
     pub max_radius_ratio: f64,
+    /// Worker threads that check the shape (crossings, nesting of holes):
+    /// 0 = all cores (default), else at most `MX_AXIS_MAX_THREADS`. Added
+    /// after 0.1.0: a caller compiled against 0.1.0's struct (whose
+    /// `struct_size` ends before this field) gets the default.
+    pub threads: usize,
 }
 
 /// `mx_element.kind` of a line segment.
@@ -131,6 +137,7 @@ impl_options!(mx_shape_options, v1: 56 bytes up to max_radius_ratio: f64, defaul
     flatten_sagitta: -1.0,
     chain_tolerance: 0.0,
     max_radius_ratio: ShapeOptions::DEFAULT.max_radius_ratio,
+    threads: 0,
 });
 
 /// Fills `out` with the default options (and its `struct_size`).
@@ -143,12 +150,18 @@ pub unsafe extern "C" fn mx_shape_options_default(out: *mut mx_shape_options) ->
     unsafe { options_default(out) }
 }
 
-/// Options from C, checked; NULL means defaults.
-unsafe fn options(p: *const mx_shape_options) -> Result<ShapeOptions, FfiError> {
+/// Options from C, checked, with the thread count; NULL means defaults.
+unsafe fn options(p: *const mx_shape_options) -> Result<(ShapeOptions, usize), FfiError> {
     // SAFETY: forwarded contract.
     let Some(o) = (unsafe { mx_shape_options::read(p)? }) else {
-        return Ok(ShapeOptions::default());
+        return Ok((ShapeOptions::default(), 0));
     };
+    if o.threads > MX_AXIS_MAX_THREADS {
+        return Err(FfiError::new(
+            mx_status::MX_ERR_INVALID_ARGUMENT,
+            format!("mx_shape_options.threads = {}: use 0 (all cores) or at most {MX_AXIS_MAX_THREADS}", o.threads),
+        ));
+    }
     let length = |name: &str, v: f64| -> Result<Option<f64>, FfiError> {
         if v == 0.0 {
             Ok(None)
@@ -170,7 +183,12 @@ unsafe fn options(p: *const mx_shape_options) -> Result<ShapeOptions, FfiError> 
         max_radius_ratio: o.max_radius_ratio,
     };
     opts.check()?;
-    Ok(opts)
+    Ok((opts, o.threads))
+}
+
+/// The shape `build` makes, checked on `threads` threads (0: all cores).
+fn built(threads: usize, build: impl FnOnce() -> Result<Shape2d, FfiError> + Send) -> Result<mx_shape2d, FfiError> {
+    Ok(mx_shape2d { inner: in_pool(threads, build)?? })
 }
 
 /// `x, y, bulge` triples for chains back to back (`data`), cut into
@@ -220,12 +238,13 @@ pub unsafe extern "C" fn mx_shape2d_from_bulges(
     // SAFETY: caller contract on pointer/length pairs.
     unsafe {
         create(out, || {
-            let (data, lens, opts) = (
+            let (data, lens, (opts, threads)) = (
                 slice(xyb, xyb_len, "xyb")?,
                 slice(loop_lengths, loop_count, "loop_lengths")?,
                 self::options(options)?,
             );
-            Ok(mx_shape2d { inner: Shape2d::from_bulge_loops(split_bulges(data, lens, "xyb")?, &opts)? })
+            let loops = split_bulges(data, lens, "xyb")?;
+            built(threads, || Ok(Shape2d::from_bulge_loops(loops, &opts)?))
         })
     }
 }
@@ -259,7 +278,11 @@ pub unsafe extern "C" fn mx_shape2d_from_elements(
 }
 
 /// The shape of `elems` cut into loops of `lens` elements.
-fn elements_shape(elems: &[mx_element], lens: &[usize], opts: ShapeOptions) -> Result<mx_shape2d, FfiError> {
+fn elements_shape(
+    elems: &[mx_element],
+    lens: &[usize],
+    (opts, threads): (ShapeOptions, usize),
+) -> Result<mx_shape2d, FfiError> {
     if lens.iter().try_fold(0usize, |a, &n| a.checked_add(n)) != Some(elems.len()) {
         return Err(FfiError::new(
             mx_status::MX_ERR_INVALID_ARGUMENT,
@@ -286,7 +309,7 @@ fn elements_shape(elems: &[mx_element], lens: &[usize], opts: ShapeOptions) -> R
         loops.push(specs);
         at += n;
     }
-    Ok(mx_shape2d { inner: Shape2d::from_elements(&loops, &opts)? })
+    built(threads, || Ok(Shape2d::from_elements(&loops, &opts)?))
 }
 
 fn format_of(code: u32) -> Result<Option<Format>, FfiError> {
@@ -314,17 +337,19 @@ pub unsafe extern "C" fn mx_shape2d_from_file(
     // SAFETY: caller contract.
     unsafe {
         create(out, || {
-            let (path, opts) = (c_str(path, "path")?, self::options(options)?);
-            let inner = match format_of(format)? {
-                None => Shape2d::from_file(path, &opts)?,
-                Some(f) => {
-                    let text = std::fs::read(path).map_err(|e| {
-                        FfiError::from(crate::shape::ShapeError::Io { path: path.into(), message: e.to_string() })
-                    })?;
-                    Shape2d::from_str_as(&String::from_utf8_lossy(&text), f, &opts)?
-                }
-            };
-            Ok(mx_shape2d { inner })
+            let (path, (opts, threads)) = (c_str(path, "path")?, self::options(options)?);
+            let format = format_of(format)?;
+            built(threads, || {
+                Ok(match format {
+                    None => Shape2d::from_file(path, &opts)?,
+                    Some(f) => {
+                        let text = std::fs::read(path).map_err(|e| {
+                            FfiError::from(crate::shape::ShapeError::Io { path: path.into(), message: e.to_string() })
+                        })?;
+                        Shape2d::from_str_as(&String::from_utf8_lossy(&text), f, &opts)?
+                    }
+                })
+            })
         })
     }
 }
@@ -344,9 +369,9 @@ pub unsafe extern "C" fn mx_shape2d_from_string(
     // SAFETY: caller contract.
     unsafe {
         create(out, || {
-            let (text, opts) = (c_str(text, "text")?, self::options(options)?);
+            let (text, (opts, threads)) = (c_str(text, "text")?, self::options(options)?);
             let f = format_of(format)?.unwrap_or_else(|| crate::shape::sniff(text));
-            Ok(mx_shape2d { inner: Shape2d::from_str_as(text, f, &opts)? })
+            built(threads, || Ok(Shape2d::from_str_as(text, f, &opts)?))
         })
     }
 }
