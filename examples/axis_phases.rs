@@ -6,9 +6,9 @@
 //! file with N = 0. Prints one line per phase: seconds and share, then the
 //! divide step's critical path (span) and, from this run's times, the
 //! time Brent's bound predicts on more cores (run with THREADS = 1 for
-//! the work): validation, base cases and the final check are parallel
+//! the work): validation, augmenting disks, base cases and the final check are parallel
 //! maps over many small independent items, the divide step takes at most
-//! work / p + span, index, augmentation and gluing are serial.
+//! work / p + span, index and gluing are serial.
 use medax::plane::internals::{augment, decompose_in, final_check, glue, solve_leaves};
 use medax::plane::{AxisOptions, DiskFinder};
 use medax::shape::{samples, Shape2d, ShapeOptions};
@@ -42,6 +42,7 @@ fn main() {
     };
     lap("generate", &mut phases);
     let mut span = 0.0;
+    let mut large_depth = 0;
     let mut elements = n;
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().expect("thread pool");
     pool.install(|| {
@@ -58,6 +59,7 @@ fn main() {
         let mut d = decompose_in(&finder, &aug, opts.seed, opts.leaf_parts.max(3));
         lap("divide", &mut phases);
         span = d.span;
+        large_depth = d.large_depth;
         let locals = solve_leaves(&finder, &mut d, opts.seed).expect("leaves solved");
         lap("base cases", &mut phases);
         let leaves = locals.count();
@@ -83,10 +85,11 @@ fn main() {
     println!("{:>24} {total:8.3} s (without generate)", "total");
     let t = |name: &str| phases.iter().find(|p| p.0 == name).map_or(0.0, |p| p.1);
     let (flat, serial) = (
-        t("validate") + t("base cases") + t("final check"),
-        t("index (run hierarchy)") + t("augment (holes)") + t("glue (conquer)"),
+        t("validate") + t("augment (holes)") + t("base cases") + t("final check"),
+        t("index (run hierarchy)") + t("glue (conquer)"),
     );
     println!("{:>24} {span:8.3} s (critical path of the divide step)", "divide span");
+    println!("{:>24} {large_depth:8} cuts of subshapes taking balanced cuts, on one path", "divide depth");
     for p in [2.0, 8.0, 16.0] {
         let predicted = serial + flat / p + t("divide") / p + span;
         println!("{:>24} {predicted:8.3} s on {p} cores ({:.1}x)", "predicted", total / predicted);

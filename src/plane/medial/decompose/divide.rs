@@ -65,6 +65,11 @@ pub struct Decomposition {
     /// fork, the longest of the subtrees it waits for). With the
     /// one-thread time it bounds the speed-up more cores can bring.
     pub span: f64,
+    /// Cuts of large subshapes (those that take balanced cuts) on any one
+    /// path from the root: about log2 of their count where the cuts divide
+    /// evenly, their count where each peels a few parts off one large
+    /// subshape. A diagnostic of the cut rule.
+    pub large_depth: usize,
 }
 
 /// Subshapes of at most this many pieces once expanded hold no ranges of
@@ -177,8 +182,9 @@ impl CutIds for PathCuts<'_> {
 /// What dividing one subshape gave, in the order the sequential
 /// depth-first divide step meets it.
 enum Step {
-    /// A dividing disk cut at this depth (its children are one deeper).
-    Cut(Cut, usize),
+    /// A dividing disk cut at this depth (its children are one deeper),
+    /// and whether it cut a large subshape (one taking balanced cuts).
+    Cut(Cut, usize, bool),
     /// A leaf, its disks written as [`PathCuts`] ids.
     Leaf(Subshape),
     /// A subshape no disk divided, likewise.
@@ -252,8 +258,10 @@ fn divide_along<K: AxisKernel>(
     };
     out.span += span;
     let base = out.cuts.len();
-    // The global id of the ancestor at each depth of the current path.
+    // The global id of the ancestor at each depth of the current path,
+    // and the large subshapes' cuts on the path down to it.
     let mut ids: Vec<usize> = Vec::new();
+    let mut large_on_path: Vec<usize> = Vec::new();
     let renumber = |mut s: Subshape, ids: &[usize]| {
         for p in s.pieces.iter_mut() {
             if let Piece::Aux { disk } = p {
@@ -266,7 +274,11 @@ fn divide_along<K: AxisKernel>(
     };
     for step in steps {
         match step {
-            Step::Cut(cut, depth) => {
+            Step::Cut(cut, depth, large) => {
+                large_on_path.truncate(depth);
+                let here = large_on_path.last().copied().unwrap_or(0) + usize::from(large);
+                large_on_path.push(here);
+                out.large_depth = out.large_depth.max(here);
                 ids.truncate(depth);
                 ids.push(out.cuts.len());
                 out.cuts.push(cut);
@@ -348,7 +360,7 @@ impl<K: AxisKernel> Divide<'_, K> {
             };
             path.truncate(depth);
             let Some((cut, children, parts)) = self.divide_one(s, &path, &mut steps) else { continue };
-            steps.push(Step::Cut(cut, depth));
+            steps.push(Step::Cut(cut, depth, parts >= self.balance_parts));
             path.push(cut);
             if parts < self.fork_parts || children.len() < 2 {
                 todo.extend(children.into_iter().map(|c| Todo::Divide(c, depth + 1)));
