@@ -228,8 +228,10 @@ const DEFER_PARTS: usize = 128;
 
 /// What the divide loop's stack holds.
 enum Todo {
-    /// A subshape to divide, at this depth.
-    Divide(Ranged, usize),
+    /// A subshape to divide, at this depth; `true`: with a plain random
+    /// cut (its parent's balanced cut only peeled it off a range of the
+    /// augmented cycle, where every cut peels).
+    Divide(Ranged, usize, bool),
     /// Where the steps of the child handed to task `k` go.
     Deferred(usize),
 }
@@ -344,26 +346,26 @@ impl<K: AxisKernel> Divide<'_, K> {
         let (mut waited, mut forked) = (0.0, 0.0);
         let shape = self.finder.shape();
         let depth0 = path.len();
-        let mut todo: Vec<Todo> = roots.into_iter().map(|r| Todo::Divide(r, depth0)).collect();
+        let mut todo: Vec<Todo> = roots.into_iter().map(|r| Todo::Divide(r, depth0, false)).collect();
         let mut steps = Vec::new();
         let mut marks: Vec<(usize, usize, f64)> = Vec::new();
         let mut handed_off: Vec<f64> = Vec::new();
         // Depth-first with an explicit stack: a subshape's ancestors are
         // then exactly `path[..depth]` when it is popped.
         while let Some(next) = todo.pop() {
-            let (s, depth) = match next {
-                Todo::Divide(s, depth) => (s, depth),
+            let (s, depth, plain) = match next {
+                Todo::Divide(s, depth, plain) => (s, depth, plain),
                 Todo::Deferred(k) => {
                     marks.push((steps.len(), k, handed_off[k]));
                     continue;
                 }
             };
             path.truncate(depth);
-            let Some((cut, children, parts)) = self.divide_one(s, &path, &mut steps) else { continue };
+            let Some((cut, children, parts)) = self.divide_one(s, &path, &mut steps, plain) else { continue };
             steps.push(Step::Cut(cut, depth, parts >= self.balance_parts));
             path.push(cut);
             if parts < self.fork_parts || children.len() < 2 {
-                todo.extend(children.into_iter().map(|c| Todo::Divide(c, depth + 1)));
+                todo.extend(children.into_iter().map(|c| Todo::Divide(c, depth + 1, false)));
                 continue;
             }
             // Each child has fewer parts than its parent: only a parent of
@@ -382,9 +384,12 @@ impl<K: AxisKernel> Divide<'_, K> {
                 continue;
             }
             let largest = (0..sizes.len()).max_by_key(|&i| sizes[i]).unwrap_or(0);
+            // Peeling off a range of the augmented cycle: the next cut of
+            // the rest peels too, whatever disk it takes.
+            let peeled = sizes[largest] * PEEL > parts * (PEEL - 1) && children[largest].has_ranges();
             for (i, c) in children.into_iter().enumerate() {
                 if i == largest || sizes[i] < DEFER_PARTS {
-                    todo.push(Todo::Divide(c, depth + 1));
+                    todo.push(Todo::Divide(c, depth + 1, i == largest && peeled));
                     continue;
                 }
                 let k = handed_off.len();
@@ -403,7 +408,13 @@ impl<K: AxisKernel> Divide<'_, K> {
     /// One subshape whose ancestors are `path`: a leaf or a stuck subshape
     /// goes to `steps`; a dividing disk, the children it cuts and the
     /// subshape's count of original parts are returned.
-    fn divide_one(&self, mut s: Ranged, path: &[Cut], steps: &mut Vec<Step>) -> Option<(Cut, Vec<Ranged>, usize)> {
+    fn divide_one(
+        &self,
+        mut s: Ranged,
+        path: &[Cut],
+        steps: &mut Vec<Step>,
+        plain: bool,
+    ) -> Option<(Cut, Vec<Ranged>, usize)> {
         let (finder, tour, leaf_parts) = (self.finder, self.tour, self.leaf_parts);
         let shape = finder.shape();
         let cuts = PathCuts { base: self.base, path };
@@ -434,7 +445,8 @@ impl<K: AxisKernel> Divide<'_, K> {
         }
         let mut rng = Mix(seed_of(self.seed, &s, &cuts));
         let points = points_in(shape, &s, tour);
-        let balanced = if parts >= self.balance_parts { self.balanced_cut(&s, parts, &cuts, &mut rng) } else { None };
+        let balanced =
+            if parts >= self.balance_parts && !plain { self.balanced_cut(&s, parts, &cuts, &mut rng) } else { None };
         let found = balanced
             .or_else(|| {
                 (0..ATTEMPTS + ((parts + points) as u32) / 4).find_map(|_| {
