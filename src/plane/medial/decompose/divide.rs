@@ -229,8 +229,9 @@ const DEFER_PARTS: usize = 128;
 /// What the divide loop's stack holds.
 enum Todo {
     /// A subshape to divide, at this depth; `true`: with a plain random
-    /// cut (its parent's balanced cut only peeled it off a range of the
-    /// augmented cycle, where every cut peels).
+    /// cut, not a balanced one (its parent's cut only peeled a child off
+    /// it, and it holds a range of the augmented cycle, where every cut
+    /// peels whatever disk it takes).
     Divide(Ranged, usize, bool),
     /// Where the steps of the child handed to task `k` go.
     Deferred(usize),
