@@ -157,6 +157,18 @@ pub(crate) fn in_pool<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> 
     Ok(pool.install(f))
 }
 
+/// Checks an options struct's `threads` (its name `options`): 0 (all
+/// cores) or at most `MX_AXIS_MAX_THREADS`.
+pub(crate) fn check_threads(options: &str, threads: usize) -> Result<(), FfiError> {
+    if threads > MX_AXIS_MAX_THREADS {
+        return Err(FfiError::new(
+            mx_status::MX_ERR_INVALID_ARGUMENT,
+            format!("{options}.threads = {threads}: use 0 (all cores) or at most {MX_AXIS_MAX_THREADS}"),
+        ));
+    }
+    Ok(())
+}
+
 /// The frame of every long-running export (`export`, whose options struct
 /// is `options`): checks `threads` (0 or at most `MX_AXIS_MAX_THREADS`),
 /// reports 0 to the progress callback (a nonzero answer cancels with
@@ -170,12 +182,7 @@ pub(crate) fn run_with_progress<T: Send>(
     user: *mut c_void,
     f: impl FnOnce() -> Result<T, FfiError> + Send,
 ) -> Result<T, FfiError> {
-    if threads > MX_AXIS_MAX_THREADS {
-        return Err(FfiError::new(
-            mx_status::MX_ERR_INVALID_ARGUMENT,
-            format!("{options}.threads = {threads}: use 0 (all cores) or at most {MX_AXIS_MAX_THREADS}"),
-        ));
-    }
+    check_threads(options, threads)?;
     if progress(callback, user, 0.0) {
         return Err(FfiError::new(mx_status::MX_ERR_CANCELLED, format!("{export} cancelled by the progress callback")));
     }

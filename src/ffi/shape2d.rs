@@ -1,8 +1,7 @@
 //! C functions for 2D shapes: create, inspect, draw, free. Mirrors
 //! `crate::shape`; no geometry is computed here.
 
-use super::axis::MX_AXIS_MAX_THREADS;
-use super::boundary::{c_str, check_out, fill, guard, in_pool, index_error, nth, slice, write_out};
+use super::boundary::{c_str, check_out, check_threads, fill, guard, in_pool, index_error, nth, slice, write_out};
 use super::handles::{arg, create, free, impl_options, options_default, query, Boxed, Handle, Options};
 use super::last_error::FfiError;
 use super::status::mx_status;
@@ -156,12 +155,7 @@ unsafe fn options(p: *const mx_shape_options) -> Result<(ShapeOptions, usize), F
     let Some(o) = (unsafe { mx_shape_options::read(p)? }) else {
         return Ok((ShapeOptions::default(), 0));
     };
-    if o.threads > MX_AXIS_MAX_THREADS {
-        return Err(FfiError::new(
-            mx_status::MX_ERR_INVALID_ARGUMENT,
-            format!("mx_shape_options.threads = {}: use 0 (all cores) or at most {MX_AXIS_MAX_THREADS}", o.threads),
-        ));
-    }
+    check_threads("mx_shape_options", o.threads)?;
     let length = |name: &str, v: f64| -> Result<Option<f64>, FfiError> {
         if v == 0.0 {
             Ok(None)

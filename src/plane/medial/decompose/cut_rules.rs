@@ -265,12 +265,13 @@ fn reflex_fan<K: AxisKernel>(finder: &DiskFinder<K>, pos: BoundaryPos) -> Fan {
 fn empty_touching<K: AxisKernel>(finder: &DiskFinder<K>, c: Point, r: f64) -> Option<Vec<Footpoint>> {
     let shape = finder.shape();
     let tol = finder.contact_tolerance();
-    let touch = finder.touching(c, r);
-    let empty = finder.nearest(c).is_some_and(|(near, _)| {
-        let e = shape.loops()[near.loop_index].element(near.element);
-        finder.kernel().element_contact(Disk::new(c, r), &e, tol) == Contact::Touching
-    });
-    (touch.len() >= 2 && r > tol && empty).then_some(touch)
+    // Cheapest test first: the footpoints are gathered last.
+    let empty = r > tol
+        && finder.nearest(c).is_some_and(|(near, _)| {
+            let e = shape.loops()[near.loop_index].element(near.element);
+            finder.kernel().element_contact(Disk::new(c, r), &e, tol) == Contact::Touching
+        });
+    empty.then(|| finder.touching(c, r)).filter(|touch| touch.len() >= 2)
 }
 
 /// A maximal disk from deep inside a large plain subshape `s`, to choose

@@ -308,18 +308,21 @@ impl<K: AxisKernel> Divide<'_, K> {
     fn divide(&self, roots: Vec<Ranged>, path: Vec<Cut>) -> (Vec<Step>, f64) {
         let deferred: Mutex<Vec<(usize, Vec<Step>, f64)>> = Mutex::new(Vec::new());
         let (steps, marks, own) = rayon::scope(|scope| self.divide_loop(roots, path, scope, &deferred));
-        let mut deferred: Vec<Option<(usize, Vec<Step>, f64)>> =
-            deferred.into_inner().unwrap_or_else(|e| e.into_inner()).into_iter().map(Some).collect();
-        if deferred.is_empty() {
+        if marks.is_empty() {
             return (steps, own);
         }
-        deferred.sort_unstable_by_key(|d| d.as_ref().map(|d| d.0));
+        // Every task has finished when the scope returns: task k's result
+        // in slot k.
+        let mut done: Vec<Option<(Vec<Step>, f64)>> = (0..marks.len()).map(|_| None).collect();
+        for (k, sub, span) in deferred.into_inner().unwrap_or_else(|e| e.into_inner()) {
+            done[k] = Some((sub, span));
+        }
         let mut span = own;
-        let mut all = Vec::with_capacity(steps.len() + deferred.iter().flatten().map(|d| d.1.len()).sum::<usize>());
+        let mut all = Vec::with_capacity(steps.len() + done.iter().flatten().map(|d| d.0.len()).sum::<usize>());
         let mut steps = steps.into_iter();
         let mut at = 0;
         for &(mark, k, handed_off) in &marks {
-            let Some((_, sub, sub_span)) = deferred[k].take() else { continue };
+            let Some((sub, sub_span)) = done[k].take() else { continue };
             // A deferred child's critical path starts when it was handed off.
             span = span.max(handed_off + sub_span);
             all.extend(steps.by_ref().take(mark - at));
