@@ -115,6 +115,16 @@ fn nearly_circular_curves() {
         let a = axis_of(&s);
         check_strided(&s, &a, 200, seed, a.edges.len().div_ceil(300), 4.0);
     }
+    // Within 10^-6 and 10^-7: the axis is a few hundred and a few dozen
+    // tolerances across, dividing disks fall a few tolerances apart, and
+    // leaves between them name several by one node. All three broke down
+    // (the axis fell apart, then closed cycles) before gluing joined what
+    // the leaves had named as one and dropped copies of one stretch.
+    for (n, seed, spread) in [(2_000, 2, 1e-6), (5_000, 2, 1e-6), (5_000, 3, 1e-7)] {
+        let s = shape(samples::fourier_curve(n, seed, spread));
+        let a = axis_of(&s);
+        check_strided(&s, &a, 200, seed, a.edges.len().div_ceil(300), 4.0);
+    }
 }
 
 #[test]

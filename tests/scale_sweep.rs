@@ -100,6 +100,20 @@ fn inputs_that_broke_down_until_stop_34() {
 
 #[test]
 #[ignore = "slow tier: scripts/test-all runs it in release"]
+fn inputs_that_broke_down_until_stop_37() {
+    // Curves within 10^-4 and 10^-5 of a circle: "the axis fell apart
+    // into pieces" after three decompositions until stop 37 (a leaf
+    // between dividing disks a few tolerances apart named them by one
+    // node, which gluing did not know), then cycles of two copies of one
+    // stretch. (Seed 1 at 10^5 and 2·10^5 and a curve within 10^-4 at
+    // 3·10^5 passed once too: 4 min of checking, near the centre every
+    // disk reaches across the whole grid.)
+    sweep("within 1e-5 of a circle 1e5 seed 2", samples::fourier_curve(100_000, 2, 1e-5));
+    sweep("within 1e-7 of a circle 1e4 seed 1", samples::fourier_curve(10_000, 1, 1e-7));
+}
+
+#[test]
+#[ignore = "slow tier: scripts/test-all runs it in release"]
 fn a_nearly_circular_curve_of_a_million_arcs() {
     // Fell apart into pieces until stop 34 (a cut 4τ from its twin, which
     // had merged into a disk just over 64τ away, stayed a node of its

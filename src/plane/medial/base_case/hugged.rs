@@ -20,7 +20,7 @@ fn port(cuts: &[Cut], disk: usize) -> LocalNode {
 /// The axis of a lobe's tip hugged by its one dividing disk `disk`: that
 /// port alone, a leaf of the axis.
 pub(super) fn tip_axis(cuts: &[Cut], disk: usize) -> LocalAxis {
-    LocalAxis { nodes: vec![port(cuts, disk)], edges: Vec::new() }
+    LocalAxis { nodes: vec![port(cuts, disk)], edges: Vec::new(), aliases: Vec::new() }
 }
 
 /// The axis of `s`, a band hugged by both its dividing disks (`h`): the
@@ -50,6 +50,7 @@ pub(super) fn band_axis(shape: &Shape2d, s: &Subshape, cuts: &[Cut], h: Hugged) 
             Some(LocalAxis {
                 nodes: vec![port(d0), port(d1)],
                 edges: vec![straight_edge(shape, cuts, (0, d0), (1, d1), [left, right])],
+                aliases: Vec::new(),
             })
         }
     }
@@ -92,7 +93,7 @@ pub(super) fn cluster_axis(shape: &Shape2d, s: &Subshape, cuts: &[Cut]) -> Optio
         let right = middle_element(shape, chain(j0 + 1, 1)?)?;
         edges.push(straight_edge(shape, cuts, (k, d0), (k + 1, d1), [left, right]));
     }
-    Some(LocalAxis { nodes: ports.iter().map(|&(d, _)| port(cuts, d)).collect(), edges })
+    Some(LocalAxis { nodes: ports.iter().map(|&(d, _)| port(cuts, d)).collect(), edges, aliases: Vec::new() })
 }
 
 /// The straight edge from node `from.0` (dividing disk `from.1`) to node

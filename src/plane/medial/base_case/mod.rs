@@ -110,6 +110,12 @@ pub struct LocalAxis {
     pub nodes: Vec<LocalNode>,
     /// Edges.
     pub edges: Vec<LocalEdge>,
+    /// The subshape's dividing disks that no node names, each with the
+    /// disk of the port node that stands for it (`[omitted, named]`): a
+    /// sliver between disks a few tolerances apart has one node for all
+    /// of them, and gluing must join what the leaf joined, however far
+    /// apart its own test of coinciding disks would put them.
+    pub aliases: Vec<[usize; 2]>,
 }
 
 /// Why a subshape's axis could not be computed (a numerical breakdown;
@@ -134,6 +140,44 @@ pub enum BaseCaseError {
 /// `finder` is the whole shape's maximal-disk index: branch points are
 /// also checked to be empty for the whole shape.
 pub fn solve<K: AxisKernel>(
+    shape: &Shape2d,
+    s: &Subshape,
+    cuts: &[Cut],
+    tol: f64,
+    finder: &DiskFinder<K>,
+) -> Result<LocalAxis, BaseCaseError> {
+    solve_unaliased(shape, s, cuts, tol, finder).map(|mut local| {
+        local.aliases = aliases(s, cuts, &local);
+        local
+    })
+}
+
+/// The dividing disks of `s` that `local` has no port node for, each with
+/// the port node whose centre is nearest its own.
+fn aliases(s: &Subshape, cuts: &[Cut], local: &LocalAxis) -> Vec<[usize; 2]> {
+    let named: Vec<usize> = local
+        .nodes
+        .iter()
+        .filter_map(|n| match n.kind {
+            EventKind::Port(d) => Some(d),
+            _ => None,
+        })
+        .collect();
+    s.pieces
+        .iter()
+        .filter_map(|p| match *p {
+            Piece::Aux { disk } if !named.contains(&disk) => named
+                .iter()
+                .min_by(|&&a, &&b| {
+                    cuts[a].center.dist(cuts[disk].center).total_cmp(&cuts[b].center.dist(cuts[disk].center))
+                })
+                .map(|&to| [disk, to]),
+            _ => None,
+        })
+        .collect()
+}
+
+fn solve_unaliased<K: AxisKernel>(
     shape: &Shape2d,
     s: &Subshape,
     cuts: &[Cut],
@@ -212,7 +256,7 @@ fn walk_leaf<K: AxisKernel>(
             })
             .take(1)
             .collect();
-        return Ok(LocalAxis { nodes, edges: Vec::new() });
+        return Ok(LocalAxis { nodes, edges: Vec::new(), aliases: Vec::new() });
     }
     b.collect_events(cuts)?;
     b.walk()
@@ -301,6 +345,18 @@ mod tests {
         // A chain ending at a vertex and an arc after it: the vertex is a
         // footpoint, not inside.
         assert!(!holds(vec![Piece::Chain { from: at(0, 0.5), to: at(0, 1.0) }, aux]));
+    }
+
+    #[test]
+    fn a_dividing_disk_without_a_node_is_named_by_the_nearest_port() {
+        let cut = |x: f64| Cut { center: Point::new(x, 0.0), radius: 1.0 };
+        let cuts = [cut(0.0), cut(3e-9), cut(5.0)];
+        let s = Subshape { pieces: (0..3).map(|disk| Piece::Aux { disk }).collect() };
+        let port = |disk: usize| LocalNode { center: cuts[disk].center, radius: 1.0, kind: EventKind::Port(disk) };
+        let local = LocalAxis { nodes: vec![port(0), port(2)], edges: Vec::new(), aliases: Vec::new() };
+        assert_eq!(aliases(&s, &cuts, &local), [[1, 0]]);
+        let whole = LocalAxis { nodes: (0..3).map(port).collect(), edges: Vec::new(), aliases: Vec::new() };
+        assert!(aliases(&s, &cuts, &whole).is_empty());
     }
 
     #[test]

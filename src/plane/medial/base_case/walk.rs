@@ -138,7 +138,7 @@ impl<K: AxisKernel> Builder<'_, K> {
         if edges.len() + 1 != self.events.len() {
             return Err(BaseCaseError::Inconsistent(self.events.first().map_or(Point::default(), |e| e.center)));
         }
-        Ok(LocalAxis { nodes, edges })
+        Ok(LocalAxis { nodes, edges, aliases: Vec::new() })
     }
 }
 

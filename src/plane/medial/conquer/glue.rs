@@ -6,13 +6,14 @@
 use crate::kernel::bisector::ConicKind;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::AxisKernel;
-use crate::plane::axis::{edge_kind, MedialAxis2d, NodeKind};
+use crate::plane::axis::{edge_kind, AxisEdge, AxisNode, MedialAxis2d, NodeKind};
 use crate::plane::medial::base_case::EventKind;
-use crate::plane::medial::conquer::check::{check_graph, drop_repeats};
+use crate::plane::medial::conquer::check::{check_graph, drop_repeats, root};
 use crate::plane::medial::conquer::error::AxisError;
 use crate::plane::medial::conquer::locals::{LocalAxes, LocalView};
 use crate::plane::medial::conquer::merge::{merge_coinciding_branches, merge_pass_through, polish_branches};
 use crate::plane::medial::conquer::rounding::contract_rounding_cycles;
+use crate::plane::medial::conquer::thin_cycles::drop_thin_cycles;
 use crate::plane::medial::decompose::subshape::Cut;
 use crate::plane::medial::disk::maximal::DiskFinder;
 use crate::util::fast_hash::{FastMap, FastSet};
@@ -24,6 +25,7 @@ pub fn glue<K: AxisKernel>(finder: &DiskFinder<K>, cuts: &[Cut], locals: LocalAx
     let shape = finder.shape();
     let tol = shape.tolerance();
     let same_as = coinciding_cuts(cuts, &joined_ports(&locals), Tolerance::new(tol));
+    let same_as = with_aliases(same_as, &locals.aliases);
     let skip = redundant_bands(&locals, &same_as);
     let (mut nodes, events, mut edges) = locals.into_parts(&skip);
     let mut port_node: Vec<Option<u32>> = vec![None; cuts.len()];
@@ -71,9 +73,14 @@ pub fn glue<K: AxisKernel>(finder: &DiskFinder<K>, cuts: &[Cut], locals: LocalAx
     merge_pass_through(shape, &mut axis, &is_port, &is_joint);
     classify(&mut axis, tol);
     merge_coinciding_branches(shape, &mut axis, Tolerance::new(tol));
+
     // After the merges, which settle the edges that subshapes share, and
     // before the node kinds, which follow from the degrees.
-    contract_rounding_cycles(&mut axis, Tolerance::new(tol).rounding_cycle());
+    let fit = Tolerance::new(tol).branch_group_fit();
+    let fits =
+        |n: &AxisNode, e: &AxisEdge| e.sites.iter().all(|s| (s.distance(shape, n.point) - n.radius).abs() <= fit);
+    contract_rounding_cycles(&mut axis, Tolerance::new(tol).rounding_cycle(), fits);
+    drop_thin_cycles(shape, &mut axis);
     classify(&mut axis, tol);
     polish_branches(finder.kernel(), shape, &mut axis);
     check_graph(&axis, shape.loops().len() - 1)?;
@@ -135,6 +142,23 @@ fn coinciding_cuts(cuts: &[Cut], apart: &FastSet<(usize, usize)>, t: Tolerance) 
         }
     }
     out
+}
+
+/// `same_as` (each disk's representative) with the disks that leaves
+/// named by one node ([`LocalAxes::aliases`]) made one: the union of both
+/// relations, each class represented by its smallest disk.
+fn with_aliases(mut same_as: Vec<usize>, aliases: &[[usize; 2]]) -> Vec<usize> {
+    if aliases.is_empty() {
+        return same_as;
+    }
+    for &[a, b] in aliases {
+        let (ra, rb) = (root(&mut same_as, a), root(&mut same_as, b));
+        same_as[ra.max(rb)] = ra.min(rb);
+    }
+    for i in 0..same_as.len() {
+        same_as[i] = root(&mut same_as, i);
+    }
+    same_as
 }
 
 /// Which locals to leave out: a band's straight edge stands for whatever
@@ -210,5 +234,15 @@ mod tests {
         // is then within 64τ of a node of its own, cut 2's).
         let apart: FastSet<(usize, usize)> = [(1, 2)].into_iter().collect();
         assert_eq!(coinciding_cuts(&cuts, &apart, t), [0, 0, 2, 2]);
+    }
+
+    #[test]
+    fn disks_a_leaf_named_by_one_node_are_one_node_however_far() {
+        // 0 and 1 coincide; leaves named 3 by 2's node and 4 by 3's.
+        let same_as = vec![0, 0, 2, 3, 4, 5];
+        assert_eq!(with_aliases(same_as.clone(), &[]), same_as);
+        assert_eq!(with_aliases(same_as.clone(), &[[3, 2], [4, 3]]), [0, 0, 2, 2, 2, 5]);
+        // An alias to a merged disk joins its representative's class.
+        assert_eq!(with_aliases(same_as, &[[5, 1]]), [0, 0, 2, 3, 4, 0]);
     }
 }

@@ -26,6 +26,8 @@ pub struct LocalAxes {
     /// list, not the subshape's part of it). `kind` is not set yet (it is
     /// [`ConicKind::Line`] until gluing names the conic).
     pub(crate) edges: Vec<AxisEdge>,
+    /// Every subshape's [`LocalAxis::aliases`].
+    pub(crate) aliases: Vec<[usize; 2]>,
     /// Where each subshape's nodes and edges start, and one past the last.
     starts: Vec<(usize, usize)>,
 }
@@ -64,6 +66,7 @@ impl LocalAxes {
             kind: NodeKind::Joint,
         }));
         self.events.extend(local.nodes.iter().map(|n| n.kind));
+        self.aliases.extend(local.aliases);
         self.starts.push((self.nodes.len(), self.edges.len()));
     }
 
@@ -109,8 +112,8 @@ mod tests {
         let edge = LocalEdge { from: 1, to: 0, sites: [site, site], params: [(0.0, 1.0); 2], straight: false };
         let mut all = LocalAxes::default();
         assert_eq!(all.count(), 0);
-        all.push(LocalAxis { nodes: vec![node(0.0), node(1.0)], edges: vec![edge] });
-        all.push(LocalAxis { nodes: vec![node(2.0), node(3.0)], edges: vec![edge] });
+        all.push(LocalAxis { nodes: vec![node(0.0), node(1.0)], edges: vec![edge], aliases: Vec::new() });
+        all.push(LocalAxis { nodes: vec![node(2.0), node(3.0)], edges: vec![edge], aliases: Vec::new() });
         assert_eq!(all.count(), 2);
         let second = all.get(1);
         assert_eq!((second.nodes.len(), second.edges.len()), (2, 1));

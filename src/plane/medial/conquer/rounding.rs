@@ -4,9 +4,10 @@
 //! no hole. The cluster of nodes is one node of the axis.
 
 use crate::plane::axis::MedialAxis2d;
+use crate::plane::axis::{AxisEdge, AxisNode};
 use crate::plane::medial::conquer::check::drop_repeats;
 use crate::plane::medial::conquer::merge::compact;
-use crate::util::fast_hash::FastMap;
+use crate::util::fast_hash::{FastMap, FastSet};
 use rayon::prelude::*;
 
 /// Nodes a search for a cycle visits at most, so that it costs little.
@@ -22,8 +23,15 @@ const SEARCH: usize = 64;
 /// one); edges inside the cluster go, and the others end at that node
 /// (their ends move by less than `reach`). Dropping one edge instead
 /// would leave a stub of rounding length and a branch point that is not
-/// in the shape.
-pub(crate) fn contract_rounding_cycles(axis: &mut MedialAxis2d, reach: f64) {
+/// in the shape. A cluster is contracted only where its node's disk
+/// `fits` every edge that moves onto it (clusters chained over many short
+/// cycles, as near the centre of a curve within 10^-6 of a circle, span
+/// hundreds of tolerances: their cycles are left to `thin_cycles`).
+pub(crate) fn contract_rounding_cycles(
+    axis: &mut MedialAxis2d,
+    reach: f64,
+    fits: impl Fn(&AxisNode, &AxisEdge) -> bool,
+) {
     let nodes = &axis.nodes;
     let n = nodes.len();
     let big = |w: usize| nodes[w].radius > 4.0 * reach;
@@ -125,6 +133,23 @@ pub(crate) fn contract_rounding_cycles(axis: &mut MedialAxis2d, reach: f64) {
             chosen.insert(g, v);
         }
     }
+    // Clusters whose node does not fit an edge moving onto it stay apart.
+    let misfits: FastSet<usize> = axis
+        .edges
+        .iter()
+        .filter(|e| group(e.from) != group(e.to))
+        .flat_map(|e| [(e.from, e), (e.to, e)])
+        .filter(|&(v, e)| in_cluster[v] && chosen[&group(v)] != v && !fits(&axis.nodes[chosen[&group(v)]], e))
+        .map(|(v, _)| group(v))
+        .collect();
+    if !misfits.is_empty() {
+        for &v in &members {
+            if misfits.contains(&find(&parent, v)) {
+                in_cluster[v] = false;
+            }
+        }
+    }
+    let group = |v: usize| if in_cluster[v] { find(&parent, v) } else { v };
     let node_of = |v: usize| if in_cluster[v] { chosen[&group(v)] } else { v };
     // In place: edges inside a cluster become loops at its node and go.
     for e in axis.edges.iter_mut().filter(|e| in_cluster[e.from] || in_cluster[e.to]) {
@@ -159,7 +184,7 @@ mod tests {
     use super::*;
     use crate::kernel::bisector::ConicKind;
     use crate::kernel::Point;
-    use crate::plane::axis::{AxisEdge, AxisNode, NodeKind, Primitive};
+    use crate::plane::axis::{NodeKind, Primitive};
     use crate::shape::ElementRef;
 
     fn node(x: f64, y: f64, radius: f64) -> AxisNode {
@@ -185,7 +210,7 @@ mod tests {
         ];
         let edges = vec![edge(0, 1, 0), edge(1, 3, 1), edge(1, 2, 2), edge(2, 4, 3), edge(4, 1, 4), edge(2, 5, 5)];
         let mut axis = MedialAxis2d { nodes, edges };
-        contract_rounding_cycles(&mut axis, 1e-6);
+        contract_rounding_cycles(&mut axis, 1e-6, |_, _| true);
         assert_eq!(axis.nodes.len(), 4);
         // The joint stays, with three edges: no stub is left.
         let joint = axis.nodes.iter().position(|n| n.point == Point::new(0.0, 0.0)).unwrap();
@@ -194,17 +219,35 @@ mod tests {
     }
 
     #[test]
+    fn a_cluster_whose_node_misses_an_edge_moving_onto_it_stays() {
+        let nodes = vec![
+            node(-5.0, 0.0, 1.0),
+            node(0.0, 0.0, 1.0),
+            node(3e-7, 0.0, 1.0),
+            node(5.0, 0.0, 1.0),
+            node(0.0, 3e-7, 1.0),
+            node(0.0, -5.0, 1.0),
+        ];
+        let edges = vec![edge(0, 1, 0), edge(1, 3, 1), edge(1, 2, 2), edge(2, 4, 3), edge(4, 1, 4), edge(2, 5, 5)];
+        let mut axis = MedialAxis2d { nodes, edges };
+        // Only edge 5 (site 5, leaving node 2) misses the joint's disk.
+        let site5 = Primitive::Element(ElementRef { loop_index: 0, element: 5 });
+        contract_rounding_cycles(&mut axis, 1e-6, |_, e| e.sites[0] != site5);
+        assert_eq!((axis.nodes.len(), axis.edges.len()), (6, 6));
+    }
+
+    #[test]
     fn a_cycle_that_could_hold_a_hole_is_kept() {
         let cycle = vec![edge(0, 1, 0), edge(1, 2, 1), edge(2, 0, 2)];
         // Disks no larger than the cycle's reach: a hole may lie inside.
         let small = vec![node(0.0, 0.0, 2e-6), node(3e-7, 0.0, 2e-6), node(0.0, 3e-7, 2e-6)];
         let mut axis = MedialAxis2d { nodes: small, edges: cycle.clone() };
-        contract_rounding_cycles(&mut axis, 1e-6);
+        contract_rounding_cycles(&mut axis, 1e-6, |_, _| true);
         assert_eq!((axis.nodes.len(), axis.edges.len()), (3, 3));
         // A wide cycle of large disks.
         let wide = vec![node(0.0, 0.0, 1.0), node(3e-6, 0.0, 1.0), node(0.0, 3e-6, 1.0)];
         let mut axis = MedialAxis2d { nodes: wide, edges: cycle };
-        contract_rounding_cycles(&mut axis, 1e-6);
+        contract_rounding_cycles(&mut axis, 1e-6, |_, _| true);
         assert_eq!((axis.nodes.len(), axis.edges.len()), (3, 3));
     }
 }
