@@ -132,7 +132,7 @@ pub(crate) fn compact(
 /// The edges at each node, in one array (compressed rows): a vector per
 /// node cost more to allocate and free than the merge itself on 10^6
 /// nodes.
-struct Incidence {
+pub(crate) struct Incidence {
     /// Node v's edges are `edges[start[v]..start[v + 1]]` (32-bit: half
     /// the memory traffic of these passes over 10^6 nodes; the axis's own
     /// ids are 32-bit too).
@@ -143,7 +143,7 @@ struct Incidence {
 impl Incidence {
     /// Each edge of `axis` listed at both ends, in edge order (a loop
     /// twice at its node).
-    fn of(axis: &MedialAxis2d) -> Incidence {
+    pub(crate) fn of(axis: &MedialAxis2d) -> Incidence {
         let n = axis.nodes.len();
         let mut start = vec![0u32; n + 1];
         for e in &axis.edges {
@@ -165,7 +165,7 @@ impl Incidence {
     }
 
     /// The edges at node `v`.
-    fn of_node(&self, v: usize) -> impl Iterator<Item = usize> + '_ {
+    pub(crate) fn of_node(&self, v: usize) -> impl Iterator<Item = usize> + '_ {
         self.edges[self.start[v] as usize..self.start[v + 1] as usize].iter().map(|&i| i as usize)
     }
 

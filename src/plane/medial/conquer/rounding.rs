@@ -196,10 +196,9 @@ mod tests {
         AxisEdge { from, to, sites: [site, site], params: [(0.0, 0.0); 2], kind: ConicKind::Line, straight: false }
     }
 
-    #[test]
-    fn a_small_cycle_of_large_disks_becomes_one_node() {
-        // A joint (1) on a curve 0-1-3, a branch point (2) next to it
-        // joined to it twice (by way of 4), and a branch leaving 2.
+    /// A joint (1) on a curve 0-1-3, a branch point (2) next to it
+    /// joined to it twice (by way of 4), and a branch leaving 2.
+    fn joint_with_a_branch_point_beside_it() -> MedialAxis2d {
         let nodes = vec![
             node(-5.0, 0.0, 1.0),
             node(0.0, 0.0, 1.0),
@@ -209,7 +208,12 @@ mod tests {
             node(0.0, -5.0, 1.0),
         ];
         let edges = vec![edge(0, 1, 0), edge(1, 3, 1), edge(1, 2, 2), edge(2, 4, 3), edge(4, 1, 4), edge(2, 5, 5)];
-        let mut axis = MedialAxis2d { nodes, edges };
+        MedialAxis2d { nodes, edges }
+    }
+
+    #[test]
+    fn a_small_cycle_of_large_disks_becomes_one_node() {
+        let mut axis = joint_with_a_branch_point_beside_it();
         contract_rounding_cycles(&mut axis, 1e-6, |_, _| true);
         assert_eq!(axis.nodes.len(), 4);
         // The joint stays, with three edges: no stub is left.
@@ -220,16 +224,7 @@ mod tests {
 
     #[test]
     fn a_cluster_whose_node_misses_an_edge_moving_onto_it_stays() {
-        let nodes = vec![
-            node(-5.0, 0.0, 1.0),
-            node(0.0, 0.0, 1.0),
-            node(3e-7, 0.0, 1.0),
-            node(5.0, 0.0, 1.0),
-            node(0.0, 3e-7, 1.0),
-            node(0.0, -5.0, 1.0),
-        ];
-        let edges = vec![edge(0, 1, 0), edge(1, 3, 1), edge(1, 2, 2), edge(2, 4, 3), edge(4, 1, 4), edge(2, 5, 5)];
-        let mut axis = MedialAxis2d { nodes, edges };
+        let mut axis = joint_with_a_branch_point_beside_it();
         // Only edge 5 (site 5, leaving node 2) misses the joint's disk.
         let site5 = Primitive::Element(ElementRef { loop_index: 0, element: 5 });
         contract_rounding_cycles(&mut axis, 1e-6, |_, e| e.sites[0] != site5);

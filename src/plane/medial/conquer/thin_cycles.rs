@@ -10,7 +10,7 @@
 
 use crate::plane::axis::MedialAxis2d;
 use crate::plane::medial::conquer::check::root;
-use crate::plane::medial::conquer::merge::compact;
+use crate::plane::medial::conquer::merge::{compact, Incidence};
 use crate::shape::Shape2d;
 
 /// Nodes a search for the other way round a cycle visits at most.
@@ -39,24 +39,7 @@ pub(crate) fn drop_thin_cycles(shape: &Shape2d, axis: &mut MedialAxis2d) {
         return;
     }
     drop(parent);
-    // Edge ids per node, in one array.
-    let mut start = vec![0u32; n + 1];
-    for e in &axis.edges {
-        start[e.from + 1] += 1;
-        start[e.to + 1] += 1;
-    }
-    for v in 0..n {
-        start[v + 1] += start[v];
-    }
-    let mut fill = start.clone();
-    let mut adj = vec![0u32; 2 * axis.edges.len()];
-    for (i, e) in axis.edges.iter().enumerate() {
-        for v in [e.from, e.to] {
-            adj[fill[v] as usize] = i as u32;
-            fill[v] += 1;
-        }
-    }
-    drop(fill);
+    let incidence = Incidence::of(axis);
     let edges = &axis.edges;
     let mut gone = vec![false; edges.len()];
     let mut inner_gone = vec![false; n];
@@ -64,9 +47,7 @@ pub(crate) fn drop_thin_cycles(shape: &Shape2d, axis: &mut MedialAxis2d) {
     // reached by the search for the other way (even stamps).
     let mut node_mark = vec![0u32; n];
     let mut edge_mark = vec![0u32; edges.len()];
-    let live = |v: usize, gone: &[bool]| -> Vec<usize> {
-        adj[start[v] as usize..start[v + 1] as usize].iter().map(|&i| i as usize).filter(|&i| !gone[i]).collect()
-    };
+    let live = |v: usize, gone: &[bool]| -> Vec<usize> { incidence.of_node(v).filter(|&i| !gone[i]).collect() };
     let other = |i: usize, v: usize| if edges[i].from == v { edges[i].to } else { edges[i].from };
     for (k, &c) in closing.iter().enumerate() {
         if gone[c] {
