@@ -96,6 +96,39 @@ pub(super) fn cluster_axis(shape: &Shape2d, s: &Subshape, cuts: &[Cut]) -> Optio
     Some(LocalAxis { nodes: ports.iter().map(|&(d, _)| port(cuts, d)).collect(), edges, aliases: Vec::new() })
 }
 
+/// The axis of a subshape of two chains between two auxiliary arcs of
+/// two dividing disks, where the base case found one node (the disks
+/// within [`Tolerance::same_event`](crate::kernel::tolerance::Tolerance::same_event)
+/// of each other, or chains within the tolerance of their ends, no site):
+/// the straight edge between their ports, with the chains' middle
+/// elements as its sides. `None` for any other subshape. Named as one
+/// node instead, such leaves chained along a stretch of axis (disks cut
+/// 2–4τ apart one after the other, near the centre of a curve within
+/// 10^-6 of a circle) made one node of disks hundreds of tolerances apart.
+pub(super) fn two_port_axis(shape: &Shape2d, s: &Subshape, cuts: &[Cut]) -> Option<LocalAxis> {
+    let m = s.pieces.len();
+    let aux: Vec<(usize, usize)> = (0..m)
+        .filter_map(|j| match s.pieces[j] {
+            Piece::Aux { disk } => Some((disk, j)),
+            Piece::Chain { .. } => None,
+        })
+        .collect();
+    let &[(d0, j0), (d1, j1)] = aux.as_slice() else { return None };
+    let point = |j: usize| match s.pieces[j % m] {
+        Piece::Chain { from, to } => middle_element(shape, (from, to)),
+        Piece::Aux { .. } => None,
+    };
+    if d0 == d1 || (j1 != j0 + 2) || m != 4 {
+        return None;
+    }
+    let (left, right) = (point(j0 + 3)?, point(j0 + 1)?);
+    Some(LocalAxis {
+        nodes: vec![port(cuts, d0), port(cuts, d1)],
+        edges: vec![straight_edge(shape, cuts, (0, d0), (1, d1), [left, right])],
+        aliases: Vec::new(),
+    })
+}
+
 /// The straight edge from node `from.0` (dividing disk `from.1`) to node
 /// `to.0` (disk `to.1`) with primitives `sites` on its left and right,
 /// their footpoint parameters taken from the two disks.

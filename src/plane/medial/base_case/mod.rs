@@ -48,7 +48,7 @@ mod sites;
 mod walk;
 
 use events::Event;
-use hugged::{band_axis, cluster_axis, tip_axis};
+use hugged::{band_axis, cluster_axis, tip_axis, two_port_axis};
 use port::Port;
 use sites::{Key, LocalSite};
 
@@ -115,7 +115,22 @@ pub struct LocalAxis {
     /// sliver between disks a few tolerances apart has one node for all
     /// of them, and gluing must join what the leaf joined, however far
     /// apart its own test of coinciding disks would put them.
-    pub aliases: Vec<[usize; 2]>,
+    pub aliases: Vec<Alias>,
+}
+
+/// A dividing disk of a subshape that its axis names by another's node.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Alias {
+    /// `[omitted, named]`.
+    pub disks: [usize; 2],
+    /// Where the subshape lies between just those two disks: its axis as
+    /// the straight edge between their ports, which gluing takes instead
+    /// where making the two one node would stretch a node over more than
+    /// [`Tolerance::same_disk`](crate::kernel::tolerance::Tolerance::same_disk)
+    /// (leaves cut 2–4τ apart one after the other along a stretch of
+    /// axis, near the centre of a curve within 10^-6 of a circle, named
+    /// disks hundreds of tolerances apart as one).
+    pub bridge: Option<LocalAxis>,
 }
 
 /// Why a subshape's axis could not be computed (a numerical breakdown;
@@ -148,13 +163,16 @@ pub fn solve<K: AxisKernel>(
 ) -> Result<LocalAxis, BaseCaseError> {
     solve_unaliased(shape, s, cuts, tol, finder).map(|mut local| {
         local.aliases = aliases(s, cuts, &local);
+        if let [alias] = local.aliases.as_mut_slice() {
+            alias.bridge = two_port_axis(shape, s, cuts);
+        }
         local
     })
 }
 
 /// The dividing disks of `s` that `local` has no port node for, each with
 /// the port node whose centre is nearest its own.
-fn aliases(s: &Subshape, cuts: &[Cut], local: &LocalAxis) -> Vec<[usize; 2]> {
+fn aliases(s: &Subshape, cuts: &[Cut], local: &LocalAxis) -> Vec<Alias> {
     let named: Vec<usize> = local
         .nodes
         .iter()
@@ -171,7 +189,7 @@ fn aliases(s: &Subshape, cuts: &[Cut], local: &LocalAxis) -> Vec<[usize; 2]> {
                 .min_by(|&&a, &&b| {
                     cuts[a].center.dist(cuts[disk].center).total_cmp(&cuts[b].center.dist(cuts[disk].center))
                 })
-                .map(|&to| [disk, to]),
+                .map(|&to| Alias { disks: [disk, to], bridge: None }),
             _ => None,
         })
         .collect()
@@ -242,7 +260,7 @@ fn walk_leaf<K: AxisKernel>(
     b.collect_sites(s, cuts);
     if b.sites.is_empty() {
         // A subshape of auxiliary arcs and single points only: its axis is
-        // its one port.
+        // its first port.
         let nodes = s
             .pieces
             .iter()
@@ -354,7 +372,7 @@ mod tests {
         let s = Subshape { pieces: (0..3).map(|disk| Piece::Aux { disk }).collect() };
         let port = |disk: usize| LocalNode { center: cuts[disk].center, radius: 1.0, kind: EventKind::Port(disk) };
         let local = LocalAxis { nodes: vec![port(0), port(2)], edges: Vec::new(), aliases: Vec::new() };
-        assert_eq!(aliases(&s, &cuts, &local), [[1, 0]]);
+        assert_eq!(aliases(&s, &cuts, &local), [Alias { disks: [1, 0], bridge: None }]);
         let whole = LocalAxis { nodes: (0..3).map(port).collect(), edges: Vec::new(), aliases: Vec::new() };
         assert!(aliases(&s, &cuts, &whole).is_empty());
     }

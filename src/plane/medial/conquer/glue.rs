@@ -7,7 +7,7 @@ use crate::kernel::bisector::ConicKind;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::AxisKernel;
 use crate::plane::axis::{edge_kind, AxisEdge, AxisNode, MedialAxis2d, NodeKind};
-use crate::plane::medial::base_case::EventKind;
+use crate::plane::medial::base_case::{Alias, EventKind};
 use crate::plane::medial::conquer::check::{check_graph, drop_repeats, root};
 use crate::plane::medial::conquer::error::AxisError;
 use crate::plane::medial::conquer::locals::{LocalAxes, LocalView};
@@ -21,11 +21,20 @@ use crate::util::fast_hash::{FastMap, FastSet};
 /// Glues the axes of the subshapes (`locals`) at the centres of the
 /// dividing disks `cuts`; `finder` indexes the shape they were made of.
 /// The subshapes' nodes and edges become the axis's in place.
-pub fn glue<K: AxisKernel>(finder: &DiskFinder<K>, cuts: &[Cut], locals: LocalAxes) -> Result<MedialAxis2d, AxisError> {
+pub fn glue<K: AxisKernel>(
+    finder: &DiskFinder<K>,
+    cuts: &[Cut],
+    mut locals: LocalAxes,
+) -> Result<MedialAxis2d, AxisError> {
     let shape = finder.shape();
     let tol = shape.tolerance();
     let same_as = coinciding_cuts(cuts, &joined_ports(&locals), Tolerance::new(tol));
-    let same_as = with_aliases(same_as, &locals.aliases);
+    let (same_as, refused) = with_aliases(same_as, &locals.aliases, cuts, Tolerance::new(tol));
+    for i in refused {
+        if let Some(bridge) = locals.aliases[i].bridge.take() {
+            locals.push(bridge);
+        }
+    }
     let skip = redundant_bands(&locals, &same_as);
     let (mut nodes, events, mut edges) = locals.into_parts(&skip);
     let mut port_node: Vec<Option<u32>> = vec![None; cuts.len()];
@@ -36,6 +45,10 @@ pub fn glue<K: AxisKernel>(finder: &DiskFinder<K>, cuts: &[Cut], locals: LocalAx
     // place: a node's new index is never past its old one.
     let mut ids: Vec<u32> = vec![u32::MAX; nodes.len()];
     let mut count = 0u32;
+    // The disk each class's node took, and the other disks of classes
+    // that met more than one (node, disk).
+    let mut node_cut: Vec<usize> = vec![usize::MAX; cuts.len()];
+    let mut others: Vec<(u32, usize)> = Vec::new();
     for (v, event) in events.iter().enumerate() {
         let Some(event) = *event else { continue };
         // Node `v` moved down to the next free index.
@@ -47,12 +60,28 @@ pub fn glue<K: AxisKernel>(finder: &DiskFinder<K>, cuts: &[Cut], locals: LocalAx
             count - 1
         };
         ids[v] = match event {
-            EventKind::Port(c) => *port_node[same_as[c]].get_or_insert_with(|| keep(true)),
+            EventKind::Port(c) => {
+                let rep = same_as[c];
+                match port_node[rep] {
+                    Some(id) => {
+                        if node_cut[rep] != c {
+                            others.push((id, c));
+                        }
+                        id
+                    }
+                    None => {
+                        node_cut[rep] = c;
+                        *port_node[rep].insert(keep(true))
+                    }
+                }
+            }
             _ => keep(false),
         };
     }
     nodes.truncate(count as usize);
-    drop((events, port_node));
+    let others: Vec<(u32, usize)> =
+        others.into_iter().chain(port_node.iter().zip(&node_cut).filter_map(|(id, &c)| Some(((*id)?, c)))).collect();
+    drop((events, port_node, node_cut));
     // Two subshapes that both hold the same stretch of axis (between two
     // disks met twice) give the same edge twice: keep one. Only an edge
     // between two ports can repeat (every other node is one subshape's,
@@ -69,6 +98,7 @@ pub fn glue<K: AxisKernel>(finder: &DiskFinder<K>, cuts: &[Cut], locals: LocalAx
     let between_ports: Vec<bool> = edges.iter().map(|e| is_port[e.from] && is_port[e.to]).collect();
     drop_repeats(&mut edges, &between_ports);
     let mut axis = MedialAxis2d { nodes, edges };
+    fit_class_nodes(shape, cuts, &mut axis, others);
     is_joint.resize(axis.nodes.len(), false);
     merge_pass_through(shape, &mut axis, &is_port, &is_joint);
     classify(&mut axis, tol);
@@ -146,19 +176,86 @@ fn coinciding_cuts(cuts: &[Cut], apart: &FastSet<(usize, usize)>, t: Tolerance) 
 
 /// `same_as` (each disk's representative) with the disks that leaves
 /// named by one node ([`LocalAxes::aliases`]) made one: the union of both
-/// relations, each class represented by its smallest disk.
-fn with_aliases(mut same_as: Vec<usize>, aliases: &[[usize; 2]]) -> Vec<usize> {
+/// relations, each class represented by its smallest disk. An alias with
+/// a bridge is refused (its index returned) where it would stretch a
+/// class's centres over more than [`Tolerance::same_disk`] (or more than
+/// either class spans already): its bridge joins the two disks instead.
+fn with_aliases(mut same_as: Vec<usize>, aliases: &[Alias], cuts: &[Cut], t: Tolerance) -> (Vec<usize>, Vec<usize>) {
     if aliases.is_empty() {
-        return same_as;
+        return (same_as, Vec::new());
     }
-    for &[a, b] in aliases {
+    // Each class's box of centres, at its representative.
+    let mut boxes: Vec<[f64; 4]> = cuts.iter().map(|c| [c.center.x, c.center.y, c.center.x, c.center.y]).collect();
+    let join = |a: [f64; 4], b: [f64; 4]| [a[0].min(b[0]), a[1].min(b[1]), a[2].max(b[2]), a[3].max(b[3])];
+    let span = |b: [f64; 4]| (b[2] - b[0]).hypot(b[3] - b[1]);
+    for i in 0..cuts.len() {
+        let r = root(&mut same_as, i);
+        boxes[r] = join(boxes[r], boxes[i]);
+    }
+    let mut refused = Vec::new();
+    for (i, alias) in aliases.iter().enumerate() {
+        let [a, b] = alias.disks;
         let (ra, rb) = (root(&mut same_as, a), root(&mut same_as, b));
-        same_as[ra.max(rb)] = ra.min(rb);
+        if ra == rb {
+            continue;
+        }
+        let merged = join(boxes[ra], boxes[rb]);
+        if alias.bridge.is_some() && span(merged) > t.same_disk().max(span(boxes[ra])).max(span(boxes[rb])) {
+            refused.push(i);
+            continue;
+        }
+        let (lo, hi) = (ra.min(rb), ra.max(rb));
+        same_as[hi] = lo;
+        boxes[lo] = merged;
     }
     for i in 0..same_as.len() {
         same_as[i] = root(&mut same_as, i);
     }
-    same_as
+    (same_as, refused)
+}
+
+/// Places each node of a class of several dividing disks (`members`:
+/// node and disk, every class's first disk among them) at the member disk
+/// that fits its edges best (the least largest distance from its circle to
+/// an edge's primitive): the class's first disk can lie tens of
+/// tolerances from the disks that other leaves' edges end at.
+fn fit_class_nodes(shape: &crate::shape::Shape2d, cuts: &[Cut], axis: &mut MedialAxis2d, members: Vec<(u32, usize)>) {
+    let mut of_node: FastMap<u32, Vec<usize>> = FastMap::default();
+    for &(id, c) in &members {
+        of_node.entry(id).or_default().push(c);
+    }
+    of_node.retain(|_, cs| {
+        cs.sort_unstable();
+        cs.dedup();
+        cs.len() > 1
+    });
+    if of_node.is_empty() {
+        return;
+    }
+    let mut edges_at: FastMap<u32, Vec<usize>> = FastMap::default();
+    for (i, e) in axis.edges.iter().enumerate() {
+        for v in [e.from as u32, e.to as u32] {
+            if of_node.contains_key(&v) {
+                edges_at.entry(v).or_default().push(i);
+            }
+        }
+    }
+    for (id, cs) in of_node {
+        let Some(at) = edges_at.get(&id) else { continue };
+        let misfit = |c: usize| {
+            let Cut { center, radius } = cuts[c];
+            at.iter()
+                .flat_map(|&i| axis.edges[i].sites)
+                .map(|p| (p.distance(shape, center) - radius).abs())
+                .fold(0.0f64, f64::max)
+        };
+        if let Some(best) =
+            cs.into_iter().map(|c| (misfit(c), c)).min_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)))
+        {
+            let node = &mut axis.nodes[id as usize];
+            (node.point, node.radius) = (cuts[best.1].center, cuts[best.1].radius);
+        }
+    }
 }
 
 /// Which locals to leave out: a band's straight edge stands for whatever
@@ -237,12 +334,53 @@ mod tests {
     }
 
     #[test]
-    fn disks_a_leaf_named_by_one_node_are_one_node_however_far() {
-        // 0 and 1 coincide; leaves named 3 by 2's node and 4 by 3's.
+    fn a_node_of_several_disks_takes_the_one_that_fits_its_edges() {
+        use crate::plane::axis::{AxisEdge, AxisNode, Primitive};
+        use crate::shape::{ElementRef, Shape2d, ShapeOptions};
+        let json = r#"{"loops": [[[-10, -10], [10, -10], [10, 10], [-10, 10]]]}"#;
+        let shape = Shape2d::from_json_str(json, &ShapeOptions::default()).unwrap();
+        // Between the bottom and the top side: centred on y = 0, radius 10.
+        let cuts =
+            [Cut { center: Point::new(0.0, 1e-3), radius: 10.0 }, Cut { center: Point::new(0.0, 0.0), radius: 10.0 }];
+        let node = |c: Cut| AxisNode { point: c.center, radius: c.radius, kind: NodeKind::Joint };
+        let side = |element: usize| Primitive::Element(ElementRef { loop_index: 0, element });
+        let edge = AxisEdge {
+            from: 0,
+            to: 1,
+            sites: [side(0), side(2)],
+            params: [(0.0, 0.0); 2],
+            kind: ConicKind::Line,
+            straight: false,
+        };
+        let far = Cut { center: Point::new(5.0, 0.0), radius: 10.0 };
+        let mut axis = MedialAxis2d { nodes: vec![node(cuts[0]), node(far)], edges: vec![edge] };
+        fit_class_nodes(&shape, &cuts, &mut axis, vec![(0, 0), (0, 1)]);
+        assert_eq!(axis.nodes[0].point, Point::new(0.0, 0.0));
+        // A node of one disk stays where it is.
+        let mut axis = MedialAxis2d { nodes: vec![node(cuts[0]), node(far)], edges: axis.edges };
+        fit_class_nodes(&shape, &cuts, &mut axis, vec![(0, 0)]);
+        assert_eq!(axis.nodes[0].point, cuts[0].center);
+    }
+
+    #[test]
+    fn disks_a_leaf_named_by_one_node_are_one_node_unless_a_bridge_is_shorter() {
+        // 0 and 1 coincide; 2..5 lie 10τ apart one after the other.
+        let tau = 1e-9;
+        let t = Tolerance::new(tau);
+        let cut = |x: f64| Cut { center: Point::new(x * tau, 0.0), radius: 1.0 };
+        let cuts: Vec<Cut> = [0.0, 1.0, 100.0, 110.0, 120.0, 300.0].map(cut).to_vec();
         let same_as = vec![0, 0, 2, 3, 4, 5];
-        assert_eq!(with_aliases(same_as.clone(), &[]), same_as);
-        assert_eq!(with_aliases(same_as.clone(), &[[3, 2], [4, 3]]), [0, 0, 2, 2, 2, 5]);
-        // An alias to a merged disk joins its representative's class.
-        assert_eq!(with_aliases(same_as, &[[5, 1]]), [0, 0, 2, 3, 4, 0]);
+        let alias = |a: usize, b: usize, bridge: bool| Alias {
+            disks: [a, b],
+            bridge: bridge.then(crate::plane::medial::base_case::LocalAxis::default),
+        };
+        assert_eq!(with_aliases(same_as.clone(), &[], &cuts, t), (same_as.clone(), vec![]));
+        // Named as one by leaves: one node, however far apart.
+        let (merged, refused) = with_aliases(same_as.clone(), &[alias(3, 2, false), alias(5, 1, false)], &cuts, t);
+        assert_eq!((merged, refused), (vec![0, 0, 2, 2, 4, 0], vec![]));
+        // With bridges: 3 joins 2 and 4 joins them (20τ across), but 5,
+        // 300τ from 0 and 1, is bridged instead.
+        let aliases = [alias(3, 2, true), alias(4, 3, true), alias(5, 1, true)];
+        assert_eq!(with_aliases(same_as, &aliases, &cuts, t), (vec![0, 0, 2, 2, 2, 5], vec![2]));
     }
 }

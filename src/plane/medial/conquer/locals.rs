@@ -11,7 +11,7 @@
 
 use crate::kernel::bisector::ConicKind;
 use crate::plane::axis::{AxisEdge, AxisNode, NodeKind};
-use crate::plane::medial::base_case::{EventKind, LocalAxis};
+use crate::plane::medial::base_case::{Alias, EventKind, LocalAxis};
 
 /// The axes of many subshapes: each one's nodes and edges contiguous, in
 /// the order they were pushed.
@@ -27,7 +27,7 @@ pub struct LocalAxes {
     /// [`ConicKind::Line`] until gluing names the conic).
     pub(crate) edges: Vec<AxisEdge>,
     /// Every subshape's [`LocalAxis::aliases`].
-    pub(crate) aliases: Vec<[usize; 2]>,
+    pub(crate) aliases: Vec<Alias>,
     /// Where each subshape's nodes and edges start, and one past the last.
     starts: Vec<(usize, usize)>,
 }
