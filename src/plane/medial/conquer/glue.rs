@@ -13,6 +13,7 @@ use crate::plane::medial::conquer::error::AxisError;
 use crate::plane::medial::conquer::locals::{LocalAxes, LocalView};
 use crate::plane::medial::conquer::merge::{merge_coinciding_branches, merge_pass_through, polish_branches};
 use crate::plane::medial::conquer::rounding::contract_rounding_cycles;
+use crate::plane::medial::conquer::stray_conics::straighten_stray_conics;
 use crate::plane::medial::conquer::thin_cycles::drop_thin_cycles;
 use crate::plane::medial::decompose::subshape::Cut;
 use crate::plane::medial::disk::maximal::DiskFinder;
@@ -113,6 +114,7 @@ pub fn glue<K: AxisKernel>(
     drop_thin_cycles(shape, &mut axis);
     classify(&mut axis, tol);
     polish_branches(finder.kernel(), shape, &mut axis);
+    straighten_stray_conics(shape, &mut axis, Tolerance::new(tol).rounding_cycle());
     check_graph(&axis, shape.loops().len() - 1)?;
     Ok(axis)
 }
