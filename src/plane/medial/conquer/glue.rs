@@ -80,8 +80,11 @@ pub fn glue<K: AxisKernel>(
         };
     }
     nodes.truncate(count as usize);
-    let others: Vec<(u32, usize)> =
-        others.into_iter().chain(port_node.iter().zip(&node_cut).filter_map(|(id, &c)| Some(((*id)?, c)))).collect();
+    // Each such class's first disk too.
+    let several: FastSet<u32> = others.iter().map(|&(id, _)| id).collect();
+    let firsts = port_node.iter().zip(&node_cut).filter_map(|(id, &c)| Some(((*id)?, c)));
+    others.extend(firsts.filter(|(id, _)| several.contains(id)).collect::<Vec<_>>());
+    drop(several);
     drop((events, port_node, node_cut));
     // Two subshapes that both hold the same stretch of axis (between two
     // disks met twice) give the same edge twice: keep one. Only an edge
@@ -111,7 +114,7 @@ pub fn glue<K: AxisKernel>(
     let fits =
         |n: &AxisNode, e: &AxisEdge| e.sites.iter().all(|s| (s.distance(shape, n.point) - n.radius).abs() <= fit);
     contract_rounding_cycles(&mut axis, Tolerance::new(tol).rounding_cycle(), fits);
-    drop_thin_cycles(shape, &mut axis);
+    drop_thin_cycles(shape, &mut axis, shape.loops().len() - 1);
     classify(&mut axis, tol);
     polish_branches(finder.kernel(), shape, &mut axis);
     straighten_stray_conics(shape, &mut axis, Tolerance::new(tol).rounding_cycle());

@@ -23,8 +23,10 @@ const SEARCH: usize = 256;
 /// is thin, the route goes with its inner nodes; where the route comes
 /// back to the node it left (a loop hanging off one node, a tip reached
 /// twice), only the closing edge goes. Cycles round holes are never thin
-/// (their disks cannot reach across the hole) and stay.
-pub(crate) fn drop_thin_cycles(shape: &Shape2d, axis: &mut MedialAxis2d) {
+/// (their disks cannot reach across the hole) and stay. Nothing is done
+/// where the axis has no more independent cycles than `holes` (an axis
+/// that passes the graph check is left as it is).
+pub(crate) fn drop_thin_cycles(shape: &Shape2d, axis: &mut MedialAxis2d, holes: usize) {
     let n = axis.nodes.len();
     let mut parent: Vec<usize> = (0..n).collect();
     let mut closing = Vec::new();
@@ -35,7 +37,7 @@ pub(crate) fn drop_thin_cycles(shape: &Shape2d, axis: &mut MedialAxis2d) {
         }
         parent[a] = b;
     }
-    if closing.is_empty() {
+    if closing.len() <= holes {
         return;
     }
     drop(parent);
@@ -163,7 +165,7 @@ mod tests {
         ];
         let edges = vec![edge(0, 2), edge(1, 3), edge(0, 1), edge(0, 4), edge(4, 1)];
         let mut axis = MedialAxis2d { nodes, edges };
-        drop_thin_cycles(&shape(), &mut axis);
+        drop_thin_cycles(&shape(), &mut axis, 0);
         assert_eq!((axis.nodes.len(), axis.edges.len()), (4, 3));
         assert!(axis.edges.iter().any(|e| (e.from, e.to) == (0, 1)));
     }
@@ -173,7 +175,7 @@ mod tests {
         let nodes = vec![node(0.0, 0.0, 1.0), node(-5.0, 0.0, 1.0), node(0.1, 0.0, 1.0)];
         let edges = vec![edge(0, 1), edge(0, 2), edge(2, 0)];
         let mut axis = MedialAxis2d { nodes, edges };
-        drop_thin_cycles(&shape(), &mut axis);
+        drop_thin_cycles(&shape(), &mut axis, 0);
         assert_eq!((axis.nodes.len(), axis.edges.len()), (3, 2));
     }
 
@@ -184,12 +186,12 @@ mod tests {
         let nodes = vec![node(2.0, 0.0, 1.0), node(0.0, 2.0, 1.0), node(-2.0, 0.0, 1.0), node(0.0, -2.0, 1.0)];
         let edges = vec![edge(0, 1), edge(1, 2), edge(2, 3), edge(3, 0)];
         let mut axis = MedialAxis2d { nodes, edges };
-        drop_thin_cycles(&shape(), &mut axis);
+        drop_thin_cycles(&shape(), &mut axis, 0);
         assert_eq!((axis.nodes.len(), axis.edges.len()), (4, 4));
         // Two nodes joined twice round a hole: their disks are too small.
         let nodes = vec![node(2.0, 0.0, 1.0), node(-2.0, 0.0, 1.0)];
         let mut axis = MedialAxis2d { nodes, edges: vec![edge(0, 1), edge(1, 0)] };
-        drop_thin_cycles(&shape(), &mut axis);
+        drop_thin_cycles(&shape(), &mut axis, 0);
         assert_eq!(axis.edges.len(), 2);
     }
 }
