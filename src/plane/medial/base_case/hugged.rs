@@ -114,14 +114,14 @@ pub(super) fn two_port_axis(shape: &Shape2d, s: &Subshape, cuts: &[Cut]) -> Opti
         })
         .collect();
     let &[(d0, j0), (d1, j1)] = aux.as_slice() else { return None };
-    let point = |j: usize| match s.pieces[j % m] {
+    if d0 == d1 || j1 != j0 + 2 || m != 4 {
+        return None;
+    }
+    let middle = |j: usize| match s.pieces[j % m] {
         Piece::Chain { from, to } => middle_element(shape, (from, to)),
         Piece::Aux { .. } => None,
     };
-    if d0 == d1 || (j1 != j0 + 2) || m != 4 {
-        return None;
-    }
-    let (left, right) = (point(j0 + 3)?, point(j0 + 1)?);
+    let (left, right) = (middle(j0 + 3)?, middle(j0 + 1)?);
     Some(LocalAxis {
         nodes: vec![port(cuts, d0), port(cuts, d1)],
         edges: vec![straight_edge(shape, cuts, (0, d0), (1, d1), [left, right])],

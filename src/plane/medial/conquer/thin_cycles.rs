@@ -98,19 +98,19 @@ pub(crate) fn drop_thin_cycles(shape: &Shape2d, axis: &mut MedialAxis2d, holes: 
             continue;
         }
         // The other way from `a` to `b` within `u`'s disk, off the route.
-        let mut seen = vec![(a, usize::MAX)];
+        let mut seen = vec![a];
         node_mark[a] = searched;
         let mut at = 0;
         let mut found = false;
         while at < seen.len() && seen.len() < SEARCH && !found {
-            let w = seen[at].0;
+            let w = seen[at];
             for i in live(w, &gone).into_iter().filter(|&i| edge_mark[i] != on_route && middle_near(i)) {
                 let x = other(i, w);
                 if node_mark[x] == searched || !near(x) {
                     continue;
                 }
                 node_mark[x] = searched;
-                seen.push((x, i));
+                seen.push(x);
                 if x == b {
                     found = true;
                     break;
