@@ -145,6 +145,61 @@ pub fn bisector_point(a: &Site, b: &Site, u: f64) -> Option<(Point, f64)> {
     Some((g.center(t), t))
 }
 
+/// The radius of the disk centred `c` tangent to `s` as its kind says (a
+/// disk nested in a circle lies inside it) and its gradient in `c`; `None`
+/// at a point or circle centre, where the gradient is undefined.
+fn tangent_radius(s: &Site, c: Point) -> Option<(f64, Point)> {
+    let away = |q: Point| {
+        let d = c - q;
+        let l = d.norm();
+        (l > 0.0).then(|| (l, d * (1.0 / l)))
+    };
+    match *s {
+        Site::Line { a, n } => Some((n.dot(c - a), n)),
+        Site::Point(q) => away(q),
+        Site::Circle { o, r, outside: true } => away(o).map(|(l, g)| (l - r, g)),
+        Site::Circle { o, r, outside: false } => away(o).map(|(l, g)| (r - l, -g)),
+    }
+}
+
+/// The disk nearest to tangent to both `a` and `b` reached from `p` along
+/// the bisector's normal: Newton steps on the difference of the two
+/// tangent radii, each kept only when it shrinks that difference and moves
+/// less than `reach` (model units), stopping at a step below 10^-15 of
+/// `reach`; the radius is the mean of the two tangent radii, so the disk
+/// misses each site by half their difference. Well conditioned where the
+/// footpoint parametrisation is not: along a stretch where both footpoints
+/// barely move (the disks slide along their normals, as near the axis of
+/// two arcs of nearly one circle), the curve is nearly straight and a
+/// point near it has one nearest bisector point; where the two sites are
+/// circles tangent within rounding, the curve is their common normal and
+/// the difference has no root, only a minimum there, which the kept steps
+/// approach. `None` only when `p` is a focus.
+pub fn bisector_point_near(a: &Site, b: &Site, p: Point, reach: f64) -> Option<(Point, f64)> {
+    let (mut ra, mut ga) = tangent_radius(a, p)?;
+    let (mut rb, mut gb) = tangent_radius(b, p)?;
+    let mut c = p;
+    for _ in 0..32 {
+        let g = ga - gb;
+        let g2 = g.norm2();
+        if g2 == 0.0 {
+            break;
+        }
+        let step = g * ((ra - rb) / g2);
+        let len = step.norm();
+        let next = c - step;
+        let (Some((na, nga)), Some((nb, ngb))) = (tangent_radius(a, next), tangent_radius(b, next)) else { break };
+        if len > reach || (na - nb).abs() >= (ra - rb).abs() {
+            break;
+        }
+        (c, ra, ga, rb, gb) = (next, na, nga, nb, ngb);
+        if len <= 1e-15 * reach {
+            break;
+        }
+    }
+    Some((c, 0.5 * (ra + rb)))
+}
+
 /// Samples the bisector of `a` and `b` between footpoint parameters `u0`
 /// and `u1` so that the polyline through the samples deviates from the
 /// curve by at most `tol` (checked at the middle of every span, after at
@@ -162,7 +217,12 @@ pub fn sample_bisector(a: &Site, b: &Site, u0: f64, u1: f64, tol: f64) -> Option
 /// degenerates (radius 0 at a convex corner). `None` if an inner parameter
 /// has no tangent disk.
 pub fn sample_between(a: &Site, b: &Site, start: Sample, end: Sample, tol: f64) -> Option<Vec<(Point, f64, f64)>> {
-    let at = |u: f64| bisector_point(a, b, u).map(|(c, r)| (c, r, u));
+    sample_along(|u: f64| bisector_point(a, b, u).map(|(c, r)| (c, r, u)), start, end, tol)
+}
+
+/// [`sample_between`] for any parametrisation `at` of the curve (a sample
+/// carries its parameter last).
+pub fn sample_along(at: impl Fn(f64) -> Option<Sample>, start: Sample, end: Sample, tol: f64) -> Option<Vec<Sample>> {
     let (u0, u1) = (start.2, end.2);
     let mut out = vec![start];
     let spans = 8;
@@ -236,6 +296,61 @@ mod tests {
             }
         }
         assert!(points > 10_000, "{points}");
+    }
+
+    #[test]
+    fn a_point_moved_off_the_bisector_comes_back_to_it() {
+        let mut rng = rand::rngs::SmallRng::seed_from_u64(22);
+        let (mut found, mut tried) = (0, 0);
+        for _ in 0..3000 {
+            let (a, b) = (random_site(&mut rng), random_site(&mut rng));
+            let Some((c, r)) = bisector_point(&a, &b, rng.gen_range(-6.0..6.0)) else { continue };
+            // Interior disks only: a nested circle holds its disk.
+            let holds = |s: &Site| tangent_radius(s, c).is_some_and(|(t, _)| (t - r).abs() < 1e-9 * (1.0 + r));
+            if !holds(&a) || !holds(&b) {
+                continue;
+            }
+            tried += 1;
+            // Off by 10^-4 of the radius in a random direction.
+            let t: f64 = rng.gen_range(0.0..std::f64::consts::TAU);
+            let p = c + Point::new(t.cos(), t.sin()) * (1e-4 * r);
+            let Some((q, rq)) = bisector_point_near(&a, &b, p, 1e-3 * r) else { continue };
+            let scale = 1.0 + r + c.norm();
+            if a.defect(q, rq).abs() > 1e-9 * scale || b.defect(q, rq).abs() > 1e-9 * scale {
+                // A focus or a tangency too flat for Newton: the point
+                // stays where it was, never further off.
+                assert!(
+                    (a.defect(q, rq) - b.defect(q, rq)).abs() <= (a.defect(p, 0.0) - b.defect(p, 0.0)).abs() + 1e-12
+                );
+                continue;
+            }
+            // Back within the move (the normal's foot, not the start).
+            assert!(q.dist(c) <= 2e-4 * r + 1e-9 * scale, "{a:?} {b:?}: {c:?} {q:?}");
+            found += 1;
+        }
+        assert!(found > 1000 && found * 100 >= tried * 99, "{found} of {tried}");
+    }
+
+    #[test]
+    fn two_circles_tangent_within_rounding_give_their_common_normal() {
+        // Nested circles whose radii differ by their centres' distance plus
+        // 2.5·10^-16: no two tangent radii are equal anywhere, and the
+        // disks of the common normal touch both within rounding.
+        let o0 = Point::new(-0.0032626364042669387, -0.0007712945076202016);
+        let o1 = Point::new(-0.0032739115383865203, -0.0007757008758929596);
+        let a = Site::Circle { o: o0, r: 0.995297555461604, outside: false };
+        let b = Site::Circle { o: o1, r: 0.9952854498954968, outside: false };
+        let normal = (o1 - o0).unit();
+        for along in [0.01, 0.1, 0.3] {
+            // Start 10^-6 off the normal.
+            let p = o1 + normal * along + normal.perp() * 1e-6;
+            let (c, r) = bisector_point_near(&a, &b, p, 0.3).unwrap();
+            assert!(a.defect(c, r).abs() < 1e-12 && b.defect(c, r).abs() < 1e-12, "{along}: {c:?} {r}");
+            // Within 10^-5 of the normal: |c − o0| − |c − o1| is rounding
+            // (10^-16 of the distance) that far off, about δ·φ²/2 at an
+            // angle φ from the normal, δ = |o1 − o0| = 1.2·10^-5.
+            assert!((c - o1).cross(normal).abs() < 1e-5, "{along}: {c:?}");
+        }
     }
 
     #[test]

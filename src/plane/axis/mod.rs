@@ -10,10 +10,13 @@ pub(crate) mod draw;
 pub(crate) mod json;
 
 use crate::kernel::apollonius::Site;
-use crate::kernel::bisector::{bisector_point, conic_kind, sample_between, ConicKind};
+use crate::kernel::bisector::{
+    bisector_point, bisector_point_near, conic_kind, footpoint_param, sample_along, sample_between, ConicKind,
+};
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{Disk, Point};
 use crate::shape::{Element, ElementRef, Shape2d};
+use std::f64::consts::{PI, TAU};
 
 /// A boundary primitive the medial axis is equidistant from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -123,6 +126,15 @@ pub struct MedialAxis2d {
 /// the shape's bounding-box diagonal.
 pub const MIN_RELATIVE_SAMPLE_TOLERANCE: f64 = 1e-12;
 
+/// An edge along which both footpoints move less than this fraction of its
+/// chord is evaluated from its chord ([`AxisEdge::eval`]): its disks slide
+/// along their normals, so a footpoint parameter fixes the centre badly
+/// (measured: the spoke from near the centre of a curve within 10^-3 of a
+/// circle to the curvature centre of one small arc, 0.33 long, moved both
+/// footpoints by 10^-5, and the middle footpoint parameter gave a disk at
+/// one end of it).
+const STALLED_FOOTPOINTS: f64 = 1.0 / 16.0;
+
 impl AxisEdge {
     /// The footpoint range on primitive `k` scaled to a length: a segment's
     /// parameter is a length already, an arc's angle times its radius, a
@@ -145,9 +157,12 @@ impl AxisEdge {
     /// The maximal disk at fraction `s` ∈ [0, 1] along the edge: of the
     /// footpoint range of the better-conditioned primitive, or of the
     /// segment between the nodes for a straight edge (whose footpoint
-    /// parametrisation degenerates between nearly parallel lines). Centre
-    /// and radius, model units. `None` if no disk is tangent there (never
-    /// for an edge of a valid axis).
+    /// parametrisation degenerates between nearly parallel lines), or
+    /// reached from that segment along the curve's normal where both
+    /// footpoints move less than [`STALLED_FOOTPOINTS`] of it or the
+    /// footpoint parametrisation leaves the edge. Centre and
+    /// radius, model units. `None` if no disk is tangent there (never for
+    /// an edge of a valid axis).
     pub fn eval(&self, shape: &Shape2d, nodes: &[AxisNode], s: f64) -> Option<Disk> {
         if self.kind == ConicKind::Line {
             let (a, b) = (nodes[self.from], nodes[self.to]);
@@ -157,11 +172,55 @@ impl AxisEdge {
             }
             return Some(Disk::new(c, site_distance(&self.sites[0].site(shape), c)));
         }
+        if !self.stalls(shape, nodes) {
+            if let Some(d) = self.by_footpoints(shape, nodes, s) {
+                return Some(d);
+            }
+        }
+        self.near_chord(shape, nodes, s).map(|(c, r, _)| Disk::new(c, r))
+    }
+
+    /// The disk of the footpoint parametrisation at fraction `s` of the
+    /// better-conditioned primitive's range, if its footpoint on the other
+    /// primitive lies within that one's range widened by its width on
+    /// either side: between two arcs of circles tangent within rounding
+    /// the curve is a hyperbola so thin that a middle parameter gave a
+    /// disk 5·10^5 tolerances off an edge of 2·10^3 (or none), whose other
+    /// footpoint was far out of range.
+    fn by_footpoints(&self, shape: &Shape2d, nodes: &[AxisNode], s: f64) -> Option<Disk> {
         let r_max = nodes[self.from].radius.max(nodes[self.to].radius);
         let k = self.driver(shape, r_max);
         let (u0, u1) = self.params[k];
-        bisector_point(&self.sites[k].site(shape), &self.sites[1 - k].site(shape), u0 + (u1 - u0) * s)
-            .map(|(c, r)| Disk::new(c, r))
+        let (sk, so) = (self.sites[k].site(shape), self.sites[1 - k].site(shape));
+        let (c, r) = bisector_point(&sk, &so, u0 + (u1 - u0) * s)?;
+        let (v0, v1) = self.params[1 - k];
+        let mid = 0.5 * (v0 + v1);
+        let v = match so {
+            Site::Line { .. } => footpoint_param(&so, c, r),
+            Site::Point(_) | Site::Circle { .. } => mid + (footpoint_param(&so, c, r) - mid + PI).rem_euclid(TAU) - PI,
+        };
+        let slack = 1.5 * (v1 - v0).abs() + Tolerance::point_range() * (1.0 + mid.abs());
+        ((v - mid).abs() <= slack).then(|| Disk::new(c, r))
+    }
+
+    /// Whether both footpoints move less than [`STALLED_FOOTPOINTS`] of the
+    /// chord between the nodes: the footpoint parametrisation is then ill
+    /// conditioned, and the curve close to its chord.
+    fn stalls(&self, shape: &Shape2d, nodes: &[AxisNode]) -> bool {
+        let (a, b) = (nodes[self.from], nodes[self.to]);
+        let r_max = a.radius.max(b.radius);
+        let reach = self.reach(shape, 0, r_max).max(self.reach(shape, 1, r_max));
+        reach < STALLED_FOOTPOINTS * a.point.dist(b.point)
+    }
+
+    /// The disk of the curve reached from the point at fraction `s` of the
+    /// chord between the nodes, along the curve's normal, as a sample with
+    /// parameter `s` (steps no longer than the chord).
+    fn near_chord(&self, shape: &Shape2d, nodes: &[AxisNode], s: f64) -> Option<(Point, f64, f64)> {
+        let (a, b) = (nodes[self.from], nodes[self.to]);
+        let p = a.point + (b.point - a.point) * s;
+        bisector_point_near(&self.sites[0].site(shape), &self.sites[1].site(shape), p, a.point.dist(b.point))
+            .map(|(c, r)| (c, r, s))
     }
 
     /// Samples along the edge, from its `from` node to its `to` node, as
@@ -180,6 +239,14 @@ impl AxisEdge {
         // The ends are the nodes (computed by their own, better
         // conditioned constructions); a line needs nothing in between.
         let ends = [Disk::new(a.point, a.radius), Disk::new(b.point, b.radius)];
+        let ill = || self.stalls(shape, nodes) || self.by_footpoints(shape, nodes, 0.5).is_none();
+        if self.kind != ConicKind::Line && ill() {
+            let at = |s: f64| self.near_chord(shape, nodes, s);
+            return match sample_along(at, (a.point, a.radius, 0.0), (b.point, b.radius, 1.0), tol) {
+                Some(s) => s.into_iter().map(|(c, r, _)| Disk::new(c, r)).collect(),
+                None => ends.to_vec(),
+            };
+        }
         if (u1 - u0).abs() <= Tolerance::point_range() * (1.0 + u0.abs()) || self.kind == ConicKind::Line {
             return ends.to_vec();
         }

@@ -9,7 +9,7 @@ use super::{EventKind, LocalAxis, LocalEdge, LocalNode};
 use crate::kernel::apollonius::Site;
 use crate::kernel::bisector::footpoint_param;
 use crate::plane::axis::Primitive;
-use crate::plane::medial::decompose::subshape::{BoundaryPos, ChainParts, Cut, Hugged, Piece, Subshape};
+use crate::plane::medial::decompose::subshape::{chain_hugs, BoundaryPos, ChainParts, Cut, Hugged, Piece, Subshape};
 use crate::shape::{ElementRef, Shape2d};
 
 /// The node of dividing disk `disk` (an index into `cuts`) as a port.
@@ -59,12 +59,55 @@ pub(super) fn band_axis(shape: &Shape2d, s: &Subshape, cuts: &[Cut], h: Hugged) 
 /// The axis of a [`Hugged::Cluster`] subshape: its ports joined in order
 /// of radius by straight edges (near the end of a branch the radius falls
 /// towards the end, and every disk between two of these hugs every chain
-/// as both do). Each edge names the middle elements of the chains before
-/// (longer than a point) before and after its first port's auxiliary arc
-/// as its sides. `None` when a
-/// disk cuts the subshape twice (its two ports are glued elsewhere, never
-/// joined here) or a chain cannot be named.
+/// as both do). Each edge names the middle elements of the chains (longer
+/// than a point) before and after its first port's auxiliary arc as its
+/// sides. `None` when a disk cuts the subshape twice (its two ports are
+/// glued elsewhere, never joined here) or a chain cannot be named.
 pub(super) fn cluster_axis(shape: &Shape2d, s: &Subshape, cuts: &[Cut]) -> Option<LocalAxis> {
+    let (ports, sides) = radius_path(s, cuts)?;
+    path_axis(shape, cuts, &ports, &sides)
+}
+
+/// The axis of a subshape whose ports, in order of radius, make a path of
+/// bands: each edge's two side chains (as [`cluster_axis`] names them)
+/// stay within `slack` (model units) of both its ports' circles, while
+/// other chains may stray from the far disks. Near the centre of a curve
+/// within 10^-3 of a circle, a disk reaching out to the curvature centre
+/// of one short, tighter arc (radius 0.75 against 0.995) touches the
+/// circles of the central disks from inside where that arc lies: the
+/// spoke's disks slide along one normal, every one of them touching the
+/// chains on both sides of the short arc within rounding, and the base
+/// case's branch point, on two nearly tangent circles, is not found.
+/// The axis is the straight path; `None` where an edge's sides stray,
+/// where a chain is no edge's side, or for a single port.
+pub(super) fn banded_path_axis(shape: &Shape2d, s: &Subshape, cuts: &[Cut], slack: f64) -> Option<LocalAxis> {
+    let (ports, sides) = radius_path(s, cuts)?;
+    let bands = ports.windows(2).zip(&sides).all(|(w, chains)| {
+        chains.iter().all(|&chain| w.iter().all(|&(d, _)| chain_hugs(shape, chain, cuts[d], slack)))
+    });
+    // Every chain a side of some edge: a lobe's tip cut off by one disk
+    // (no edge) holds axis of its own out to its curvature maximum.
+    let covered = s.chains().all(|c| sides.iter().any(|pair| pair.contains(&c)));
+    if bands && covered && !sides.is_empty() {
+        path_axis(shape, cuts, &ports, &sides)
+    } else {
+        None
+    }
+}
+
+/// The chains on either side of a path edge, before and after its first
+/// port's auxiliary arc.
+type Sides = [(BoundaryPos, BoundaryPos); 2];
+
+/// Ports as (disk, piece index) in order of radius, and the sides of the
+/// edges between consecutive ones.
+type RadiusPath = (Vec<(usize, usize)>, Vec<Sides>);
+
+/// The ports of `s` in order of radius, as (disk, piece index), and for
+/// each consecutive pair the chains (longer than a point) before and after
+/// the first one's auxiliary arc. `None` when a disk cuts `s` twice or a
+/// chain is missing.
+fn radius_path(s: &Subshape, cuts: &[Cut]) -> Option<RadiusPath> {
     let m = s.pieces.len();
     // The first chain longer than a point from piece `j` on, stepping by
     // `step` (1 forward, m − 1 back).
@@ -74,7 +117,6 @@ pub(super) fn cluster_axis(shape: &Shape2d, s: &Subshape, cuts: &[Cut]) -> Optio
             _ => None,
         })
     };
-    // (disk, piece index) of every auxiliary arc, by radius.
     let mut ports: Vec<(usize, usize)> = (0..m)
         .filter_map(|j| match s.pieces[j] {
             Piece::Aux { disk } => Some((disk, j)),
@@ -86,12 +128,20 @@ pub(super) fn cluster_axis(shape: &Shape2d, s: &Subshape, cuts: &[Cut]) -> Optio
     if ports.windows(2).any(|w| w[0].0 == w[1].0) {
         return None;
     }
-    let mut edges = Vec::with_capacity(ports.len() - 1);
-    for (k, w) in ports.windows(2).enumerate() {
-        let ((d0, j0), (d1, _)) = (w[0], w[1]);
-        let left = middle_element(shape, chain(j0 + m - 1, m - 1)?)?;
-        let right = middle_element(shape, chain(j0 + 1, 1)?)?;
-        edges.push(straight_edge(shape, cuts, (k, d0), (k + 1, d1), [left, right]));
+    let sides = ports[..ports.len().saturating_sub(1)]
+        .iter()
+        .map(|&(_, j0)| Some([chain(j0 + m - 1, m - 1)?, chain(j0 + 1, 1)?]))
+        .collect::<Option<Vec<Sides>>>()?;
+    Some((ports, sides))
+}
+
+/// The path through `ports` by straight edges with the middle elements of
+/// `sides` as their left and right.
+fn path_axis(shape: &Shape2d, cuts: &[Cut], ports: &[(usize, usize)], sides: &[Sides]) -> Option<LocalAxis> {
+    let mut edges = Vec::with_capacity(sides.len());
+    for (k, (w, &[before, after])) in ports.windows(2).zip(sides).enumerate() {
+        let (left, right) = (middle_element(shape, before)?, middle_element(shape, after)?);
+        edges.push(straight_edge(shape, cuts, (k, w[0].0), (k + 1, w[1].0), [left, right]));
     }
     Some(LocalAxis { nodes: ports.iter().map(|&(d, _)| port(cuts, d)).collect(), edges, aliases: Vec::new() })
 }

@@ -48,7 +48,7 @@ mod sites;
 mod walk;
 
 use events::Event;
-use hugged::{band_axis, cluster_axis, tip_axis, two_port_axis};
+use hugged::{band_axis, banded_path_axis, cluster_axis, tip_axis, two_port_axis};
 use port::Port;
 use sites::{Key, LocalSite};
 
@@ -221,11 +221,12 @@ fn solve_unaliased<K: AxisKernel>(
     // A band between two disks that both hug it is solved like any leaf,
     // and where the footpoint order (rounding there) leaves no consistent
     // walk, its axis is the straight edge between the ports, within the
-    // tolerance of the true one.
+    // tolerance of the true one; so is a path of such bands.
     walk_leaf(shape, s, cuts, tol, finder).or_else(|e| match hug {
         Some(band @ Hugged::Band(_)) => band_axis(shape, s, cuts, band).ok_or(e),
         Some(Hugged::Cluster) => cluster_axis(shape, s, cuts).ok_or(e),
-        _ => Err(e),
+        Some(Hugged::Tip(_)) => Err(e),
+        None => banded_path_axis(shape, s, cuts, tol.hugged_tip()).ok_or(e),
     })
 }
 

@@ -13,6 +13,7 @@ use crate::plane::medial::conquer::error::AxisError;
 use crate::plane::medial::conquer::locals::{LocalAxes, LocalView};
 use crate::plane::medial::conquer::merge::{merge_coinciding_branches, merge_pass_through, polish_branches};
 use crate::plane::medial::conquer::rounding::contract_rounding_cycles;
+use crate::plane::medial::conquer::self_stubs::drop_self_stubs;
 use crate::plane::medial::conquer::stray_conics::straighten_stray_conics;
 use crate::plane::medial::conquer::thin_cycles::drop_thin_cycles;
 use crate::plane::medial::decompose::subshape::Cut;
@@ -115,9 +116,10 @@ pub fn glue<K: AxisKernel>(
         |n: &AxisNode, e: &AxisEdge| e.sites.iter().all(|s| (s.distance(shape, n.point) - n.radius).abs() <= fit);
     contract_rounding_cycles(&mut axis, Tolerance::new(tol).rounding_cycle(), fits);
     drop_thin_cycles(shape, &mut axis, shape.loops().len() - 1);
+    drop_self_stubs(&mut axis, Tolerance::new(tol).rounding_cycle());
     classify(&mut axis, tol);
     polish_branches(finder.kernel(), shape, &mut axis);
-    straighten_stray_conics(shape, &mut axis, Tolerance::new(tol).rounding_cycle());
+    straighten_stray_conics(finder, &mut axis, Tolerance::new(tol).rounding_cycle(), Tolerance::new(tol).final_check());
     check_graph(&axis, shape.loops().len() - 1)?;
     Ok(axis)
 }

@@ -22,6 +22,7 @@ pub(crate) mod locals;
 pub(crate) mod merge;
 pub(crate) mod refine;
 pub(crate) mod rounding;
+pub(crate) mod self_stubs;
 pub(crate) mod stray_conics;
 pub(crate) mod thin_cycles;
 

@@ -302,17 +302,18 @@ pub fn hugged<C: CutIds + ?Sized>(shape: &Shape2d, s: &Subshape, cuts: &C, slack
     // reaches it. A reflex vertex that close is touched by the disk within
     // the tolerance (with a fan of rounding width, or the disk would have
     // cut there).
-    let hugs = aux.iter().all(|&j| {
-        let c = disk(j);
-        s.chains().all(|(from, to)| {
-            let lp = &shape.loops()[from.loop_index];
-            ChainParts::new(shape, from, to).iter().enumerate().all(|(k, (e, lo, hi))| {
-                (k == 0 || shape.joint(from.loop_index, e) != JointKind::Convex)
-                    && lp.element(e).circle_deviation(lo, hi, c.center, c.radius) <= slack
-            })
-        })
-    });
+    let hugs = aux.iter().all(|&j| s.chains().all(|chain| chain_hugs(shape, chain, disk(j), slack)));
     hugs.then_some(found)
+}
+
+/// Whether the chain `from` → `to` stays within `slack` (model units) of
+/// the circle of `disk` with no convex corner inside it.
+pub fn chain_hugs(shape: &Shape2d, (from, to): (BoundaryPos, BoundaryPos), disk: Cut, slack: f64) -> bool {
+    let lp = &shape.loops()[from.loop_index];
+    ChainParts::new(shape, from, to).iter().enumerate().all(|(k, (e, lo, hi))| {
+        (k == 0 || shape.joint(from.loop_index, e) != JointKind::Convex)
+            && lp.element(e).circle_deviation(lo, hi, disk.center, disk.radius) <= slack
+    })
 }
 
 impl Subshape {
