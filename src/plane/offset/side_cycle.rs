@@ -10,6 +10,7 @@
 //! nearest primitive after it in the loop. The order comes from the
 //! combinatorics alone: no angles at the nodes are compared.
 
+use crate::kernel::tolerance::Tolerance;
 use crate::plane::axis::{MedialAxis2d, Primitive};
 use crate::shape::{Element, Shape2d};
 
@@ -20,7 +21,9 @@ pub(crate) struct SideCycle {
     pub next: Vec<u32>,
     /// For half-edge h, `gaps[gap_start[h]..gap_start[h + 1]]` are the
     /// elements (loop, element) between h and its successor, all leaf arcs
-    /// (thesis Observation 5) whose whole arc the node's disk touches.
+    /// (thesis Observation 5) whose whole arc the node's disk touches, or
+    /// elements that stay within the final check's slack (64τ) of the
+    /// node's circle.
     gap_start: Vec<u32>,
     gaps: Vec<(u32, u32)>,
 }
@@ -66,6 +69,7 @@ impl SideCycle {
         let mut gap_start = Vec::with_capacity(halves + 1);
         let mut gaps = Vec::new();
         let mut has_pred = vec![false; halves];
+        let hug = Tolerance::new(shape.tolerance()).final_check();
         for h in 0..halves {
             gap_start.push(gaps.len() as u32);
             let (l, pos) = prim(h);
@@ -86,12 +90,18 @@ impl SideCycle {
                 return Err("two axis edge sides lead to the same successor");
             }
             next[h] = c;
+            let node = &axis.nodes[half_end(axis, h)];
             for step in 1..d {
                 let q = (pos + step) % period;
                 if q % 2 == 1 {
                     let e = q / 2;
                     match shape.loops()[l].element(e) {
                         Element::Arc(a) if a.is_ccw() => gaps.push((l as u32, e as u32)),
+                        // A stretch the node's disk hugs (a band's straight
+                        // edge names the middle element of each chain).
+                        el if el.circle_deviation(0.0, 1.0, node.point, node.radius) <= hug => {
+                            gaps.push((l as u32, e as u32))
+                        }
                         _ => return Err("a whole element is skipped that is no leaf arc"),
                     }
                 }
