@@ -2,7 +2,7 @@
 //! with their length, kind and how far each checked disk strays:
 //! `cargo run --release --features internals --example edge_probe -- SHAPE.json`.
 use medax::kernel::tolerance::Tolerance;
-use medax::plane::internals::{augment, decompose_in, glue, solve_leaves};
+use medax::plane::internals::{augment, decompose_in, final_check, glue, solve_leaves};
 use medax::plane::{AxisOptions, DiskFinder};
 
 fn main() {
@@ -18,6 +18,7 @@ fn main() {
     let tau = shape.tolerance();
     let slack = Tolerance::new(tau).final_check();
     println!("tau {tau:e}, {} nodes, {} edges", axis.nodes.len(), axis.edges.len());
+    println!("final check: {:?}", final_check(&finder, &axis));
     let deg = axis.degrees();
     for (i, e) in axis.edges.iter().enumerate() {
         let (a, b) = (&axis.nodes[e.from], &axis.nodes[e.to]);

@@ -172,7 +172,7 @@ impl AxisEdge {
             }
             return Some(Disk::new(c, site_distance(&self.sites[0].site(shape), c)));
         }
-        if !self.stalls(shape, nodes) {
+        if self.footpoint_travel(shape, nodes) >= STALLED_FOOTPOINTS {
             if let Some(d) = self.by_footpoints(shape, nodes, s) {
                 return Some(d);
             }
@@ -181,36 +181,40 @@ impl AxisEdge {
     }
 
     /// The disk of the footpoint parametrisation at fraction `s` of the
-    /// better-conditioned primitive's range, if its footpoint on the other
-    /// primitive lies within that one's range widened by its width on
-    /// either side: between two arcs of circles tangent within rounding
-    /// the curve is a hyperbola so thin that a middle parameter gave a
-    /// disk 5·10^5 tolerances off an edge of 2·10^3 (or none), whose other
-    /// footpoint was far out of range.
+    /// better-conditioned primitive's range; between two arcs or vertices,
+    /// only if its footpoint on the other primitive lies within that one's
+    /// range widened by its width on either side: between two arcs of
+    /// circles tangent within rounding the curve is a hyperbola so thin
+    /// that a middle parameter gave a disk 5·10^5 tolerances off an edge of
+    /// 4·10^3 (or none), whose other footpoint was far out of range, while
+    /// both footpoints moved a quarter of the chord to 12 times it. (A
+    /// conic with a line for a site has at most one focus and is not that
+    /// thin.)
     fn by_footpoints(&self, shape: &Shape2d, nodes: &[AxisNode], s: f64) -> Option<Disk> {
         let r_max = nodes[self.from].radius.max(nodes[self.to].radius);
         let k = self.driver(shape, r_max);
         let (u0, u1) = self.params[k];
         let (sk, so) = (self.sites[k].site(shape), self.sites[1 - k].site(shape));
         let (c, r) = bisector_point(&sk, &so, u0 + (u1 - u0) * s)?;
+        if matches!(sk, Site::Line { .. }) || matches!(so, Site::Line { .. }) {
+            return Some(Disk::new(c, r));
+        }
         let (v0, v1) = self.params[1 - k];
         let mid = 0.5 * (v0 + v1);
-        let v = match so {
-            Site::Line { .. } => footpoint_param(&so, c, r),
-            Site::Point(_) | Site::Circle { .. } => mid + (footpoint_param(&so, c, r) - mid + PI).rem_euclid(TAU) - PI,
-        };
+        let v = mid + (footpoint_param(&so, c, r) - mid + PI).rem_euclid(TAU) - PI;
         let slack = 1.5 * (v1 - v0).abs() + Tolerance::point_range() * (1.0 + mid.abs());
         ((v - mid).abs() <= slack).then(|| Disk::new(c, r))
     }
 
-    /// Whether both footpoints move less than [`STALLED_FOOTPOINTS`] of the
-    /// chord between the nodes: the footpoint parametrisation is then ill
-    /// conditioned, and the curve close to its chord.
-    fn stalls(&self, shape: &Shape2d, nodes: &[AxisNode]) -> bool {
+    /// How far the footpoints move along the edge for the chord between
+    /// its nodes: the larger footpoint range (as a length) over the chord,
+    /// infinite for a chord of length 0. Below [`STALLED_FOOTPOINTS`] the
+    /// footpoint parametrisation is ill conditioned and the curve close to
+    /// its chord.
+    fn footpoint_travel(&self, shape: &Shape2d, nodes: &[AxisNode]) -> f64 {
         let (a, b) = (nodes[self.from], nodes[self.to]);
         let r_max = a.radius.max(b.radius);
-        let reach = self.reach(shape, 0, r_max).max(self.reach(shape, 1, r_max));
-        reach < STALLED_FOOTPOINTS * a.point.dist(b.point)
+        self.reach(shape, 0, r_max).max(self.reach(shape, 1, r_max)) / a.point.dist(b.point)
     }
 
     /// The disk of the curve reached from the point at fraction `s` of the
@@ -239,7 +243,8 @@ impl AxisEdge {
         // The ends are the nodes (computed by their own, better
         // conditioned constructions); a line needs nothing in between.
         let ends = [Disk::new(a.point, a.radius), Disk::new(b.point, b.radius)];
-        let ill = || self.stalls(shape, nodes) || self.by_footpoints(shape, nodes, 0.5).is_none();
+        let travel = self.footpoint_travel(shape, nodes);
+        let ill = || travel < STALLED_FOOTPOINTS || self.by_footpoints(shape, nodes, 0.5).is_none();
         if self.kind != ConicKind::Line && ill() {
             let at = |s: f64| self.near_chord(shape, nodes, s);
             return match sample_along(at, (a.point, a.radius, 0.0), (b.point, b.radius, 1.0), tol) {

@@ -8,11 +8,16 @@
 
 use crate::plane::axis::MedialAxis2d;
 use crate::plane::medial::conquer::merge::compact;
+use rayon::prelude::*;
 
 /// Drops each edge no longer than `reach` (model units) whose two sides
 /// are the same primitive and one of whose ends has no other edge, with
 /// that end. An edge that is the whole axis stays.
 pub(crate) fn drop_self_stubs(axis: &mut MedialAxis2d, reach: f64) {
+    // Rare: look for one before counting degrees (10^6 edges).
+    if !axis.edges.par_iter().any(|e| e.sites[0] == e.sites[1]) {
+        return;
+    }
     let deg = axis.degrees();
     let nodes = &axis.nodes;
     let stub = |e: &crate::plane::axis::AxisEdge| {
