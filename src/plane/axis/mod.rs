@@ -159,7 +159,7 @@ impl AxisEdge {
     /// segment between the nodes for a straight edge (whose footpoint
     /// parametrisation degenerates between nearly parallel lines), or
     /// reached from that segment along the curve's normal where both
-    /// footpoints move less than [`STALLED_FOOTPOINTS`] of it or the
+    /// footpoints move less than 1/16 of it or the
     /// footpoint parametrisation leaves the edge. Centre and
     /// radius, model units. `None` if no disk is tangent there (never for
     /// an edge of a valid axis).
