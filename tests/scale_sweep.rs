@@ -129,7 +129,7 @@ fn nearly_circular_curves_of_a_million_arcs() {
     // spoke and two central disks, all hugging its chains); seed 9 too (a
     // hyperbola between arcs of nearly tangent circles whose middle
     // footpoint parameter gave a disk far off the edge). The oracle
-    // passed on seeds 3, 4 and 6 once (`MEDAX_SWEEP_FILES`, 10–16 min of
+    // passed on seeds 3, 4, 6 and 9 once (`MEDAX_SWEEP_FILES`, 10–16 min of
     // checking each: every disk near the centre reaches across the whole
     // grid); here the library's own final check (a tree whose node and
     // edge disks are maximal and touch their primitives) and the tree's
