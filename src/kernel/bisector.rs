@@ -145,21 +145,32 @@ pub fn bisector_point(a: &Site, b: &Site, u: f64) -> Option<(Point, f64)> {
     Some((g.center(t), t))
 }
 
-/// The radius of the disk centred `c` tangent to `s` as its kind says (a
-/// disk nested in a circle lies inside it) and its gradient in `c`; `None`
-/// at a point or circle centre, where the gradient is undefined.
+/// The radius (model units) of the disk centred `c` tangent to `s` as its
+/// kind says, a disk nested in a circle lying inside it; negative where
+/// `c` lies on the wrong side.
+pub fn site_radius(s: &Site, c: Point) -> f64 {
+    match *s {
+        Site::Point(q) => c.dist(q),
+        Site::Line { a, n } => n.dot(c - a),
+        Site::Circle { o, r, outside: true } => c.dist(o) - r,
+        Site::Circle { o, r, outside: false } => r - c.dist(o),
+    }
+}
+
+/// [`site_radius`] and its gradient in `c`; `None` at a point or circle
+/// centre, where the gradient is undefined.
 fn tangent_radius(s: &Site, c: Point) -> Option<(f64, Point)> {
     let away = |q: Point| {
         let d = c - q;
         let l = d.norm();
-        (l > 0.0).then(|| (l, d * (1.0 / l)))
+        (l > 0.0).then(|| d * (1.0 / l))
     };
-    match *s {
-        Site::Line { a, n } => Some((n.dot(c - a), n)),
-        Site::Point(q) => away(q),
-        Site::Circle { o, r, outside: true } => away(o).map(|(l, g)| (l - r, g)),
-        Site::Circle { o, r, outside: false } => away(o).map(|(l, g)| (r - l, -g)),
-    }
+    let gradient = match *s {
+        Site::Line { n, .. } => n,
+        Site::Point(q) | Site::Circle { o: q, outside: true, .. } => away(q)?,
+        Site::Circle { o, outside: false, .. } => -away(o)?,
+    };
+    Some((site_radius(s, c), gradient))
 }
 
 /// The disk nearest to tangent to both `a` and `b` reached from `p` along

@@ -11,12 +11,13 @@ pub(crate) mod json;
 
 use crate::kernel::apollonius::Site;
 use crate::kernel::bisector::{
-    bisector_point, bisector_point_near, conic_kind, footpoint_param, sample_along, sample_between, ConicKind,
+    bisector_point, bisector_point_near, conic_kind, footpoint_param, sample_along, sample_between, site_radius,
+    ConicKind,
 };
+use crate::kernel::construct::unwrap_near;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{Disk, Point};
 use crate::shape::{Element, ElementRef, Shape2d};
-use std::f64::consts::{PI, TAU};
 
 /// A boundary primitive the medial axis is equidistant from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -135,6 +136,12 @@ pub const MIN_RELATIVE_SAMPLE_TOLERANCE: f64 = 1e-12;
 /// one end of it).
 const STALLED_FOOTPOINTS: f64 = 1.0 / 16.0;
 
+/// The driver for footpoint ranges `reaches` (as lengths): the primitive
+/// whose footpoint moves furthest, ties to the first.
+fn driver_of(reaches: [f64; 2]) -> usize {
+    usize::from(reaches[1] > reaches[0] * (1.0 + Tolerance::point_range()))
+}
+
 impl AxisEdge {
     /// The footpoint range on primitive `k` scaled to a length: a segment's
     /// parameter is a length already, an arc's angle times its radius, a
@@ -151,7 +158,7 @@ impl AxisEdge {
     /// The primitive whose footpoint moves furthest along the edge: the
     /// better-conditioned parametrisation.
     pub(crate) fn driver(&self, shape: &Shape2d, r_max: f64) -> usize {
-        usize::from(self.reach(shape, 1, r_max) > self.reach(shape, 0, r_max) * (1.0 + Tolerance::point_range()))
+        driver_of([self.reach(shape, 0, r_max), self.reach(shape, 1, r_max)])
     }
 
     /// The maximal disk at fraction `s` ∈ [0, 1] along the edge: of the
@@ -170,18 +177,25 @@ impl AxisEdge {
             if self.straight {
                 return Some(Disk::new(c, a.radius + (b.radius - a.radius) * s));
             }
-            return Some(Disk::new(c, site_distance(&self.sites[0].site(shape), c)));
+            return Some(Disk::new(c, site_radius(&self.sites[0].site(shape), c)));
         }
-        if self.footpoint_travel(shape, nodes) >= STALLED_FOOTPOINTS {
-            if let Some(d) = self.by_footpoints(shape, nodes, s) {
+        let reaches = self.reaches(shape, nodes);
+        if self.footpoint_travel(nodes, reaches) >= STALLED_FOOTPOINTS {
+            if let Some(d) = self.by_footpoints(shape, s, driver_of(reaches)) {
                 return Some(d);
             }
         }
         self.near_chord(shape, nodes, s).map(|(c, r, _)| Disk::new(c, r))
     }
 
+    /// [`reach`](Self::reach) of both primitives.
+    fn reaches(&self, shape: &Shape2d, nodes: &[AxisNode]) -> [f64; 2] {
+        let r_max = nodes[self.from].radius.max(nodes[self.to].radius);
+        [self.reach(shape, 0, r_max), self.reach(shape, 1, r_max)]
+    }
+
     /// The disk of the footpoint parametrisation at fraction `s` of the
-    /// better-conditioned primitive's range; between two arcs or vertices,
+    /// range of primitive `k` (the driver); between two arcs or vertices,
     /// only if its footpoint on the other primitive lies within that one's
     /// range widened by its width on either side: between two arcs of
     /// circles tangent within rounding the curve is a hyperbola so thin
@@ -190,9 +204,7 @@ impl AxisEdge {
     /// both footpoints moved a quarter of the chord to 12 times it. (A
     /// conic with a line for a site has at most one focus and is not that
     /// thin.)
-    fn by_footpoints(&self, shape: &Shape2d, nodes: &[AxisNode], s: f64) -> Option<Disk> {
-        let r_max = nodes[self.from].radius.max(nodes[self.to].radius);
-        let k = self.driver(shape, r_max);
+    fn by_footpoints(&self, shape: &Shape2d, s: f64, k: usize) -> Option<Disk> {
         let (u0, u1) = self.params[k];
         let (sk, so) = (self.sites[k].site(shape), self.sites[1 - k].site(shape));
         let (c, r) = bisector_point(&sk, &so, u0 + (u1 - u0) * s)?;
@@ -201,20 +213,18 @@ impl AxisEdge {
         }
         let (v0, v1) = self.params[1 - k];
         let mid = 0.5 * (v0 + v1);
-        let v = mid + (footpoint_param(&so, c, r) - mid + PI).rem_euclid(TAU) - PI;
+        let v = unwrap_near(footpoint_param(&so, c, r), mid);
         let slack = 1.5 * (v1 - v0).abs() + Tolerance::point_range() * (1.0 + mid.abs());
         ((v - mid).abs() <= slack).then(|| Disk::new(c, r))
     }
 
     /// How far the footpoints move along the edge for the chord between
-    /// its nodes: the larger footpoint range (as a length) over the chord,
+    /// its nodes: the larger of `reaches` (footpoint ranges as lengths) over the chord,
     /// infinite for a chord of length 0. Below [`STALLED_FOOTPOINTS`] the
     /// footpoint parametrisation is ill conditioned and the curve close to
     /// its chord.
-    fn footpoint_travel(&self, shape: &Shape2d, nodes: &[AxisNode]) -> f64 {
-        let (a, b) = (nodes[self.from], nodes[self.to]);
-        let r_max = a.radius.max(b.radius);
-        self.reach(shape, 0, r_max).max(self.reach(shape, 1, r_max)) / a.point.dist(b.point)
+    fn footpoint_travel(&self, nodes: &[AxisNode], reaches: [f64; 2]) -> f64 {
+        reaches[0].max(reaches[1]) / nodes[self.from].point.dist(nodes[self.to].point)
     }
 
     /// The disk of the curve reached from the point at fraction `s` of the
@@ -243,8 +253,11 @@ impl AxisEdge {
         // The ends are the nodes (computed by their own, better
         // conditioned constructions); a line needs nothing in between.
         let ends = [Disk::new(a.point, a.radius), Disk::new(b.point, b.radius)];
-        let travel = self.footpoint_travel(shape, nodes);
-        let ill = || travel < STALLED_FOOTPOINTS || self.by_footpoints(shape, nodes, 0.5).is_none();
+        let reaches = self.reaches(shape, nodes);
+        let ill = || {
+            self.footpoint_travel(nodes, reaches) < STALLED_FOOTPOINTS
+                || self.by_footpoints(shape, 0.5, driver_of(reaches)).is_none()
+        };
         if self.kind != ConicKind::Line && ill() {
             let at = |s: f64| self.near_chord(shape, nodes, s);
             return match sample_along(at, (a.point, a.radius, 0.0), (b.point, b.radius, 1.0), tol) {
@@ -260,16 +273,6 @@ impl AxisEdge {
             Some(s) => s.into_iter().map(|(c, r, _)| Disk::new(c, r)).collect(),
             None => ends.to_vec(),
         }
-    }
-}
-
-/// The radius of the disk centred `c` tangent to site `s` as its kind says.
-fn site_distance(s: &Site, c: Point) -> f64 {
-    match *s {
-        Site::Point(q) => c.dist(q),
-        Site::Line { a, n } => n.dot(c - a),
-        Site::Circle { o, r, outside: true } => c.dist(o) - r,
-        Site::Circle { o, r, outside: false } => r - c.dist(o),
     }
 }
 

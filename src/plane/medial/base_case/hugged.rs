@@ -8,6 +8,7 @@
 use super::{EventKind, LocalAxis, LocalEdge, LocalNode};
 use crate::kernel::apollonius::Site;
 use crate::kernel::bisector::footpoint_param;
+use crate::kernel::construct::unwrap_near;
 use crate::plane::axis::Primitive;
 use crate::plane::medial::decompose::subshape::{chain_hugs, BoundaryPos, ChainParts, Cut, Hugged, Piece, Subshape};
 use crate::shape::{ElementRef, Shape2d};
@@ -215,9 +216,6 @@ fn middle_element(shape: &Shape2d, (from, to): (BoundaryPos, BoundaryPos)) -> Op
 fn near(site: &Site, u: f64, at: f64) -> f64 {
     match site {
         Site::Line { .. } => u,
-        Site::Point(_) | Site::Circle { .. } => {
-            let tau = std::f64::consts::TAU;
-            at + (u - at + std::f64::consts::PI).rem_euclid(tau) - std::f64::consts::PI
-        }
+        Site::Point(_) | Site::Circle { .. } => unwrap_near(u, at),
     }
 }

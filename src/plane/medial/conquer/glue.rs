@@ -18,6 +18,7 @@ use crate::plane::medial::conquer::stray_conics::straighten_stray_conics;
 use crate::plane::medial::conquer::thin_cycles::drop_thin_cycles;
 use crate::plane::medial::decompose::subshape::Cut;
 use crate::plane::medial::disk::maximal::DiskFinder;
+use crate::shape::Shape2d;
 use crate::util::fast_hash::{FastMap, FastSet};
 
 /// Glues the axes of the subshapes (`locals`) at the centres of the
@@ -30,8 +31,9 @@ pub fn glue<K: AxisKernel>(
 ) -> Result<MedialAxis2d, AxisError> {
     let shape = finder.shape();
     let tol = shape.tolerance();
-    let same_as = coinciding_cuts(cuts, &joined_ports(&locals), Tolerance::new(tol));
-    let (same_as, refused) = with_aliases(same_as, &locals.aliases, cuts, Tolerance::new(tol));
+    let t = Tolerance::new(tol);
+    let same_as = coinciding_cuts(cuts, &joined_ports(&locals), t);
+    let (same_as, refused) = with_aliases(same_as, &locals.aliases, cuts, t);
     for i in refused {
         if let Some(bridge) = locals.aliases[i].bridge.take() {
             locals.push(bridge);
@@ -107,19 +109,19 @@ pub fn glue<K: AxisKernel>(
     is_joint.resize(axis.nodes.len(), false);
     merge_pass_through(shape, &mut axis, &is_port, &is_joint);
     classify(&mut axis, tol);
-    merge_coinciding_branches(shape, &mut axis, Tolerance::new(tol));
+    merge_coinciding_branches(shape, &mut axis, t);
 
     // After the merges, which settle the edges that subshapes share, and
     // before the node kinds, which follow from the degrees.
-    let fit = Tolerance::new(tol).branch_group_fit();
+    let fit = t.branch_group_fit();
     let fits =
         |n: &AxisNode, e: &AxisEdge| e.sites.iter().all(|s| (s.distance(shape, n.point) - n.radius).abs() <= fit);
-    contract_rounding_cycles(&mut axis, Tolerance::new(tol).rounding_cycle(), fits);
+    contract_rounding_cycles(&mut axis, t.rounding_cycle(), fits);
     drop_thin_cycles(shape, &mut axis, shape.loops().len() - 1);
-    drop_self_stubs(&mut axis, Tolerance::new(tol).rounding_cycle());
+    drop_self_stubs(&mut axis, t.rounding_cycle());
     classify(&mut axis, tol);
     polish_branches(finder.kernel(), shape, &mut axis);
-    straighten_stray_conics(finder, &mut axis, Tolerance::new(tol).rounding_cycle(), Tolerance::new(tol).final_check());
+    straighten_stray_conics(finder, &mut axis, t.rounding_cycle(), t.final_check());
     check_graph(&axis, shape.loops().len() - 1)?;
     Ok(axis)
 }
@@ -226,7 +228,7 @@ fn with_aliases(mut same_as: Vec<usize>, aliases: &[Alias], cuts: &[Cut], t: Tol
 /// that fits its edges best (the least largest distance from its circle to
 /// an edge's primitive): the class's first disk can lie tens of
 /// tolerances from the disks that other leaves' edges end at.
-fn fit_class_nodes(shape: &crate::shape::Shape2d, cuts: &[Cut], axis: &mut MedialAxis2d, members: Vec<(u32, usize)>) {
+fn fit_class_nodes(shape: &Shape2d, cuts: &[Cut], axis: &mut MedialAxis2d, members: Vec<(u32, usize)>) {
     let mut of_node: FastMap<u32, Vec<usize>> = FastMap::default();
     for &(id, c) in &members {
         of_node.entry(id).or_default().push(c);

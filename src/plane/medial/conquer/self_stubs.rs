@@ -6,7 +6,7 @@
 //! a leaf arc's centre to a joint, whose offsets found no consistent order
 //! of sides at the joint).
 
-use crate::plane::axis::MedialAxis2d;
+use crate::plane::axis::{AxisEdge, MedialAxis2d};
 use crate::plane::medial::conquer::merge::compact;
 use rayon::prelude::*;
 
@@ -20,7 +20,7 @@ pub(crate) fn drop_self_stubs(axis: &mut MedialAxis2d, reach: f64) {
     }
     let deg = axis.degrees();
     let nodes = &axis.nodes;
-    let stub = |e: &crate::plane::axis::AxisEdge| {
+    let stub = |e: &AxisEdge| {
         e.sites[0] == e.sites[1]
             && (deg[e.from] == 1) != (deg[e.to] == 1)
             && nodes[e.from].point.dist(nodes[e.to].point) <= reach
@@ -41,7 +41,7 @@ mod tests {
     use super::*;
     use crate::kernel::bisector::ConicKind;
     use crate::kernel::Point;
-    use crate::plane::axis::{AxisEdge, AxisNode, NodeKind, Primitive};
+    use crate::plane::axis::{AxisNode, NodeKind, Primitive};
     use crate::shape::ElementRef;
 
     #[test]
