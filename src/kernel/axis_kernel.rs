@@ -183,6 +183,16 @@ pub trait AxisKernel: Kernel + Copy + Send + Sync + 'static {
         self.range_contact(d, d, disk.radius, tol)
     }
 
+    /// Whether every point of `piece` (whose points at `u0`, `u1` are
+    /// `ends`) lies within `tol` (model units) of `disk`'s circle: the
+    /// piece runs along the circle, as the boundary does beside a
+    /// footpoint that rounding smeared into two.
+    #[inline]
+    fn piece_hugs(&self, disk: Disk, piece: &SitePiece, ends: [Point; 2], tol: f64) -> bool {
+        let (near, far) = piece.distance_range(disk.center, ends);
+        near >= disk.radius - tol && far <= disk.radius + tol
+    }
+
     /// Where `v` points relative to the direction `n`: the side of the
     /// line perpendicular to `n` (see [`Heading`]). The directions asked
     /// about are rounded constructions (normals, vectors between

@@ -105,6 +105,33 @@ impl SitePiece {
         (beyond(ends[0]) && beyond(ends[1])).then_some(false)
     }
 
+    /// The least and greatest distance (model units) from `c` to a point
+    /// of the piece, given its points at `u0` and `u1` (`ends`), without
+    /// trigonometry: on a segment the far point is an end; on an arc the
+    /// distance runs monotonically between the direction of `c` from the
+    /// centre (nearest) and the opposite one (farthest), so each extreme
+    /// is there when the arc spans that direction and at an end otherwise.
+    /// Rounding as in [`in_sweep`](Self::in_sweep) near those directions.
+    pub fn distance_range(&self, c: Point, ends: [Point; 2]) -> (f64, f64) {
+        let (da, db) = (c.dist(ends[0]), c.dist(ends[1]));
+        let (lo, hi) = (da.min(db), da.max(db));
+        match self.site {
+            Site::Point(q) => (c.dist(q), c.dist(q)),
+            Site::Line { .. } => {
+                let (ab, ac) = (ends[1] - ends[0], c - ends[0]);
+                let len2 = ab.norm2();
+                let s = if len2 > 0.0 { (ac.dot(ab) / len2).clamp(0.0, 1.0) } else { 0.0 };
+                (c.dist(ends[0] + ab * s).min(lo), hi)
+            }
+            Site::Circle { o, r, .. } => {
+                let d = c.dist(o);
+                let near = if self.in_sweep(c, ends) { (d - r).abs() } else { lo };
+                let far = if self.in_sweep(o * 2.0 - c, ends) { d + r } else { hi };
+                (near.min(lo), far.max(hi))
+            }
+        }
+    }
+
     /// Distance (model units) from `c` to the piece, and the parameter of
     /// the piece's point nearest to it (clamped to the piece).
     pub fn distance(&self, c: Point) -> (f64, f64) {
@@ -157,5 +184,42 @@ mod tests {
         // A point's fan: the distance to the point, the parameter clamped.
         let fan = SitePiece { site: Site::Point(Point::new(0.0, 0.0)), u0: 0.0, u1: 1.0 };
         assert_eq!(fan.distance(Point::new(0.0, 2.0)), (2.0, 1.0));
+    }
+
+    #[test]
+    fn distance_ranges_bracket_dense_samples() {
+        // Oracle: the least and greatest distance over 4001 points of the
+        // piece, against the closed form, on random segments and arcs of
+        // either direction and up to almost a whole turn.
+        let mut rng = crate::util::mix::Mix(5);
+        let mut r = || 2.0 * rng.next() - 1.0;
+        for case in 0..2000 {
+            let site = if case % 2 == 0 {
+                let a = r() * std::f64::consts::PI;
+                Site::Line { a: Point::new(r(), r()), n: Point::new(a.cos(), a.sin()) }
+            } else {
+                Site::Circle { o: Point::new(r(), r()), r: 0.1 + r().abs(), outside: case % 4 == 1 }
+            };
+            let (u0, u1) = match site {
+                Site::Line { .. } => (r(), r()),
+                _ => {
+                    let u0 = 3.0 * r();
+                    (u0, u0 + 6.2 * r())
+                }
+            };
+            let piece = SitePiece { site, u0, u1 };
+            let c = Point::new(2.0 * r(), 2.0 * r());
+            let ends = [piece.point_at(u0), piece.point_at(u1)];
+            let (near, far) = piece.distance_range(c, ends);
+            let (mut lo, mut hi) = (f64::INFINITY, 0.0f64);
+            for k in 0..=4000 {
+                let d = c.dist(piece.point_at(u0 + (u1 - u0) * k as f64 / 4000.0));
+                (lo, hi) = (lo.min(d), hi.max(d));
+            }
+            // Samples never pass the extremes, and come within the spacing's
+            // sagitta-sized gap of them.
+            assert!(near <= lo + 1e-12 && hi <= far + 1e-12, "case {case}: {near} {far} vs {lo} {hi}");
+            assert!(lo - near < 1e-5 && far - hi < 1e-5, "case {case}: {near} {far} vs {lo} {hi}");
+        }
     }
 }

@@ -10,6 +10,7 @@ use crate::kernel::growing_disk::GrowingDisk;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Crossing;
 use crate::kernel::Disk;
+use crate::kernel::SitePiece;
 use crate::kernel::{AxisKernel, Contact, Point};
 use crate::plane::axis::Primitive;
 use crate::plane::medial::decompose::subshape::Cut;
@@ -358,14 +359,10 @@ impl<K: AxisKernel> Builder<'_, K> {
             // the rest of the fan is real boundary for the axis.
             return false;
         }
-        // The far end and the middle first: where the boundary leaves the
-        // circle it is farthest there, and most calls end at the first
-        // sample (the answer does not depend on the order).
-        [8, 4, 0, 2, 6, 1, 3, 5, 7].into_iter().all(|k| {
-            let w = w0 + (w1 - w0) * k as f64 / 8.0;
-            self.k().point_contact(Disk::new(c, r), self.point_of(i, self.u_at(i, w)), self.tol.hug())
-                == Contact::Touching
-        })
+        let (u0, u1) = (self.u_at(i, w0), self.u_at(i, w1));
+        let piece = SitePiece { u0, u1, ..self.piece(i) };
+        let ends = [self.point_of(i, u0), self.point_of(i, u1)];
+        self.k().piece_hugs(Disk::new(c, r), &piece, ends, self.tol.hug())
     }
 }
 
