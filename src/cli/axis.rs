@@ -1,6 +1,6 @@
 //! `medax axis`: the medial axis of a shape as JSON and/or SVG.
 
-use super::{fail, write_file, RunArgs, ShapeArgs};
+use super::{fail, write_file, write_streamed, RunArgs, ShapeArgs};
 use medax::plane::{medial_axis, AxisOptions, AxisPicture, NodeKind};
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -49,7 +49,7 @@ pub fn run(args: &AxisArgs) -> Result<(), ExitCode> {
     out!("read in {read:.3} s, axis in {took:.3} s ({} elements)", shape.element_count());
     let tol = args.run.sample_tolerance.unwrap_or(1e-4 * shape.bbox().diagonal());
     if let Some(path) = &args.json {
-        write_file(path, &axis.to_json(&shape, tol))?;
+        write_streamed(path, |w| axis.write_json(&shape, tol, w))?;
         out!("wrote {}", path.display());
     }
     if let Some(path) = &args.svg {

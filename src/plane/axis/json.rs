@@ -15,6 +15,7 @@
 use crate::kernel::bisector::ConicKind;
 use crate::plane::axis::{MedialAxis2d, NodeKind, Primitive};
 use crate::shape::Shape2d;
+use serde::Serialize;
 use serde_json::{json, Value};
 
 pub(crate) fn node_kind(k: NodeKind) -> &'static str {
@@ -57,45 +58,106 @@ pub fn site_json(shape: &Shape2d, p: Primitive) -> Value {
 /// edges as one `Value` tree took 16 GB).
 const BATCH: usize = 4096;
 
+/// A site as written: keys in sorted order, as a `Value` map writes them.
+#[derive(Serialize)]
+struct SiteOut {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    element: Option<usize>,
+    #[serde(rename = "loop")]
+    loop_index: usize,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    side: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    vertex: Option<usize>,
+}
+
+impl SiteOut {
+    fn of(shape: &Shape2d, p: Primitive) -> SiteOut {
+        match p {
+            Primitive::Element(r) => SiteOut {
+                element: Some(shape.input_element_index(r.loop_index, r.element)),
+                loop_index: r.loop_index,
+                side: shape.on_way_back(r.loop_index, r.element).then_some("back"),
+                vertex: None,
+            },
+            Primitive::Vertex { loop_index, vertex } => SiteOut {
+                element: None,
+                loop_index,
+                side: None,
+                vertex: Some(shape.input_vertex_index(loop_index, vertex)),
+            },
+        }
+    }
+}
+
+/// An edge as written (sorted keys; `straight` only where it holds: a
+/// straight segment standing for the conic across a hugged band, see
+/// `AxisEdge::straight`).
+#[derive(Serialize)]
+struct EdgeOut {
+    from: usize,
+    kind: &'static str,
+    samples: Vec<[f64; 3]>,
+    sites: [SiteOut; 2],
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    straight: bool,
+    to: usize,
+}
+
+/// A node as written (sorted keys).
+#[derive(Serialize)]
+struct NodeOut {
+    kind: &'static str,
+    r: f64,
+    x: f64,
+    y: f64,
+}
+
 impl MedialAxis2d {
     /// The axis as JSON, edges sampled to chordal tolerance `tol` (model
-    /// units). Written an edge at a time (keys in sorted order, as a
-    /// `serde_json::Value` map writes them), so memory stays about the
-    /// size of the text.
+    /// units): [`write_json`](Self::write_json) into a string.
     pub fn to_json(&self, shape: &Shape2d, tol: f64) -> String {
+        let mut out = Vec::new();
+        // Writing to a vector cannot fail, and serde_json writes UTF-8.
+        let _ = self.write_json(shape, tol, &mut out);
+        String::from_utf8(out).unwrap_or_default()
+    }
+
+    /// Writes the axis as JSON to `out`, edges sampled to chordal
+    /// tolerance `tol` (model units), an edge at a time: memory stays a
+    /// batch of samples whatever the axis's size (the text of an axis of
+    /// 10^6 arcs is about 0.75 GB). Buffer `out` (a `BufWriter` for a
+    /// file); the errors are `out`'s.
+    pub fn write_json(&self, shape: &Shape2d, tol: f64, mut out: impl std::io::Write) -> std::io::Result<()> {
         use rayon::prelude::*;
-        let mut out = String::from("{\"edges\":[");
+        out.write_all(b"{\"edges\":[")?;
         for (b, batch) in self.edges.chunks(BATCH).enumerate() {
             let samples: Vec<_> = batch.par_iter().map(|e| e.sample(shape, &self.nodes, tol)).collect();
             for (k, (e, s)) in batch.iter().zip(samples).enumerate() {
-                let mut v = json!({
-                    "from": e.from,
-                    "to": e.to,
-                    "kind": conic(e.kind),
-                    "sites": [site_json(shape, e.sites[0]), site_json(shape, e.sites[1])],
-                    "samples": s.iter().map(|d| [d.center.x, d.center.y, d.radius]).collect::<Vec<_>>(),
-                });
-                // Only where it holds: a straight segment standing for
-                // the conic across a hugged band (see `AxisEdge::straight`).
-                if e.straight {
-                    v["straight"] = Value::Bool(true);
-                }
+                let v = EdgeOut {
+                    from: e.from,
+                    kind: conic(e.kind),
+                    samples: s.iter().map(|d| [d.center.x, d.center.y, d.radius]).collect(),
+                    sites: [SiteOut::of(shape, e.sites[0]), SiteOut::of(shape, e.sites[1])],
+                    straight: e.straight,
+                    to: e.to,
+                };
                 if b + k > 0 {
-                    out.push(',');
+                    out.write_all(b",")?;
                 }
-                out.push_str(&serde_json::to_string(&v).unwrap_or_default());
+                serde_json::to_writer(&mut out, &v)?;
             }
         }
-        out.push_str("],\"nodes\":[");
+        out.write_all(b"],\"nodes\":[")?;
         for (i, n) in self.nodes.iter().enumerate() {
             if i > 0 {
-                out.push(',');
+                out.write_all(b",")?;
             }
-            let v = json!({"x": n.point.x, "y": n.point.y, "r": n.radius, "kind": node_kind(n.kind)});
-            out.push_str(&serde_json::to_string(&v).unwrap_or_default());
+            let v = NodeOut { kind: node_kind(n.kind), r: n.radius, x: n.point.x, y: n.point.y };
+            serde_json::to_writer(&mut out, &v)?;
         }
-        out.push_str("]}\n");
-        out
+        out.write_all(b"]}\n")?;
+        out.flush()
     }
 }
 
@@ -120,5 +182,9 @@ mod tests {
             assert!(v["samples"].as_array().unwrap().len() >= 2);
         }
         assert_eq!(nodes[7]["r"].as_f64(), Some(axis.nodes[7].radius));
+        // Streamed text is what a `Value` tree of the same document writes
+        // (sorted keys, shortest round-trip numbers): the format did not
+        // change when the writer stopped building the tree.
+        assert_eq!(text, crate::io::json::to_line(&doc));
     }
 }
