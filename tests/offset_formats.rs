@@ -41,7 +41,11 @@ fn offsets_json_and_dxf_read_back_exactly() {
     let offsets = Offsets::new(&shape, &OffsetOptions { outer_reach: 1.0 / 3.0, ..OffsetOptions::default() }).unwrap();
     let layers = offsets.layers(&[1.0 / 3.0, 0.7, -1.0 / 3.0, 10.0]).unwrap();
     assert!(layers[3].is_empty());
-    let doc: Value = serde_json::from_str(&offsets_to_json(&layers)).unwrap();
+    let text = offsets_to_json(&layers);
+    let doc: Value = serde_json::from_str(&text).unwrap();
+    // The streamed text is what writing the document as one `Value` gives
+    // (sorted keys, shortest round-trip numbers): the format is unchanged.
+    assert_eq!(text, serde_json::to_string(&doc).unwrap() + "\n");
     let entries = doc["offsets"].as_array().unwrap();
     assert_eq!(entries.len(), layers.len());
     for (e, layer) in entries.iter().zip(&layers) {

@@ -1,11 +1,11 @@
 //! `medax offset`: trimmed offsets at given distances, pocketing rings or
 //! V-carve paths of a shape, as JSON, DXF and/or SVG.
 
-use super::{fail, write_file, RunArgs, ShapeArgs};
+use super::{fail, write_file, write_streamed, RunArgs, ShapeArgs};
 use medax::cam::{pocket, vcarve, CamError, Pocket, PocketOptions, PocketOrder, VCarve, VCarveOptions};
 use medax::plane::offsets_to_dxf;
-use medax::plane::offsets_to_json;
 use medax::plane::offsets_to_svg;
+use medax::plane::write_offsets_json;
 use medax::plane::{medial_axis, AxisOptions, MedialAxis2d, OffsetLayer, OffsetOptions, Offsets};
 use medax::shape::Shape2d;
 use std::path::PathBuf;
@@ -98,11 +98,11 @@ enum Computed {
 }
 
 impl Computed {
-    fn json(&self) -> String {
+    fn write_json(&self, w: &mut impl std::io::Write) -> std::io::Result<()> {
         match self {
-            Computed::Offsets(layers) => offsets_to_json(layers),
-            Computed::Pocket(p) => p.to_json(),
-            Computed::VCarve(v) => v.to_json(),
+            Computed::Offsets(layers) => write_offsets_json(layers, w),
+            Computed::Pocket(p) => w.write_all(p.to_json().as_bytes()),
+            Computed::VCarve(v) => w.write_all(v.to_json().as_bytes()),
         }
     }
 
@@ -156,8 +156,12 @@ pub fn run(args: &OffsetArgs) -> Result<(), ExitCode> {
     });
     let computed = computed.map_err(|e| failed(&e))?;
     out!("computed in {:.3} s ({} elements)", t.elapsed().as_secs_f64(), shape.element_count());
-    let writers: [(&Option<PathBuf>, &dyn Fn() -> String); 3] =
-        [(&args.json, &|| computed.json()), (&args.dxf, &|| computed.dxf()), (&args.svg, &|| computed.svg(&ctx))];
+    if let Some(path) = &args.json {
+        write_streamed(path, |w| computed.write_json(w))?;
+        out!("wrote {}", path.display());
+    }
+    let writers: [(&Option<PathBuf>, &dyn Fn() -> String); 2] =
+        [(&args.dxf, &|| computed.dxf()), (&args.svg, &|| computed.svg(&ctx))];
     for (path, text) in writers {
         if let Some(path) = path {
             write_file(path, &text())?;

@@ -31,7 +31,7 @@ pub use medial::decompose::subshape::{BoundaryPos, Cut, Piece, Subshape};
 pub use medial::disk::maximal::{DiskFinder, Footpoint, MaxDisk};
 pub use offset::draw::{layer_colour, offsets_to_svg};
 pub use offset::dxf::offsets_to_dxf;
-pub use offset::json::offsets_to_json;
+pub use offset::json::{offsets_to_json, write_offsets_json};
 pub use offset::{OffsetError, OffsetLayer, OffsetLoop, OffsetOptions, OffsetRegion, Offsets};
 pub use voronoi::json::{read_sites, shape_or_sites, site_id_json};
 pub use voronoi::regions::SiteRegion;
