@@ -121,19 +121,34 @@ impl GrowingDisk {
                 }
             }
         }
+        // The first contact is the box point nearest the centre, so it lies
+        // on a side whose outer half-plane holds the centre; a disk through
+        // `p` reaching that side before anything else has `p` there too.
+        // Sides facing away from `p`, and corners between two of them,
+        // are never first.
+        let (left, right) = (p.x < min.x, p.x > max.x);
+        let (below, above) = (p.y < min.y, p.y > max.y);
         let mut best = f64::INFINITY;
-        for q in [min, Point::new(max.x, min.y), max, Point::new(min.x, max.y)] {
-            if let Some(t) = self.through_point(q) {
+        for (q, faces) in [
+            (min, left || below),
+            (Point::new(max.x, min.y), right || below),
+            (max, right || above),
+            (Point::new(min.x, max.y), left || above),
+        ] {
+            if let Some(t) = self.through_point(q).filter(|_| faces) {
                 best = best.min(t);
             }
         }
         // Sides x = const (normal ±x) and y = const (normal ±y).
-        for (x, m, lo, hi, vertical) in [
-            (min, Point::new(1.0, 0.0), min.y, max.y, true),
-            (max, Point::new(1.0, 0.0), min.y, max.y, true),
-            (min, Point::new(0.0, 1.0), min.x, max.x, false),
-            (max, Point::new(0.0, 1.0), min.x, max.x, false),
+        for (x, m, lo, hi, vertical, faces) in [
+            (min, Point::new(1.0, 0.0), min.y, max.y, true, left),
+            (max, Point::new(1.0, 0.0), min.y, max.y, true, right),
+            (min, Point::new(0.0, 1.0), min.x, max.x, false, below),
+            (max, Point::new(0.0, 1.0), min.x, max.x, false, above),
         ] {
+            if !faces {
+                continue;
+            }
             for (t, foot) in self.tangent_to_line(x, m) {
                 let along = if vertical { foot.y } else { foot.x };
                 if lo <= along && along <= hi {
