@@ -40,25 +40,32 @@ pub(crate) fn check_disks<K: AxisKernel>(finder: &DiskFinder<K>, axis: &MedialAx
     let shape = finder.shape();
     let slack = Tolerance::new(shape.tolerance()).final_check();
     let k = finder.kernel();
-    // Empty; that the disk touches the boundary follows from touching
-    // the primitives of its edges (checked below), and for a node without
-    // edges (a circle's centre) from its nearest element.
-    let bad = |c: Point, r: f64| finder.intruder(c, r, slack).is_some();
     let deg = axis.degrees();
-    let untouched = |v: usize| {
+    // Every node's emptiness is checked in the walk of one of its edges
+    // (the first), beside that edge's middle disk: the three disks touch
+    // the boundary at the same places, so one walk of the index serves
+    // them (the walks are most of the check's cost).
+    let mut owner = vec![usize::MAX; axis.nodes.len()];
+    for (i, e) in axis.edges.iter().enumerate() {
+        for v in [e.from, e.to] {
+            if owner[v] == usize::MAX {
+                owner[v] = i;
+            }
+        }
+    }
+    // A node without edges (a circle's centre): empty, and touching the
+    // boundary at its nearest element.
+    let lone = |v: usize| {
         let n = &axis.nodes[v];
-        deg[v] == 0
-            && finder.nearest(n.point).is_none_or(|(near, _)| {
+        finder.intruder(n.point, n.radius, slack).is_some()
+            || finder.nearest(n.point).is_none_or(|(near, _)| {
                 let e = shape.loops()[near.loop_index].element(near.element);
                 k.element_contact(Disk::new(n.point, n.radius), &e, slack) != Contact::Touching
             })
     };
-    if let Some(n) = (0..axis.nodes.len())
-        .into_par_iter()
-        .find_any(|&v| bad(axis.nodes[v].point, axis.nodes[v].radius) || untouched(v))
-        .map(|v| &axis.nodes[v])
+    if let Some(n) = (0..axis.nodes.len()).into_par_iter().find_any(|&v| deg[v] == 0 && lone(v)).map(|v| &axis.nodes[v])
     {
-        return Err(AxisError::Numerical(n.point, "a node's disk is not maximal"));
+        return Err(AxisError::Numerical(n.point, NODE_NOT_MAXIMAL));
     }
     // Every disk of an edge, its end nodes' included, touches both of the
     // edge's primitives (a node placed where only two of a branch's three
@@ -83,18 +90,38 @@ pub(crate) fn check_disks<K: AxisKernel>(finder: &DiskFinder<K>, axis: &MedialAx
     if let Some(p) = astray {
         return Err(AxisError::Numerical(p, "a node's disk misses a primitive of its edge"));
     }
-    let wrong = axis.edges.par_iter().find_map_any(|e| {
-        EDGE_CHECKS.iter().find_map(|&s| match e.eval(shape, &axis.nodes, s) {
-            Some(d) if !(apart(e, d.center, d.radius) || s == EMPTY_CHECK && bad(d.center, d.radius)) => None,
-            Some(d) => Some(d.center),
-            None => Some(axis.nodes[e.from].point),
+    let wrong = axis.edges.par_iter().enumerate().find_map_any(|(i, e)| {
+        let mut middle = None;
+        for s in EDGE_CHECKS {
+            match e.eval(shape, &axis.nodes, s) {
+                Some(d) if apart(e, d.center, d.radius) => return Some((d.center, EDGE_NOT_MAXIMAL)),
+                Some(d) if s == EMPTY_CHECK => middle = Some(d),
+                Some(_) => {}
+                None => return Some((axis.nodes[e.from].point, EDGE_NOT_MAXIMAL)),
+            }
+        }
+        let middle = middle?;
+        let mut disks = [(middle.center, middle.radius); 3];
+        let mut count = 1;
+        for v in [e.from, e.to] {
+            if owner[v] == i && (v == e.from || e.to != e.from) {
+                disks[count] = (axis.nodes[v].point, axis.nodes[v].radius);
+                count += 1;
+            }
+        }
+        finder.any_intruder(&disks[..count], slack).map(|(d, _, _)| match d {
+            0 => (middle.center, EDGE_NOT_MAXIMAL),
+            _ => (disks[d].0, NODE_NOT_MAXIMAL),
         })
     });
     match wrong {
-        Some(p) => Err(AxisError::Numerical(p, "an edge's disks are not maximal")),
+        Some((p, what)) => Err(AxisError::Numerical(p, what)),
         None => Ok(()),
     }
 }
+
+const NODE_NOT_MAXIMAL: &str = "a node's disk is not maximal";
+const EDGE_NOT_MAXIMAL: &str = "an edge's disks are not maximal";
 
 /// The representative of `x` in a union-find forest (with path halving).
 pub(crate) fn root(parent: &mut [usize], mut x: usize) -> usize {
@@ -177,4 +204,48 @@ pub(crate) fn drop_repeats(edges: &mut Vec<AxisEdge>, maybe: &[bool]) {
         i += 1;
         !maybe[i - 1] || seen.insert(undirected(e))
     });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::plane::medial::conquer::{medial_axis, AxisOptions};
+    use crate::shape::{samples, ElementRef, ShapeOptions};
+
+    /// The check refuses an axis that is wrong in any of the ways a
+    /// numerical breakdown makes it wrong, on nodes chosen all along it.
+    #[test]
+    fn the_check_refuses_moved_nodes_grown_disks_and_wrong_sites() {
+        for loops in [samples::flower_arcs(400), samples::star_polygon(300, 3)] {
+            let shape = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).unwrap();
+            let finder = DiskFinder::new(&shape);
+            let axis = medial_axis(&shape, &AxisOptions::default()).unwrap();
+            assert_eq!(check_disks(&finder, &axis), Ok(()));
+            let step = shape.bbox().diagonal() * 1e-3;
+            let deg = axis.degrees();
+            let mut tried = 0;
+            for v in (0..axis.nodes.len()).step_by(37).filter(|&v| axis.nodes[v].radius > 10.0 * step && deg[v] > 0) {
+                // A node moved off the axis, along either coordinate.
+                for d in [Point::new(step, 0.0), Point::new(0.0, -step)] {
+                    let mut moved = axis.clone();
+                    moved.nodes[v].point = moved.nodes[v].point + d;
+                    assert!(check_disks(&finder, &moved).is_err(), "node {v} moved by {d:?}");
+                }
+                // A node's disk grown past the boundary.
+                let mut grown = axis.clone();
+                grown.nodes[v].radius += step;
+                assert!(check_disks(&finder, &grown).is_err(), "node {v} grown");
+                tried += 1;
+            }
+            assert!(tried >= 5, "{tried} nodes tried");
+            // An edge given a primitive from across the shape.
+            for i in (0..axis.edges.len()).step_by(41) {
+                let mut wrong = axis.clone();
+                let Primitive::Element(er) = wrong.edges[i].sites[0] else { continue };
+                let n = shape.loops()[er.loop_index].len();
+                wrong.edges[i].sites[0] = Primitive::Element(ElementRef { element: (er.element + n / 2) % n, ..er });
+                assert!(check_disks(&finder, &wrong).is_err(), "edge {i} with a far site");
+            }
+        }
+    }
 }

@@ -109,6 +109,19 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
         })
     }
 
+    /// [`intruder`](Self::intruder) for up to 32 disks (centre, radius)
+    /// in one walk of the index: the index of a disk some element reaches
+    /// into by more than `tol`, with the element and its distance.
+    pub fn any_intruder(&self, disks: &[(Point, f64)], tol: f64) -> Option<(usize, ElementRef, f64)> {
+        let mut shrunk = [(Point::default(), 0.0); 32];
+        for (s, &(c, r)) in shrunk.iter_mut().zip(disks) {
+            *s = (c, r - tol);
+        }
+        self.chains.any_closer_than(self.shape.loops(), &shrunk[..disks.len().min(32)], |k, e| {
+            self.kernel.element_contact(Disk::new(disks[k].0, disks[k].1), e, tol) == Contact::Overlapping
+        })
+    }
+
     /// Where the circle (`c`, `r`) of an empty disk touches the boundary:
     /// every element within the contact tolerance of it, at its point
     /// nearest to `c`, merged where elements meet; in loop and element order.

@@ -384,6 +384,57 @@ impl ChainTree {
         None
     }
 
+    /// [`closer_than`](Self::closer_than) for up to 32 disks at once
+    /// (centre, radius `d`): the index of a disk with an accepted element
+    /// closer to its centre than its `d`, with the element and distance;
+    /// `None` when every disk is empty. One walk down the tree serves
+    /// disks that lie close together (a node's disk and the disks of its
+    /// edges, which touch the boundary at the same places): a run is
+    /// opened while any disk may reach it, and tested against those only.
+    pub fn any_closer_than(
+        &self,
+        loops: &[Loop],
+        disks: &[(Point, f64)],
+        accept: impl Fn(usize, &Element) -> bool,
+    ) -> Option<(usize, ElementRef, f64)> {
+        debug_assert!(disks.len() <= 32);
+        let reaching = |n: &Node, mask: u32| {
+            (0..disks.len())
+                .filter(|&k| mask & (1 << k) != 0 && n.bound_below(disks[k].0, disks[k].1).is_some())
+                .fold(0u32, |m, k| m | (1 << k))
+        };
+        let all = if disks.len() >= 32 { u32::MAX } else { (1u32 << disks.len()) - 1 };
+        let mut stack: Vec<(u32, u32)> = Vec::with_capacity(64);
+        for &r in self.roots.iter().rev() {
+            let m = reaching(&self.nodes[r as usize], all);
+            if m != 0 {
+                stack.push((r, m));
+            }
+        }
+        while let Some((id, mask)) = stack.pop() {
+            let n = &self.nodes[id as usize];
+            if n.left == u32::MAX {
+                for r in n.elements() {
+                    let element = loops[r.loop_index].element(r.element);
+                    for k in (0..disks.len()).filter(|&k| mask & (1 << k) != 0) {
+                        let e = element.closest_point(disks[k].0).0;
+                        if e < disks[k].1 && accept(k, &element) {
+                            return Some((k, r, e));
+                        }
+                    }
+                }
+            } else {
+                for c in [n.right, n.left] {
+                    let m = reaching(&self.nodes[c as usize], mask);
+                    if m != 0 {
+                        stack.push((c, m));
+                    }
+                }
+            }
+        }
+        None
+    }
+
     /// Calls `visit` on every element that may come closer to `p` than
     /// `d` (a superset: whole leaf runs whose bound is below `d`), in loop
     /// and element order within a run and runs in tree order. The disk's
@@ -462,127 +513,4 @@ impl ChainTree {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::shape::{samples, Shape2d, ShapeOptions};
-
-    #[test]
-    fn a_node_is_as_large_as_documented() {
-        assert_eq!(std::mem::size_of::<Node>(), 144);
-    }
-
-    #[test]
-    fn first_contacts_agree_with_a_scan() {
-        // Key: the radius at which the growing disk reaches an element's
-        // start point, which lies in every box that holds the element.
-        let mut rng = crate::util::mix::Mix(11);
-        for (s, t) in fixtures() {
-            let lp = &s.loops()[0];
-            for _ in 0..300 {
-                let e = lp.element((rng.next() * lp.len() as f64) as usize % lp.len());
-                let p = e.point_at(0.5);
-                let a = 2.0 * std::f64::consts::PI * rng.next();
-                let g = GrowingDisk { p, n: Point::new(a.cos(), a.sin()) };
-                let key = |r: ElementRef| g.through_point(lp.element(r.element).start()).filter(|&k| k > 1e-9);
-                let slack = 1e-3;
-                let got = t.first_contacts(&g, slack, key);
-                let mut scan: Vec<(ElementRef, f64)> = (0..lp.len())
-                    .filter_map(|i| {
-                        let r = ElementRef { loop_index: 0, element: i };
-                        key(r).map(|k| (r, k))
-                    })
-                    .collect();
-                let least = scan.iter().map(|x| x.1).fold(f64::INFINITY, f64::min);
-                scan.retain(|x| x.1 <= least + slack);
-                scan.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
-                assert_eq!(got, scan, "{p:?} {a}");
-            }
-        }
-    }
-
-    /// The test shapes (smooth arcs, spikes) with their trees.
-    fn fixtures() -> Vec<(Shape2d, ChainTree)> {
-        [samples::flower_arcs(500), samples::star_polygon(300, 2)]
-            .into_iter()
-            .map(|loops| {
-                let s = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).unwrap();
-                let t = ChainTree::new(s.loops());
-                (s, t)
-            })
-            .collect()
-    }
-
-    /// A random point in the shape's box and its distance to the boundary, by a scan.
-    fn probe(s: &Shape2d, rng: &mut crate::util::mix::Mix) -> (Point, f64) {
-        let bb = s.bbox();
-        let p = Point::new(bb.min.x + rng.next() * bb.width(), bb.min.y + rng.next() * bb.height());
-        (p, s.loops()[0].elements().map(|e| e.closest_point(p).0).fold(f64::INFINITY, f64::min))
-    }
-
-    #[test]
-    fn closer_than_agrees_with_a_scan() {
-        let mut rng = crate::util::mix::Mix(9);
-        for (s, t) in fixtures() {
-            let (mut hits, mut misses) = (0, 0);
-            for _ in 0..2000 {
-                let (p, scan) = probe(&s, &mut rng);
-                // Radii just around the true distance, where pruning matters.
-                let d = scan * (0.98 + 0.04 * rng.next());
-                // Rejecting elements nearer than 0.99 d: only those between
-                // count, and the search must go on past the others.
-                let inner = 0.99 * d;
-                let ring = s.loops()[0].elements().any(|e| (inner..d).contains(&e.closest_point(p).0));
-                let found = t.closer_than(s.loops(), p, d, |e| e.closest_point(p).0 >= inner);
-                assert_eq!(found.is_some(), ring, "{p:?} {d}");
-                match t.closer_than(s.loops(), p, d, |_| true) {
-                    Some((r, e)) => {
-                        assert!(scan < d && e < d, "{p:?} {d}");
-                        assert_eq!(e, s.loops()[0].element(r.element).closest_point(p).0);
-                        hits += 1;
-                    }
-                    None => {
-                        assert!(scan >= d, "{p:?} {d}: missed an element at {scan}");
-                        misses += 1;
-                    }
-                }
-            }
-            assert!(hits > 100 && misses > 100, "{hits} {misses}");
-        }
-    }
-
-    #[test]
-    fn visit_within_sees_every_element_a_scan_finds() {
-        let mut rng = crate::util::mix::Mix(5);
-        for (s, t) in fixtures() {
-            let mut seen = vec![false; s.loops()[0].len()];
-            for _ in 0..500 {
-                let (p, scan) = probe(&s, &mut rng);
-                let d = scan * (1.0 + 0.2 * rng.next());
-                seen.fill(false);
-                let mut visits = 0;
-                t.visit_within(p, d, |r| {
-                    seen[r.element] = true;
-                    visits += 1;
-                });
-                assert!(visits < s.loops()[0].len() || d > 0.1, "{p:?} {d}: no pruning");
-                for (i, e) in s.loops()[0].elements().enumerate() {
-                    if e.closest_point(p).0 < d {
-                        assert!(seen[i], "{p:?} {d}: element {i} missed");
-                    }
-                }
-            }
-        }
-    }
-
-    #[test]
-    fn nearest_agrees_with_a_scan() {
-        let mut rng = crate::util::mix::Mix(7);
-        for (s, t) in fixtures() {
-            for _ in 0..500 {
-                let (p, scan) = probe(&s, &mut rng);
-                let (_, d) = t.nearest(s.loops(), p).unwrap();
-                assert_eq!(d, scan, "{p:?}");
-            }
-        }
-    }
-}
+mod tests;
