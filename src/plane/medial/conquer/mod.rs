@@ -32,7 +32,7 @@ pub use refine::solve_leaves;
 
 use crate::kernel::{AxisKernel, FilteredKernel, Point};
 use crate::plane::axis::MedialAxis2d;
-use crate::plane::medial::conquer::check::{check_corners, check_disks};
+use crate::plane::medial::conquer::check::{check_corners, check_coverage, check_disks};
 use crate::plane::medial::decompose::augment::augment;
 use crate::plane::medial::decompose::divide::{decompose_in, decompose_plain_in};
 use crate::plane::medial::disk::maximal::DiskFinder;
@@ -127,11 +127,15 @@ pub fn medial_axis_with<K: AxisKernel>(
 }
 
 /// The checks an assembled axis passes before [`medial_axis`] returns it:
-/// one corner node at each convex vertex, then every node's and edge
-/// sample's disk touching its primitives and holding no boundary (within
+/// one corner node at each convex vertex, every boundary element a
+/// primitive of an edge or on the circle of a node beside it, then every
+/// node's and edge sample's disk touching its primitives and holding no
+/// boundary (within
 /// [`Tolerance::final_check`](crate::kernel::tolerance::Tolerance::final_check)).
 pub fn final_check<K: AxisKernel>(finder: &DiskFinder<K>, axis: &MedialAxis2d) -> Result<(), AxisError> {
-    check_corners(finder.shape(), axis).and_then(|_| check_disks(finder, axis))
+    check_corners(finder.shape(), axis)
+        .and_then(|_| check_coverage(finder.shape(), axis))
+        .and_then(|_| check_disks(finder, axis))
 }
 
 /// Decompositions tried before a numerical breakdown is reported.
