@@ -315,6 +315,27 @@ fn a_u_shaped_site_has_self_edges_that_the_switch_drops() {
 }
 
 #[test]
+fn the_streamed_json_is_the_document_a_value_tree_writes() {
+    // Regions, an open curve (whose way back carries "side": "back") and
+    // points: every kind of site and edge the format has.
+    let u = poly(&[(0.0, 0.0), (3.0, 0.0), (3.0, 3.0), (2.0, 3.0), (2.0, 1.0), (1.0, 1.0), (1.0, 3.0), (0.0, 3.0)]);
+    let v = |x: f64, y: f64, bulge: f64| Vertex { p: Point::new(x, y), bulge };
+    let sites = Sites {
+        regions: vec![u, circle(6.0, 1.5, 0.5)],
+        curves: vec![vec![v(0.0, 5.0, 0.3), v(2.0, 5.5, 0.0), v(4.0, 5.0, 0.0)]],
+        points: vec![Point::new(5.0, 4.0), Point::new(-1.0, 2.0)],
+    };
+    let vd = vd_of(&sites);
+    for self_edges in [true, false] {
+        let text = vd.to_json(1e-3, self_edges);
+        let doc: serde_json::Value = serde_json::from_str(&text).unwrap();
+        assert_eq!(text, serde_json::to_string(&doc).unwrap() + "\n");
+        assert!(text.contains("\"side\":\"back\"") && text.contains("\"curve\":0") && text.contains("\"point\":1"));
+        assert_eq!(doc["edges"].as_array().unwrap().len(), vd.diagram_edges(self_edges).len());
+    }
+}
+
+#[test]
 fn a_site_in_the_mouth_of_a_u_joins_its_boundary_through_self_edges() {
     // The disc's region is enclosed by the U's; the U's boundary has an
     // outer and an inner part, joined only through the self-edge in the

@@ -1,6 +1,6 @@
 //! `medax voronoi`: the Voronoi diagram of sites as JSON and/or SVG.
 
-use super::{write_file, RunArgs};
+use super::{write_file, write_streamed, RunArgs};
 use medax::plane::read_sites;
 use medax::plane::AxisOptions;
 use medax::plane::{voronoi, VoronoiOptions};
@@ -74,7 +74,7 @@ pub fn run(args: &VoronoiArgs) -> Result<(), ExitCode> {
         .diagonal();
     let tol = args.run.sample_tolerance.unwrap_or(1e-4 * site_diag);
     if let Some(path) = &args.json {
-        write_file(path, &vd.to_json(tol, !args.no_self_edges))?;
+        write_streamed(path, |w| vd.write_json(tol, !args.no_self_edges, w))?;
         out!("wrote {}", path.display());
     }
     if let Some(path) = &args.svg {

@@ -56,11 +56,11 @@ pub fn site_json(shape: &Shape2d, p: Primitive) -> Value {
 /// Edges sampled and written per batch of this many: the samples of one
 /// batch are all that is held besides the output (a whole axis of 10^6
 /// edges as one `Value` tree took 16 GB).
-const BATCH: usize = 4096;
+pub(crate) const BATCH: usize = 4096;
 
 /// A site as written: keys in sorted order, as a `Value` map writes them.
 #[derive(Serialize)]
-struct SiteOut {
+pub(crate) struct SiteOut {
     #[serde(skip_serializing_if = "Option::is_none")]
     element: Option<usize>,
     #[serde(rename = "loop")]
@@ -72,7 +72,7 @@ struct SiteOut {
 }
 
 impl SiteOut {
-    fn of(shape: &Shape2d, p: Primitive) -> SiteOut {
+    pub(crate) fn of(shape: &Shape2d, p: Primitive) -> SiteOut {
         match p {
             Primitive::Element(r) => SiteOut {
                 element: Some(shape.input_element_index(r.loop_index, r.element)),
