@@ -101,7 +101,10 @@ fn pocket_json_and_dxf_read_back_exactly() {
     let offsets = Offsets::new(&plate(), &OffsetOptions::default()).unwrap();
     let p = pocket(&offsets, &PocketOptions::new(0.2, 0.3)).unwrap();
     assert!(p.rings.len() >= 3);
-    let doc: Value = serde_json::from_str(&p.to_json()).unwrap();
+    let text = p.to_json();
+    let doc: Value = serde_json::from_str(&text).unwrap();
+    // Streamed, it is the text a `Value` tree writes: the format is unchanged.
+    assert_eq!(text, serde_json::to_string(&doc).unwrap() + "\n");
     let rings = doc["rings"].as_array().unwrap();
     assert_eq!(rings.len(), p.rings.len());
     for (r, want) in rings.iter().zip(&p.rings) {
@@ -138,7 +141,9 @@ fn vcarve_json_and_dxf_carry_depths_exactly() {
     let opts = VCarveOptions { angle_deg: 60.0, max_depth: 0.4, tolerance: 0.0 };
     let v = vcarve(&shape, &axis, &opts).unwrap();
     assert!(!v.paths.is_empty() && !v.flat.is_empty());
-    let doc: Value = serde_json::from_str(&v.to_json()).unwrap();
+    let text = v.to_json();
+    let doc: Value = serde_json::from_str(&text).unwrap();
+    assert_eq!(text, serde_json::to_string(&doc).unwrap() + "\n");
     assert_eq!(doc["max_depth"].as_f64(), Some(0.4));
     assert_eq!(doc["flat_radius"].as_f64(), Some(v.flat_radius()));
     let paths: Vec<Vec<[f64; 3]>> = serde_json::from_value(doc["paths"].clone()).unwrap();
@@ -148,7 +153,9 @@ fn vcarve_json_and_dxf_carry_depths_exactly() {
     // Without a cap, max_depth is null.
     let uncapped = VCarveOptions { max_depth: f64::INFINITY, ..opts };
     let free = vcarve(&shape, &axis, &uncapped).unwrap();
-    let doc: Value = serde_json::from_str(&free.to_json()).unwrap();
+    let text = free.to_json();
+    let doc: Value = serde_json::from_str(&text).unwrap();
+    assert_eq!(text, serde_json::to_string(&doc).unwrap() + "\n");
     assert!(doc["max_depth"].is_null());
     // DXF: a 3D polyline per path at z = -depth (the 2D reader skips them),
     // the flat rings as closed LWPOLYLINEs at elevation -max_depth.

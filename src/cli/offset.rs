@@ -101,8 +101,8 @@ impl Computed {
     fn write_json(&self, w: &mut impl std::io::Write) -> std::io::Result<()> {
         match self {
             Computed::Offsets(layers) => write_offsets_json(layers, w),
-            Computed::Pocket(p) => w.write_all(p.to_json().as_bytes()),
-            Computed::VCarve(v) => w.write_all(v.to_json().as_bytes()),
+            Computed::Pocket(p) => p.write_json(w),
+            Computed::VCarve(v) => v.write_json(w),
         }
     }
 

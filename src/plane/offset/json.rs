@@ -61,7 +61,7 @@ struct DocOut<'a> {
 }
 
 #[derive(Serialize)]
-struct LayerOut<'a> {
+pub(crate) struct LayerOut<'a> {
     area: f64,
     distance: f64,
     loops: Vec<LoopOut<'a>>,
@@ -69,7 +69,7 @@ struct LayerOut<'a> {
 }
 
 impl<'a> LayerOut<'a> {
-    fn of(l: &'a OffsetLayer) -> LayerOut<'a> {
+    pub(crate) fn of(l: &'a OffsetLayer) -> LayerOut<'a> {
         LayerOut {
             area: l.area(),
             distance: l.distance,
@@ -86,7 +86,7 @@ struct RegionOut<'a> {
 }
 
 /// A loop as `[[x, y, bulge], ..]`, written vertex by vertex.
-struct LoopOut<'a>(&'a [Vertex]);
+pub(crate) struct LoopOut<'a>(pub(crate) &'a [Vertex]);
 
 impl Serialize for LoopOut<'_> {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
