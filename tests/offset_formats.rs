@@ -49,6 +49,7 @@ fn offsets_json_and_dxf_read_back_exactly() {
     let entries = doc["offsets"].as_array().unwrap();
     assert_eq!(entries.len(), layers.len());
     for (e, layer) in entries.iter().zip(&layers) {
+        assert_eq!(*e, layer.to_json_value());
         assert_eq!(e["distance"].as_f64(), Some(layer.distance));
         assert_eq!(e["area"].as_f64(), Some(layer.area()));
         let loops: Vec<Vec<[f64; 3]>> = layer.loops.iter().map(|l| triples(&l.vertices)).collect();

@@ -20,6 +20,7 @@
 
 use super::pocket::{Pocket, UncutKind};
 use super::vcarve::VCarve;
+use crate::io::json::written;
 use crate::plane::offset::json::{LayerOut, LoopOut};
 use serde::Serialize;
 
@@ -59,18 +60,10 @@ struct VCarveOut<'a> {
     paths: Vec<&'a [[f64; 3]]>,
 }
 
-/// `write` into a string (writing to a vector cannot fail, and serde_json
-/// writes UTF-8).
-fn to_string(write: impl FnOnce(&mut Vec<u8>) -> std::io::Result<()>) -> String {
-    let mut out = Vec::new();
-    let _ = write(&mut out);
-    String::from_utf8(out).unwrap_or_default()
-}
-
 impl Pocket {
     /// The pocket as JSON (see the module docs).
     pub fn to_json(&self) -> String {
-        to_string(|w| self.write_json(w))
+        written(|w| self.write_json(w))
     }
 
     /// Writes the pocket as JSON (see the module docs) to `out`, straight
@@ -114,7 +107,7 @@ impl Pocket {
 impl VCarve {
     /// The V-carve paths as JSON (see the module docs).
     pub fn to_json(&self) -> String {
-        to_string(|w| self.write_json(w))
+        written(|w| self.write_json(w))
     }
 
     /// Writes the V-carve paths as JSON (see the module docs) to `out`,

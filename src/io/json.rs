@@ -165,6 +165,14 @@ pub fn loops_json<V: Copy + Into<RawVertex>>(loops: impl IntoIterator<Item = imp
     loops.into_iter().map(|l| l.as_ref().iter().map(|&v| triple(v)).collect::<Vec<_>>()).collect()
 }
 
+/// What `write` writes, as a string: the `to_json` of a streaming JSON
+/// writer (writing to a vector cannot fail, and serde_json writes UTF-8).
+pub(crate) fn written(write: impl FnOnce(&mut Vec<u8>) -> std::io::Result<()>) -> String {
+    let mut out = Vec::new();
+    let _ = write(&mut out);
+    String::from_utf8(out).unwrap_or_default()
+}
+
 /// A JSON document on one line, ending with a newline.
 pub fn to_line(doc: &Value) -> String {
     let mut out = serde_json::to_string(doc).unwrap_or_default();

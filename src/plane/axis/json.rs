@@ -12,11 +12,12 @@
 //! end at the nodes, and deviate from the true edge by at most the
 //! tolerance passed to [`MedialAxis2d::to_json`].
 
+use crate::io::json::written;
 use crate::kernel::bisector::ConicKind;
 use crate::plane::axis::{MedialAxis2d, NodeKind, Primitive};
 use crate::shape::Shape2d;
 use serde::Serialize;
-use serde_json::{json, Value};
+use serde_json::Value;
 
 pub(crate) fn node_kind(k: NodeKind) -> &'static str {
     match k {
@@ -36,21 +37,10 @@ pub(crate) fn conic(k: ConicKind) -> &'static str {
     }
 }
 
-/// A site in the caller's numbering.
+/// A site in the caller's numbering (the `sites` entries of the axis
+/// JSON, as a value).
 pub fn site_json(shape: &Shape2d, p: Primitive) -> Value {
-    match p {
-        Primitive::Element(r) => {
-            let e = shape.input_element_index(r.loop_index, r.element);
-            if shape.on_way_back(r.loop_index, r.element) {
-                json!({"loop": r.loop_index, "element": e, "side": "back"})
-            } else {
-                json!({"loop": r.loop_index, "element": e})
-            }
-        }
-        Primitive::Vertex { loop_index, vertex } => {
-            json!({"loop": loop_index, "vertex": shape.input_vertex_index(loop_index, vertex)})
-        }
-    }
+    serde_json::to_value(SiteOut::of(shape, p)).unwrap_or(Value::Null)
 }
 
 /// Edges sampled and written per batch of this many: the samples of one
@@ -117,10 +107,7 @@ impl MedialAxis2d {
     /// The axis as JSON, edges sampled to chordal tolerance `tol` (model
     /// units): [`write_json`](Self::write_json) into a string.
     pub fn to_json(&self, shape: &Shape2d, tol: f64) -> String {
-        let mut out = Vec::new();
-        // Writing to a vector cannot fail, and serde_json writes UTF-8.
-        let _ = self.write_json(shape, tol, &mut out);
-        String::from_utf8(out).unwrap_or_default()
+        written(|w| self.write_json(shape, tol, w))
     }
 
     /// Writes the axis as JSON to `out`, edges sampled to chordal

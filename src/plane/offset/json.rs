@@ -14,32 +14,23 @@
 //! of the offset region is an outer loop and its holes. Numbers are written
 //! in shortest round-trip form: reading them back gives the same `f64`s.
 
-use crate::io::json::loops_json;
+use crate::io::json::written;
 use crate::plane::offset::layer::OffsetLayer;
 use crate::shape::Vertex;
 use serde::Serialize;
-use serde_json::{json, Value};
+use serde_json::Value;
 
 impl OffsetLayer {
     /// This layer as one entry of the `offsets` array (see the module docs).
     pub fn to_json_value(&self) -> Value {
-        let regions: Vec<Value> = self.regions.iter().map(|r| json!({"outer": r.outer, "holes": r.holes})).collect();
-        json!({
-            "distance": self.distance,
-            "area": self.area(),
-            "loops": loops_json(&self.loops),
-            "regions": regions,
-        })
+        serde_json::to_value(LayerOut::of(self)).unwrap_or(Value::Null)
     }
 }
 
 /// The layers as offsets JSON (see the module docs), one line:
 /// [`write_offsets_json`] into a string.
 pub fn offsets_to_json(layers: &[OffsetLayer]) -> String {
-    let mut out = Vec::new();
-    // Writing to a vector cannot fail, and serde_json writes UTF-8.
-    let _ = write_offsets_json(layers, &mut out);
-    String::from_utf8(out).unwrap_or_default()
+    written(|w| write_offsets_json(layers, w))
 }
 
 /// Writes the layers as offsets JSON (see the module docs) to `out`,

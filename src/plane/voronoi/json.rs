@@ -28,6 +28,7 @@
 //! `"side": "back"`.
 
 use crate::io::json::read_sites as read_raw_sites;
+use crate::io::json::written;
 use crate::io::{ParseError, RawVertex};
 use crate::kernel::Point;
 use crate::plane::axis::json::{conic, node_kind, SiteOut, BATCH};
@@ -112,10 +113,7 @@ impl VoronoiDiagram {
     /// chordal tolerance `tol` (model units); self-edges kept when
     /// `self_edges`: [`write_json`](Self::write_json) into a string.
     pub fn to_json(&self, tol: f64, self_edges: bool) -> String {
-        let mut out = Vec::new();
-        // Writing to a vector cannot fail, and serde_json writes UTF-8.
-        let _ = self.write_json(tol, self_edges, &mut out);
-        String::from_utf8(out).unwrap_or_default()
+        written(|w| self.write_json(tol, self_edges, w))
     }
 
     /// Writes the diagram as JSON (format in the module docs) to `out`, an

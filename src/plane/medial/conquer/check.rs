@@ -192,8 +192,13 @@ pub(crate) fn check_coverage(shape: &Shape2d, axis: &MedialAxis2d) -> Result<(),
             }
         }
     }
-    let deg = axis.degrees();
-    let lone: Vec<usize> = (0..axis.nodes.len()).filter(|&v| deg[v] == 0).collect();
+    // Lone nodes (circle centres) only where a whole loop has no edges.
+    let lone: Vec<usize> = if runs.iter().any(|&(l, _, count)| count == loops[l].len()) {
+        let deg = axis.degrees();
+        (0..axis.nodes.len()).filter(|&v| deg[v] == 0).collect()
+    } else {
+        Vec::new()
+    };
     let nodes_at = |k: Key| nodes_of.get(&k).into_iter().flatten().copied();
     let uncovered = runs.par_iter().find_map_any(|&(l, first, count)| {
         let n = loops[l].len();

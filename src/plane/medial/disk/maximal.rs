@@ -63,6 +63,10 @@ pub struct DiskFinder<'s, K: AxisKernel = FilteredKernel> {
     chains: ChainTree,
 }
 
+/// Disks tested per walk of the index in [`DiskFinder::any_intruder`]:
+/// the final check's three (an edge's middle and the nodes it owns).
+const WALK: usize = 4;
+
 impl<'s> DiskFinder<'s> {
     /// Indexes the elements of `shape`, with the default kernel (exact
     /// signs, `f64` constructions).
@@ -109,16 +113,20 @@ impl<'s, K: AxisKernel> DiskFinder<'s, K> {
         })
     }
 
-    /// [`intruder`](Self::intruder) for up to 32 disks (centre, radius)
-    /// in one walk of the index: the index of a disk some element reaches
-    /// into by more than `tol`, with the element and its distance.
+    /// [`intruder`](Self::intruder) for several disks (centre, radius),
+    /// four of them per walk of the index: the index of a disk some
+    /// element reaches into by more than `tol`, with the element and its
+    /// distance.
     pub fn any_intruder(&self, disks: &[(Point, f64)], tol: f64) -> Option<(usize, ElementRef, f64)> {
-        let mut shrunk = [(Point::default(), 0.0); 32];
-        for (s, &(c, r)) in shrunk.iter_mut().zip(disks) {
-            *s = (c, r - tol);
-        }
-        self.chains.any_closer_than(self.shape.loops(), &shrunk[..disks.len().min(32)], |k, e| {
-            self.kernel.element_contact(Disk::new(disks[k].0, disks[k].1), e, tol) == Contact::Overlapping
+        disks.chunks(WALK).enumerate().find_map(|(c, chunk)| {
+            let mut shrunk = [(Point::default(), 0.0); WALK];
+            for (s, &(p, r)) in shrunk.iter_mut().zip(chunk) {
+                *s = (p, r - tol);
+            }
+            let hit = self.chains.any_closer_than(self.shape.loops(), &shrunk[..chunk.len()], |k, e| {
+                self.kernel.element_contact(Disk::new(chunk[k].0, chunk[k].1), e, tol) == Contact::Overlapping
+            });
+            hit.map(|(k, r, d)| (c * WALK + k, r, d))
         })
     }
 
