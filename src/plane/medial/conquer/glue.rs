@@ -123,6 +123,10 @@ pub fn glue<K: AxisKernel>(
     polish_branches(finder.kernel(), shape, &mut axis);
     straighten_stray_conics(finder, &mut axis, t.rounding_cycle(), t.final_check());
     check_graph(&axis, shape.loops().len() - 1)?;
+    // The lists held every subshape's nodes and edges; the axis is
+    // returned without the room they no longer fill.
+    axis.nodes.shrink_to_fit();
+    axis.edges.shrink_to_fit();
     Ok(axis)
 }
 

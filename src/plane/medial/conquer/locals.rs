@@ -52,6 +52,9 @@ impl LocalAxes {
             self.starts.push((0, 0));
         }
         let base = self.nodes.len();
+        grow(&mut self.nodes, local.nodes.len());
+        grow(&mut self.events, local.nodes.len());
+        grow(&mut self.edges, local.edges.len());
         self.edges.extend(local.edges.iter().map(|e| AxisEdge {
             from: base + e.from,
             to: base + e.to,
@@ -68,6 +71,13 @@ impl LocalAxes {
         self.events.extend(local.nodes.iter().map(|n| n.kind));
         self.aliases.extend(local.aliases);
         self.starts.push((self.nodes.len(), self.edges.len()));
+    }
+
+    /// Gives back the room the lists grew beyond what they hold.
+    pub(crate) fn shrink_to_fit(&mut self) {
+        self.nodes.shrink_to_fit();
+        self.events.shrink_to_fit();
+        self.edges.shrink_to_fit();
     }
 
     /// How many subshapes.
@@ -94,6 +104,16 @@ impl LocalAxes {
     /// Every subshape, in order.
     pub fn iter(&self) -> impl Iterator<Item = LocalView<'_>> + '_ {
         (0..self.count()).map(|k| self.get(k))
+    }
+}
+
+/// Makes room in `v` for `more` items, by at least a quarter of what it
+/// holds: the lists reach hundreds of megabytes at 10^6 elements, and
+/// doubling left up to half of that allocated and unused through gluing
+/// (a plate of random holes: 4.3·10^6 nodes allocated for 3.0·10^6).
+fn grow<T>(v: &mut Vec<T>, more: usize) {
+    if v.capacity() - v.len() < more {
+        v.reserve_exact(more.max(v.len() / 4));
     }
 }
 

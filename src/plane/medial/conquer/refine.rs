@@ -35,14 +35,18 @@ pub fn solve_leaves<K: AxisKernel>(
         let mut failed = Vec::new();
         // A batch at a time: only one batch of leaves' axes is ever held
         // both as its own vectors and in `locals`.
-        for batch in pending.chunks(BATCH) {
+        // Solved leaves are freed batch by batch: at the end of this
+        // step the leaves' axes and the leaves themselves would otherwise
+        // both be held.
+        while !pending.is_empty() {
+            let batch: Vec<Subshape> = pending.drain(..BATCH.min(pending.len())).collect();
             let results: Vec<Result<LocalAxis, BaseCaseError>> =
                 batch.par_iter().map(|s| base_case::solve(shape, s, &d.cuts, tol, finder)).collect();
-            for (s, r) in batch.iter().zip(results) {
+            for (s, r) in batch.into_iter().zip(results) {
                 match r {
                     Ok(local) => locals.push(local),
                     Err(e) if round == REFINES => return Err(e.into()),
-                    Err(_) => failed.push(s.clone()),
+                    Err(_) => failed.push(s),
                 }
             }
         }
@@ -61,6 +65,7 @@ pub fn solve_leaves<K: AxisKernel>(
         pending = more.leaves;
         pending.append(&mut more.stuck);
     }
+    locals.shrink_to_fit();
     Ok(locals)
 }
 
