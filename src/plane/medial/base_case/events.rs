@@ -286,7 +286,7 @@ impl<K: AxisKernel> Builder<'_, K> {
             let c = cuts[disk];
             let next = SiteRef(next % n);
             let feet = vec![Key::at(next.prev(n), 1.0), Key::at(next, 0.0)];
-            self.add_event(c.center, c.radius, EventKind::Port(disk), feet, Vec::new());
+            self.add_event(c.center, c.radius, EventKind::Port(disk as u32), feet, Vec::new());
         }
         // Joints between consecutive sites.
         for i in self.site_refs() {

@@ -15,7 +15,7 @@ use crate::shape::{ElementRef, Shape2d};
 
 /// The node of dividing disk `disk` (an index into `cuts`) as a port.
 fn port(cuts: &[Cut], disk: usize) -> LocalNode {
-    LocalNode { center: cuts[disk].center, radius: cuts[disk].radius, kind: EventKind::Port(disk) }
+    LocalNode { center: cuts[disk].center, radius: cuts[disk].radius, kind: EventKind::Port(disk as u32) }
 }
 
 /// The axis of a lobe's tip hugged by its one dividing disk `disk`: that

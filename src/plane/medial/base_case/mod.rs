@@ -60,8 +60,10 @@ const POINT_SPLITS: [f64; 4] = [-std::f64::consts::FRAC_PI_2, 0.0, std::f64::con
 /// Where an event comes from (it decides the node kind).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum EventKind {
-    /// The dividing disk with this index (into the divide step's cuts).
-    Port(usize),
+    /// The dividing disk with this index (into the divide step's cuts;
+    /// 32 bits: there is one of these per subshape node, 3·10^6 at 10^6
+    /// elements, and fewer than 2^32 disks).
+    Port(u32),
     /// A convex corner.
     Corner,
     /// A smooth joint or the end of a reflex fan.
@@ -177,7 +179,7 @@ fn aliases(s: &Subshape, cuts: &[Cut], local: &LocalAxis) -> Vec<Alias> {
         .nodes
         .iter()
         .filter_map(|n| match n.kind {
-            EventKind::Port(d) => Some(d),
+            EventKind::Port(d) => Some(d as usize),
             _ => None,
         })
         .collect();
@@ -269,7 +271,7 @@ fn walk_leaf<K: AxisKernel>(
                 Piece::Aux { disk } => Some(LocalNode {
                     center: cuts[disk].center,
                     radius: cuts[disk].radius,
-                    kind: EventKind::Port(disk),
+                    kind: EventKind::Port(disk as u32),
                 }),
                 _ => None,
             })
@@ -371,7 +373,7 @@ mod tests {
         let cut = |x: f64| Cut { center: Point::new(x, 0.0), radius: 1.0 };
         let cuts = [cut(0.0), cut(3e-9), cut(5.0)];
         let s = Subshape { pieces: (0..3).map(|disk| Piece::Aux { disk }).collect() };
-        let port = |disk: usize| LocalNode { center: cuts[disk].center, radius: 1.0, kind: EventKind::Port(disk) };
+        let port = |disk: usize| LocalNode { center: cuts[disk].center, radius: 1.0, kind: EventKind::Port(disk as u32) };
         let local = LocalAxis { nodes: vec![port(0), port(2)], edges: Vec::new(), aliases: Vec::new() };
         assert_eq!(aliases(&s, &cuts, &local), [Alias { disks: [1, 0], bridge: None }]);
         let whole = LocalAxis { nodes: (0..3).map(port).collect(), edges: Vec::new(), aliases: Vec::new() };

@@ -65,6 +65,7 @@ pub fn glue<K: AxisKernel>(
         };
         ids[v] = match event {
             EventKind::Port(c) => {
+                let c = c as usize;
                 let rep = same_as[c];
                 match port_node[rep] {
                     Some(id) => {
@@ -134,7 +135,7 @@ pub fn glue<K: AxisKernel>(
 /// joins by an edge: two nodes of that axis, so two disks, however close.
 fn joined_ports(locals: &LocalAxes) -> FastSet<(usize, usize)> {
     let port = |v: usize| match locals.events[v] {
-        EventKind::Port(c) => Some(c),
+        EventKind::Port(c) => Some(c as usize),
         _ => None,
     };
     locals.edges.iter().filter_map(|e| Some((port(e.from)?, port(e.to)?))).map(|(a, b)| (a.min(b), a.max(b))).collect()
@@ -286,7 +287,7 @@ fn redundant_bands(locals: &LocalAxes, same_as: &[usize]) -> Vec<bool> {
             .events
             .iter()
             .filter_map(|event| match *event {
-                EventKind::Port(c) => Some(same_as[c]),
+                EventKind::Port(c) => Some(same_as[c as usize]),
                 _ => None,
             })
             .collect();
