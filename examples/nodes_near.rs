@@ -17,13 +17,12 @@ fn main() {
             println!("   edge {} -> {} {:?} sites {:?} defects {defects:?}", e.from, e.to, e.kind, e.sites);
             if std::env::var("MEDAX_SITES").is_ok() {
                 for s in &e.sites {
+                    let (l, i) = (&shape.loops()[s.loop_index()], s.index());
                     match *s {
-                        medax::plane::Primitive::Vertex { loop_index, vertex } => {
-                            println!("      vertex {vertex}: {:?}", shape.loops()[loop_index].vertices()[vertex].p)
-                        }
-                        medax::plane::Primitive::Element(r) => {
-                            let el = shape.loops()[r.loop_index].element(r.element);
-                            println!("      element {}: {:?} -> {:?}", r.element, el.start(), el.end())
+                        medax::plane::Primitive::Vertex { .. } => println!("      vertex {i}: {:?}", l.vertices()[i].p),
+                        medax::plane::Primitive::Element { .. } => {
+                            let el = l.element(i);
+                            println!("      element {i}: {:?} -> {:?}", el.start(), el.end())
                         }
                     }
                 }

@@ -31,13 +31,10 @@ pub const PLATE: &str = r#"{"loops": [
 /// counter-clockwise and holes clockwise, reversing loops given the other
 /// way, and `Primitive` indexes the stored loops.
 fn describe(shape: &Shape2d, p: Primitive) -> String {
+    let (l, i) = (p.loop_index(), p.index());
     match p {
-        Primitive::Element(e) => {
-            format!("loop {} element {}", e.loop_index, shape.input_element_index(e.loop_index, e.element))
-        }
-        Primitive::Vertex { loop_index, vertex } => {
-            format!("loop {loop_index} vertex {}", shape.input_vertex_index(loop_index, vertex))
-        }
+        Primitive::Element { .. } => format!("loop {l} element {}", shape.input_element_index(l, i)),
+        Primitive::Vertex { .. } => format!("loop {l} vertex {}", shape.input_vertex_index(l, i)),
     }
 }
 

@@ -216,14 +216,13 @@ fn edge_of(a: &mx_axis, i: usize) -> Result<&AxisEdge, FfiError> {
 }
 
 fn site(shape: &Shape2d, p: Primitive) -> mx_axis_site {
+    let (loop_index, i) = (p.loop_index(), p.index());
     match p {
-        Primitive::Element(r) => mx_axis_site {
-            loop_index: r.loop_index,
-            index: shape.input_element_index(r.loop_index, r.element),
-            is_vertex: 0,
-        },
-        Primitive::Vertex { loop_index, vertex } => {
-            mx_axis_site { loop_index, index: shape.input_vertex_index(loop_index, vertex), is_vertex: 1 }
+        Primitive::Element { .. } => {
+            mx_axis_site { loop_index, index: shape.input_element_index(loop_index, i), is_vertex: 0 }
+        }
+        Primitive::Vertex { .. } => {
+            mx_axis_site { loop_index, index: shape.input_vertex_index(loop_index, i), is_vertex: 1 }
         }
     }
 }

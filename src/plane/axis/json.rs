@@ -63,19 +63,17 @@ pub(crate) struct SiteOut {
 
 impl SiteOut {
     pub(crate) fn of(shape: &Shape2d, p: Primitive) -> SiteOut {
+        let (loop_index, i) = (p.loop_index(), p.index());
         match p {
-            Primitive::Element(r) => SiteOut {
-                element: Some(shape.input_element_index(r.loop_index, r.element)),
-                loop_index: r.loop_index,
-                side: shape.on_way_back(r.loop_index, r.element).then_some("back"),
+            Primitive::Element { .. } => SiteOut {
+                element: Some(shape.input_element_index(loop_index, i)),
+                loop_index,
+                side: shape.on_way_back(loop_index, i).then_some("back"),
                 vertex: None,
             },
-            Primitive::Vertex { loop_index, vertex } => SiteOut {
-                element: None,
-                loop_index,
-                side: None,
-                vertex: Some(shape.input_vertex_index(loop_index, vertex)),
-            },
+            Primitive::Vertex { .. } => {
+                SiteOut { element: None, loop_index, side: None, vertex: Some(shape.input_vertex_index(loop_index, i)) }
+            }
         }
     }
 }

@@ -19,39 +19,82 @@ use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{Disk, Point};
 use crate::shape::{Element, ElementRef, Shape2d};
 
-/// A boundary primitive the medial axis is equidistant from.
+/// A boundary primitive the medial axis is equidistant from. Indices are
+/// 32 bits: every axis edge names two primitives, and at 10^6 elements
+/// the axis holds about 3·10^6 edges.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Primitive {
     /// The inside of an element (segment or arc), indexed as in
     /// [`Shape2d::loops`] (normalised orientation).
-    Element(ElementRef),
+    Element {
+        /// Loop index.
+        loop_index: u32,
+        /// Element index within the loop.
+        element: u32,
+    },
     /// A reflex vertex: vertex `vertex` (the start of element `vertex`) of
     /// loop `loop_index`.
     Vertex {
         /// Loop index.
-        loop_index: usize,
+        loop_index: u32,
         /// Vertex index within the loop.
-        vertex: usize,
+        vertex: u32,
     },
 }
 
 impl Primitive {
+    /// The inside of element `r`.
+    pub fn of_element(r: ElementRef) -> Self {
+        Primitive::Element { loop_index: r.loop_index as u32, element: r.element as u32 }
+    }
+
+    /// Reflex vertex `vertex` of loop `loop_index`.
+    pub fn of_vertex(loop_index: usize, vertex: usize) -> Self {
+        Primitive::Vertex { loop_index: loop_index as u32, vertex: vertex as u32 }
+    }
+
+    /// The element, for [`Primitive::Element`].
+    pub fn element(&self) -> Option<ElementRef> {
+        match *self {
+            Primitive::Element { loop_index, element } => {
+                Some(ElementRef { loop_index: loop_index as usize, element: element as usize })
+            }
+            Primitive::Vertex { .. } => None,
+        }
+    }
+
+    /// The loop it lies on.
+    pub fn loop_index(&self) -> usize {
+        match *self {
+            Primitive::Element { loop_index, .. } | Primitive::Vertex { loop_index, .. } => loop_index as usize,
+        }
+    }
+
+    /// The element's or the vertex's index within its loop.
+    pub fn index(&self) -> usize {
+        match *self {
+            Primitive::Element { element: i, .. } | Primitive::Vertex { vertex: i, .. } => i as usize,
+        }
+    }
+
     /// Distance (model units) from `p` to the primitive itself: to the
     /// vertex, or to the closest point of the element (not of its line or
     /// circle).
     pub fn distance(&self, shape: &Shape2d, p: Point) -> f64 {
-        match *self {
-            Primitive::Vertex { loop_index, vertex } => p.dist(shape.loops()[loop_index].vertices()[vertex].p),
-            Primitive::Element(r) => shape.loops()[r.loop_index].element(r.element).closest_point(p).0,
+        let l = &shape.loops()[self.loop_index()];
+        match self {
+            Primitive::Vertex { .. } => p.dist(l.vertices()[self.index()].p),
+            Primitive::Element { .. } => l.element(self.index()).closest_point(p).0,
         }
     }
 
     /// What a disk touching this primitive sees: a sided line, a circle with
     /// its kind of tangency, or a point.
     pub fn site(&self, shape: &Shape2d) -> Site {
-        match *self {
-            Primitive::Vertex { loop_index, vertex } => Site::Point(shape.loops()[loop_index].vertices()[vertex].p),
-            Primitive::Element(r) => match shape.loops()[r.loop_index].element(r.element) {
+        let l = &shape.loops()[self.loop_index()];
+        match self {
+            Primitive::Vertex { .. } => Site::Point(l.vertices()[self.index()].p),
+            Primitive::Element { .. } => match l.element(self.index()) {
                 // The interior is left of travel.
                 Element::Segment(s) => Site::Line { a: s.a, n: (s.b - s.a).unit().perp() },
                 // A counter-clockwise arc curves around the interior: the
@@ -294,9 +337,11 @@ pub fn edge_kind(shape: &Shape2d, a: Primitive, b: Primitive) -> ConicKind {
 /// its ends (the edge between them runs along the element's normal there).
 pub(crate) fn own_end_pair(shape: &Shape2d, a: Primitive, b: Primitive) -> bool {
     let own_end = |v: Primitive, e: Primitive| match (v, e) {
-        (Primitive::Vertex { loop_index, vertex }, Primitive::Element(r)) if r.loop_index == loop_index => {
-            let n = shape.loops()[loop_index].len();
-            vertex == r.element || vertex == (r.element + 1) % n
+        (Primitive::Vertex { loop_index, vertex }, Primitive::Element { loop_index: l, element })
+            if l == loop_index =>
+        {
+            let n = shape.loops()[loop_index as usize].len() as u32;
+            vertex == element || vertex == (element + 1) % n
         }
         _ => false,
     };
@@ -335,7 +380,7 @@ mod tests {
         let lp = pts.iter().map(|&(x, y)| Vertex { p: Point::new(x, y), bulge: 0.0 }).collect();
         let shape = Shape2d::from_bulge_loops(vec![lp], &ShapeOptions::default()).unwrap();
         let v = Primitive::Vertex { loop_index: 0, vertex: 3 };
-        let e = |element| Primitive::Element(ElementRef { loop_index: 0, element });
+        let e = |element| Primitive::of_element(ElementRef { loop_index: 0, element });
         assert_eq!(edge_kind(&shape, v, e(2)), ConicKind::Line);
         assert_eq!(edge_kind(&shape, e(3), v), ConicKind::Line);
         // Another element's vertex: the ordinary parabola.

@@ -40,19 +40,20 @@ impl OffsetPrim {
     /// The primitive `p` of `shape`.
     pub fn new(shape: &Shape2d, p: Primitive) -> OffsetPrim {
         let site = p.site(shape);
+        let (loop_index, i) = (p.loop_index(), p.index());
         match p {
-            Primitive::Element(r) => {
-                let (sigma, bound) = match shape.loops()[r.loop_index].element(r.element) {
+            Primitive::Element { .. } => {
+                let (sigma, bound) = match shape.loops()[loop_index].element(i) {
                     Element::Segment(_) => (0.0, 0.0),
                     Element::Arc(a) => (if a.is_ccw() { 1.0 } else { -1.0 }, a.sweep().abs()),
                 };
-                OffsetPrim { site, loop_index: r.loop_index as u32, pos: 2 * r.element as u32 + 1, sigma, bound }
+                OffsetPrim { site, loop_index: loop_index as u32, pos: 2 * i as u32 + 1, sigma, bound }
             }
-            Primitive::Vertex { loop_index, vertex } => {
+            Primitive::Vertex { .. } => {
                 // The fan turns clockwise from the incoming normal to the
                 // outgoing one by the angle the boundary turns right.
-                let width = turning_angle(&shape.loops()[loop_index], vertex).abs();
-                OffsetPrim { site, loop_index: loop_index as u32, pos: 2 * vertex as u32, sigma: -1.0, bound: width }
+                let width = turning_angle(&shape.loops()[loop_index], i).abs();
+                OffsetPrim { site, loop_index: loop_index as u32, pos: 2 * i as u32, sigma: -1.0, bound: width }
             }
         }
     }

@@ -51,8 +51,8 @@ pub(crate) fn half_end(axis: &MedialAxis2d, h: usize) -> usize {
 /// Loop and boundary position (2v for vertex v, 2e + 1 for element e).
 fn place(p: Primitive) -> (usize, usize) {
     match p {
-        Primitive::Element(r) => (r.loop_index, 2 * r.element + 1),
-        Primitive::Vertex { loop_index, vertex } => (loop_index, 2 * vertex),
+        Primitive::Element { .. } => (p.loop_index(), 2 * p.index() + 1),
+        Primitive::Vertex { .. } => (p.loop_index(), 2 * p.index()),
     }
 }
 

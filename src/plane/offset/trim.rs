@@ -110,7 +110,7 @@ impl Trimmer {
                 for &(l, e) in t.gaps(h) {
                     let r = ElementRef { loop_index: l as usize, element: e as usize };
                     arcs.entry((l, e)).or_insert_with(|| {
-                        let prim = OffsetPrim::new(shape, Primitive::Element(r));
+                        let prim = OffsetPrim::new(shape, Primitive::of_element(r));
                         (prim, prim.param_of(shape.loops()[r.loop_index].vertices()[r.element].p))
                     });
                 }

@@ -53,13 +53,7 @@ impl VoronoiDiagram {
         auto_frame: bool,
         complete: bool,
     ) -> VoronoiDiagram {
-        let site_of = |p: &Primitive| {
-            let l = match *p {
-                Primitive::Element(r) => r.loop_index,
-                Primitive::Vertex { loop_index, .. } => loop_index,
-            };
-            loop_sites[l]
-        };
+        let site_of = |p: &Primitive| loop_sites[p.loop_index()];
         let edges: Vec<VoronoiEdge> = axis
             .edges
             .iter()

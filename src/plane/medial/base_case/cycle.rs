@@ -50,7 +50,7 @@ impl<K: AxisKernel> Builder<'_, K> {
             return;
         }
         let q = lp.vertices()[v].p;
-        self.push_site(Primitive::Vertex { loop_index: l, vertex: v }, Site::Point(q), base - d0, base - d1);
+        self.push_site(Primitive::of_vertex(l, v), Site::Point(q), base - d0, base - d1);
     }
 
     /// A point site's fan from direction `from` clockwise to `to` (a whole
@@ -75,7 +75,7 @@ impl<K: AxisKernel> Builder<'_, K> {
         cuts.sort_by(f64::total_cmp);
         cuts.push(width);
         let base = angle(from);
-        let prim = Primitive::Vertex { loop_index: l, vertex: 0 };
+        let prim = Primitive::of_vertex(l, 0);
         let mut d0 = 0.0;
         for d1 in cuts {
             self.push_site(prim, Site::Point(q), base - d0, base - d1);
@@ -85,7 +85,7 @@ impl<K: AxisKernel> Builder<'_, K> {
 
     pub(super) fn element_site(&mut self, l: usize, k: usize, lo: f64, hi: f64) {
         let e = self.shape.loops()[l].element(k);
-        let prim = Primitive::Element(ElementRef { loop_index: l, element: k });
+        let prim = Primitive::of_element(ElementRef { loop_index: l, element: k });
         self.push_site(prim, prim.site(self.shape), element_param(&e, lo), element_param(&e, hi));
     }
 
@@ -218,7 +218,7 @@ mod tests {
         with_events(&rectangle(), |b| {
             assert_eq!(b.sites.len(), 4);
             assert!(b.sites.iter().all(|s| s.joined_next));
-            assert!(b.sites.iter().all(|s| matches!(s.prim, Primitive::Element(_))));
+            assert!(b.sites.iter().all(|s| matches!(s.prim, Primitive::Element { .. })));
             assert!(b.aux.is_empty());
         });
     }
@@ -237,8 +237,8 @@ mod tests {
             let n = b.sites.len();
             let before = b.sites[(fans[0] + n - 1) % n].prim;
             let after = b.sites[(fans[0] + 1) % n].prim;
-            assert!(matches!(before, Primitive::Element(e) if e.element == 2));
-            assert!(matches!(after, Primitive::Element(e) if e.element == 3));
+            assert!(matches!(before, Primitive::Element { element: 2, .. }));
+            assert!(matches!(after, Primitive::Element { element: 3, .. }));
         });
     }
 }

@@ -300,15 +300,16 @@ impl<K: AxisKernel> Builder<'_, K> {
             // The element whose normal the joint's disk grows along: the
             // one after the joint, or before it at the start of a fan.
             let grow_from = match (a.prim, b.prim) {
-                (Primitive::Element(_), Primitive::Element(eb)) => {
+                (Primitive::Element { .. }, Primitive::Element { .. }) => {
+                    let eb = b.prim.element().expect("an element");
                     if self.shape.joint(eb.loop_index, eb.element) == JointKind::Convex {
                         self.add_event(p, 0.0, EventKind::Corner, vec![key], Vec::new());
                         continue;
                     }
                     (eb, false)
                 }
-                (Primitive::Element(ea), Primitive::Vertex { .. }) => (ea, true),
-                (Primitive::Vertex { .. }, Primitive::Element(eb)) => (eb, false),
+                (Primitive::Element { .. }, Primitive::Vertex { .. }) => (a.prim.element().expect("an element"), true),
+                (Primitive::Vertex { .. }, Primitive::Element { .. }) => (b.prim.element().expect("an element"), false),
                 (Primitive::Vertex { .. }, Primitive::Vertex { .. }) => {
                     // Two pieces of one point site's fan: the maximal disk
                     // through the point in the direction where they meet.

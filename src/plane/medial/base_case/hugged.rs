@@ -208,7 +208,7 @@ fn straight_edge(
 fn middle_element(shape: &Shape2d, (from, to): (BoundaryPos, BoundaryPos)) -> Option<Primitive> {
     let parts = ChainParts::new(shape, from, to);
     let e = parts.iter().nth(parts.len() / 2).map_or(to.element, |(e, _, _)| e);
-    Some(Primitive::Element(ElementRef { loop_index: from.loop_index, element: e }))
+    Some(Primitive::of_element(ElementRef { loop_index: from.loop_index, element: e }))
 }
 
 /// An angular footpoint parameter `u` moved by whole turns next to `at`;

@@ -373,7 +373,8 @@ mod tests {
         let cut = |x: f64| Cut { center: Point::new(x, 0.0), radius: 1.0 };
         let cuts = [cut(0.0), cut(3e-9), cut(5.0)];
         let s = Subshape { pieces: (0..3).map(|disk| Piece::Aux { disk }).collect() };
-        let port = |disk: usize| LocalNode { center: cuts[disk].center, radius: 1.0, kind: EventKind::Port(disk as u32) };
+        let port =
+            |disk: usize| LocalNode { center: cuts[disk].center, radius: 1.0, kind: EventKind::Port(disk as u32) };
         let local = LocalAxis { nodes: vec![port(0), port(2)], edges: Vec::new(), aliases: Vec::new() };
         assert_eq!(aliases(&s, &cuts, &local), [Alias { disks: [1, 0], bridge: None }]);
         let whole = LocalAxis { nodes: (0..3).map(port).collect(), edges: Vec::new(), aliases: Vec::new() };

@@ -192,7 +192,7 @@ impl<K: AxisKernel> Builder<'_, K> {
     /// [`LocalSite::joint_normal`] by [`Builder::set_joint_normals`].
     fn mean_joint_normal(&self, j: SiteRef) -> Option<Point> {
         let i = j.prev(self.n());
-        let (Primitive::Element(ea), Primitive::Element(eb)) = (self.sites[i].prim, self.sites[j].prim) else {
+        let (Some(ea), Some(eb)) = (self.sites[i].prim.element(), self.sites[j].prim.element()) else {
             return None;
         };
         if !self.sites[i].joined_next || self.shape.joint(eb.loop_index, eb.element) == JointKind::Convex {

@@ -74,13 +74,10 @@ pub(crate) fn check_disks<K: AxisKernel>(finder: &DiskFinder<K>, axis: &MedialAx
     let apart = |e: &AxisEdge, c: Point, r: f64| {
         e.sites.iter().any(|p| {
             let disk = Disk::new(c, r);
+            let l = &shape.loops()[p.loop_index()];
             let contact = match *p {
-                Primitive::Vertex { loop_index, vertex } => {
-                    k.point_contact(disk, shape.loops()[loop_index].vertices()[vertex].p, slack)
-                }
-                Primitive::Element(er) => {
-                    k.element_contact(disk, &shape.loops()[er.loop_index].element(er.element), slack)
-                }
+                Primitive::Vertex { .. } => k.point_contact(disk, l.vertices()[p.index()].p, slack),
+                Primitive::Element { .. } => k.element_contact(disk, &l.element(p.index()), slack),
             };
             contact != Contact::Touching
         })
@@ -144,7 +141,7 @@ pub(crate) fn check_coverage(shape: &Shape2d, axis: &MedialAxis2d) -> Result<(),
     let mut marked: Vec<Vec<bool>> = loops.iter().map(|l| vec![false; l.len()]).collect();
     for e in &axis.edges {
         for p in e.sites {
-            if let Primitive::Element(r) = p {
+            if let Some(r) = p.element() {
                 marked[r.loop_index][r.element] = true;
             }
         }
@@ -183,10 +180,7 @@ pub(crate) fn check_coverage(shape: &Shape2d, axis: &MedialAxis2d) -> Result<(),
     let mut nodes_of: FastMap<Key, Vec<usize>> = FastMap::default();
     for e in &axis.edges {
         for p in e.sites {
-            let key = match p {
-                Primitive::Element(r) => (r.loop_index, r.element, false),
-                Primitive::Vertex { loop_index, vertex } => (loop_index, vertex, true),
-            };
+            let key = (p.loop_index(), p.index(), matches!(p, Primitive::Vertex { .. }));
             if wanted.contains(&key) {
                 nodes_of.entry(key).or_default().extend([e.from, e.to]);
             }
@@ -353,9 +347,9 @@ mod tests {
             // An edge given a primitive from across the shape.
             for i in (0..axis.edges.len()).step_by(41) {
                 let mut wrong = axis.clone();
-                let Primitive::Element(er) = wrong.edges[i].sites[0] else { continue };
+                let Some(er) = wrong.edges[i].sites[0].element() else { continue };
                 let n = shape.loops()[er.loop_index].len();
-                wrong.edges[i].sites[0] = Primitive::Element(ElementRef { element: (er.element + n / 2) % n, ..er });
+                wrong.edges[i].sites[0] = Primitive::of_element(ElementRef { element: (er.element + n / 2) % n, ..er });
                 assert!(check_disks(&finder, &wrong).is_err(), "edge {i} with a far site");
             }
         }
@@ -382,7 +376,7 @@ mod tests {
             let mut tried = 0;
             for k in (0..n).step_by(n / 7) {
                 let mut cut = axis.clone();
-                let gone = |p: &Primitive| matches!(p, Primitive::Element(r) if (r.element + n - k) % n < run);
+                let gone = |p: &Primitive| matches!(p.element(), Some(r) if (r.element + n - k) % n < run);
                 cut.edges.retain(|e| !e.sites.iter().any(gone));
                 if cut.edges.len() < axis.edges.len() {
                     assert!(check_coverage(&shape, &cut).is_err(), "edges of elements {k}.. removed");

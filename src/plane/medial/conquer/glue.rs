@@ -357,7 +357,7 @@ mod tests {
         let cuts =
             [Cut { center: Point::new(0.0, 1e-3), radius: 10.0 }, Cut { center: Point::new(0.0, 0.0), radius: 10.0 }];
         let node = |c: Cut| AxisNode { point: c.center, radius: c.radius, kind: NodeKind::Joint };
-        let side = |element: usize| Primitive::Element(ElementRef { loop_index: 0, element });
+        let side = |element: usize| Primitive::of_element(ElementRef { loop_index: 0, element });
         let edge = AxisEdge {
             from: 0,
             to: 1,

@@ -128,7 +128,7 @@ mod tests {
     #[test]
     fn edges_index_the_whole_list_of_nodes() {
         let node = |x: f64| LocalNode { center: Point::new(x, 0.0), radius: 1.0, kind: EventKind::Joint };
-        let site = Primitive::Element(ElementRef { loop_index: 0, element: 0 });
+        let site = Primitive::of_element(ElementRef { loop_index: 0, element: 0 });
         let edge = LocalEdge { from: 1, to: 0, sites: [site, site], params: [(0.0, 1.0); 2], straight: false };
         let mut all = LocalAxes::default();
         assert_eq!(all.count(), 0);

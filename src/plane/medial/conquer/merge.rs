@@ -44,7 +44,7 @@ pub(crate) fn merge_pass_through(shape: &Shape2d, axis: &mut MedialAxis2d, is_po
         }
         // A joint with the same pair on both sides: only where a point
         // site's fan was cut (base_case::POINT_SPLITS); other joints stay.
-        let point_site = |p: &Primitive| matches!(*p, Primitive::Vertex { loop_index, .. } if shape.kind(loop_index) == crate::shape::LoopKind::Point);
+        let point_site = |p: &Primitive| matches!(*p, Primitive::Vertex { .. } if shape.kind(p.loop_index()) == crate::shape::LoopKind::Point);
         if !is_port[v] && !e1.sites.iter().any(point_site) {
             continue;
         }
@@ -70,7 +70,7 @@ pub(crate) fn merge_pass_through(shape: &Shape2d, axis: &mut MedialAxis2d, is_po
                     let turns = ((end - start) / std::f64::consts::TAU).round() * std::f64::consts::TAU;
                     stop + turns
                 }
-                Primitive::Element(_) => stop,
+                Primitive::Element { .. } => stop,
             }
         };
         let merged = AxisEdge {

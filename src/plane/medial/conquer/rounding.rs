@@ -192,7 +192,7 @@ mod tests {
     }
 
     fn edge(from: usize, to: usize, site: usize) -> AxisEdge {
-        let site = Primitive::Element(ElementRef { loop_index: 0, element: site });
+        let site = Primitive::of_element(ElementRef { loop_index: 0, element: site });
         AxisEdge { from, to, sites: [site, site], params: [(0.0, 0.0); 2], kind: ConicKind::Line, straight: false }
     }
 
@@ -226,7 +226,7 @@ mod tests {
     fn a_cluster_whose_node_misses_an_edge_moving_onto_it_stays() {
         let mut axis = joint_with_a_branch_point_beside_it();
         // Only edge 5 (site 5, leaving node 2) misses the joint's disk.
-        let site5 = Primitive::Element(ElementRef { loop_index: 0, element: 5 });
+        let site5 = Primitive::of_element(ElementRef { loop_index: 0, element: 5 });
         contract_rounding_cycles(&mut axis, 1e-6, |_, e| e.sites[0] != site5);
         assert_eq!((axis.nodes.len(), axis.edges.len()), (6, 6));
     }

@@ -47,7 +47,7 @@ mod tests {
     #[test]
     fn a_short_edge_between_one_primitive_and_itself_goes_with_its_lonely_end() {
         let node = |x: f64| AxisNode { point: Point::new(x, 0.0), radius: 1.0, kind: NodeKind::Joint };
-        let p = |element: usize| Primitive::Element(ElementRef { loop_index: 0, element });
+        let p = |element: usize| Primitive::of_element(ElementRef { loop_index: 0, element });
         let edge = |from: usize, to: usize, sites: [Primitive; 2]| AxisEdge {
             from,
             to,

@@ -69,7 +69,7 @@ mod tests {
         let shape = Shape2d::from_json_str(json, &ShapeOptions::default()).unwrap();
         let node = |x: f64| AxisNode { point: Point::new(x, 0.0), radius: 10.0, kind: NodeKind::Joint };
         let nodes = vec![node(0.0), node(1e-8), node(5.0)];
-        let sides = [0, 2].map(|element| Primitive::Element(ElementRef { loop_index: 0, element }));
+        let sides = [0, 2].map(|element| Primitive::of_element(ElementRef { loop_index: 0, element }));
         let edge = |(to, stray): (usize, f64)| {
             let param = |p: Primitive, v: usize| footpoint_param(&p.site(&shape), nodes[v].point, 10.0);
             // The top side runs in −x.

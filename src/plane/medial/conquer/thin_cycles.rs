@@ -148,7 +148,7 @@ mod tests {
     }
 
     fn edge(from: usize, to: usize) -> AxisEdge {
-        let site = Primitive::Element(ElementRef { loop_index: 0, element: 0 });
+        let site = Primitive::of_element(ElementRef { loop_index: 0, element: 0 });
         AxisEdge { from, to, sites: [site, site], params: [(0.0, 0.0); 2], kind: ConicKind::Line, straight: true }
     }
 

@@ -49,7 +49,7 @@ pub fn site_of<K: AxisKernel>(finder: &DiskFinder<K>, f: &Footpoint) -> Site {
             return Site::Point(lp.vertices()[v].p);
         }
     }
-    Primitive::Element(f.element).site(shape)
+    Primitive::of_element(f.element).site(shape)
 }
 
 /// Slides the disk `start` touching `fa` and `fb` along their bisector,
@@ -241,7 +241,7 @@ fn jump_to_third<K: AxisKernel>(
             return (on(&ea, sa.contact(c, r)) && on(&eb, sb.contact(c, r))).then_some(Disk::new(c, r));
         }
         let e = element(hit);
-        let interior = Primitive::Element(hit).site(shape);
+        let interior = Primitive::of_element(hit).site(shape);
         let mut moved = false;
         for s3 in [interior, Site::Point(e.start()), Site::Point(e.end())].iter() {
             let point = matches!(s3, Site::Point(_));
