@@ -127,20 +127,17 @@ impl<K: AxisKernel> Builder<'_, K> {
         // contact over a range): one footpoint, not two.
         let n = self.n();
         let has = |j: SiteRef, feet: &[(SiteRef, Key)]| feet.iter().any(|&(s, k)| s == j && k.w > 0.0 && k.w < 1.0);
-        let keep: Vec<bool> = feet
-            .iter()
-            .map(|&(i, k)| {
-                let at_start = k.site == i && k.w == 0.0;
-                let at_end = k.site != i || k.w == 1.0;
-                let prev = i.prev(n);
-                let next = i.next(n);
-                let start_taken = at_start && self.sites[prev].joined_next && has(prev, &feet) && !has(i, &feet);
-                let end_taken = at_end && self.sites[i].joined_next && has(next, &feet) && !has(i, &feet);
-                !(start_taken || end_taken)
-            })
-            .collect();
-        let feet = feet.into_iter().zip(keep).filter(|(_, k)| *k).map(|((_, k), _)| k).collect();
-        (feet, whole)
+        let taken = |&(i, k): &(SiteRef, Key)| {
+            let at_start = k.site == i && k.w == 0.0;
+            let at_end = k.site != i || k.w == 1.0;
+            let prev = i.prev(n);
+            let next = i.next(n);
+            let start_taken = at_start && self.sites[prev].joined_next && has(prev, &feet) && !has(i, &feet);
+            let end_taken = at_end && self.sites[i].joined_next && has(next, &feet) && !has(i, &feet);
+            start_taken || end_taken
+        };
+        let kept = feet.iter().filter(|f| !taken(f)).map(|&(_, k)| k).collect();
+        (kept, whole)
     }
 
     /// Contacts of a constructed disk count as footpoints within this

@@ -23,38 +23,44 @@ impl<K: AxisKernel> Builder<'_, K> {
     /// (`c`, `r`) ([`hugs`](Self::hugs)) is one footpoint: its `own` ones
     /// if it has any, else the one closest to `c`. Sites in `whole` (an
     /// arc on the circle itself) are never merged across.
-    pub(super) fn one_per_hug(&self, c: Point, r: f64, feet: Vec<Key>, own: &[Key], whole: &[SiteRef]) -> Vec<Key> {
-        let mut all: Vec<(Key, bool)> =
-            feet.into_iter().map(|k| (k, false)).chain(own.iter().map(|&k| (k, true))).collect();
+    pub(super) fn one_per_hug(&self, c: Point, r: f64, mut feet: Vec<Key>, own: &[Key], whole: &[SiteRef]) -> Vec<Key> {
+        // (key, own, hugged from it to the next): one list, and `feet`
+        // reused for the result: this runs for every event, and its
+        // scratch lists were a third of the base cases' allocations.
+        let mut all: Vec<(Key, bool, bool)> =
+            feet.iter().map(|&k| (k, false, false)).chain(own.iter().map(|&k| (k, true, false))).collect();
         let m = all.len();
+        feet.clear();
         if m < 2 {
-            return all.into_iter().map(|(k, _)| k).collect();
+            feet.extend(all.iter().map(|a| a.0));
+            return feet;
         }
         all.sort_by(|a, b| self.pos(a.0).total_cmp(&self.pos(b.0)));
-        // `joined[i]`: footpoints i and i + 1 (cyclically) are one contact.
-        let joined: Vec<bool> =
-            (0..m).map(|i| self.hugged_between(all[i].0, all[(i + 1) % m].0, c, r, whole)).collect();
-        let Some(brk) = joined.iter().position(|&j| !j) else {
+        // `all[i].2`: footpoints i and i + 1 (cyclically) are one contact.
+        for i in 0..m {
+            all[i].2 = self.hugged_between(all[i].0, all[(i + 1) % m].0, c, r, whole);
+        }
+        let Some(brk) = all.iter().position(|a| !a.2) else {
             // The circle hugs the whole cycle: nothing to choose by.
-            return all.into_iter().map(|(k, _)| k).collect();
+            feet.extend(all.iter().map(|a| a.0));
+            return feet;
         };
         let depth = |k: Key| c.dist(self.point_of(k.site, self.u_at(k.site, k.w)));
-        let mut out = Vec::with_capacity(m);
-        let mut run: Vec<(Key, bool)> = Vec::new();
+        // Runs are the footpoints `brk + start ..= brk + s` (cyclically).
+        let mut start = 1;
         for s in 1..=m {
-            let i = (brk + s) % m;
-            run.push(all[i]);
-            if joined[i] {
+            if all[(brk + s) % m].2 {
                 continue;
             }
-            if run.iter().any(|&(_, o)| o) {
-                out.extend(run.iter().filter(|&&(_, o)| o).map(|&(k, _)| k));
-            } else if let Some(&(k, _)) = run.iter().min_by(|a, b| depth(a.0).total_cmp(&depth(b.0))) {
-                out.push(k);
+            let run = (start..=s).map(|t| all[(brk + t) % m]);
+            if run.clone().any(|a| a.1) {
+                feet.extend(run.filter(|a| a.1).map(|a| a.0));
+            } else if let Some(a) = run.min_by(|a, b| depth(a.0).total_cmp(&depth(b.0))) {
+                feet.push(a.0);
             }
-            run.clear();
+            start = s + 1;
         }
-        out
+        feet
     }
 
     /// True when the boundary from key `a` forward to key `b` runs through

@@ -259,7 +259,11 @@ fn walk_leaf<K: AxisKernel>(
     finder: &DiskFinder<K>,
 ) -> Result<LocalAxis, BaseCaseError> {
     let touch = Builder::<K>::touch_tol(shape, tol);
-    let mut b = Builder { shape, tol, touch, sites: Vec::new(), events: Vec::new(), aux: Vec::new(), finder };
+    // Room for a typical leaf up front: its sites and events are pushed one
+    // by one, and growing from empty cost a handful of reallocations per
+    // list and leaf (a tenth of all allocations of the base cases).
+    let (sites, events) = (Vec::with_capacity(LEAF_ROOM), Vec::with_capacity(LEAF_ROOM));
+    let mut b = Builder { shape, tol, touch, sites, events, aux: Vec::new(), finder };
     b.collect_sites(s, cuts);
     if b.sites.is_empty() {
         // A subshape of auxiliary arcs and single points only: its axis is
@@ -282,6 +286,10 @@ fn walk_leaf<K: AxisKernel>(
     b.collect_events(cuts)?;
     b.walk()
 }
+
+/// Sites and events a leaf's lists are made ready for: a leaf of the
+/// default 32 parts holds 30–60 of each.
+const LEAF_ROOM: usize = 64;
 
 struct Builder<'a, K: AxisKernel> {
     shape: &'a Shape2d,

@@ -58,10 +58,12 @@ impl<K: AxisKernel> Builder<'_, K> {
     }
 
     pub(super) fn walk(mut self) -> Result<LocalAxis, BaseCaseError> {
-        let mut edges: Vec<LocalEdge> = Vec::new();
-        let mut linked: Vec<(EventRef, EventRef)> = Vec::new();
+        // A tree on the events has one edge fewer than events; every
+        // footpoint starts a pocket.
+        let mut edges: Vec<LocalEdge> = Vec::with_capacity(self.events.len());
+        let mut linked: Vec<(EventRef, EventRef)> = Vec::with_capacity(self.events.len());
         // (event, index of the footpoint that starts the pocket)
-        let mut work: Vec<(EventRef, usize)> = Vec::new();
+        let mut work: Vec<(EventRef, usize)> = Vec::with_capacity(self.events.iter().map(|e| e.feet.len()).sum());
         for (d, e) in self.events.iter().enumerate() {
             work.extend((0..e.feet.len()).map(|j| (EventRef(d), j)));
         }

@@ -107,15 +107,23 @@ impl LocalAxes {
     }
 }
 
-/// Makes room in `v` for `more` items, by at least a quarter of what it
-/// holds: the lists reach hundreds of megabytes at 10^6 elements, and
-/// doubling left up to half of that allocated and unused through gluing
-/// (a plate of random holes: 4.3·10^6 nodes allocated for 3.0·10^6).
+/// Makes room in `v` for `more` items: doubling while small, by a quarter
+/// of what it holds once it is large. The lists reach hundreds of
+/// megabytes at 10^6 elements, and doubling left up to half of that
+/// allocated and unused through gluing (a plate of random holes: 4.3·10^6
+/// nodes allocated for 3.0·10^6); large blocks are moved by remapping
+/// pages, small ones by copying, which a quarter at a time would repeat.
 fn grow<T>(v: &mut Vec<T>, more: usize) {
     if v.capacity() - v.len() < more {
-        v.reserve_exact(more.max(v.len() / 4));
+        let small = v.len() * std::mem::size_of::<T>() < QUARTER_FROM_BYTES;
+        v.reserve_exact(more.max(if small { v.len() } else { v.len() / 4 }));
     }
 }
+
+/// The size from which [`grow`] adds a quarter: glibc maps blocks this
+/// large (its threshold grows to at most 32 MiB) and moves them by
+/// remapping.
+const QUARTER_FROM_BYTES: usize = 32 << 20;
 
 #[cfg(test)]
 mod tests {

@@ -23,11 +23,16 @@ use crate::kernel::{BBox, Point};
 use crate::shape::index::box_tree::Pending;
 use crate::shape::model::bulge_loop::Loop;
 use crate::shape::model::error::ElementRef;
+use crate::util::small_stack::SmallStack;
 
 /// Elements per leaf run: short enough that a leaf's capsule is tight,
 /// long enough that the tree costs little memory (a node is 144 bytes and
 /// there are about n/4 of them: 36 bytes per element).
 const LEAF: usize = 8;
+
+/// Entries of a walk's stack kept inline: the tree's depth and more (a
+/// shape of many loops pushes a root per loop, and spills).
+const WALK_STACK: usize = 24;
 
 #[derive(Debug, Clone, Copy)]
 struct Node {
@@ -359,8 +364,8 @@ impl ChainTree {
         d: f64,
         accept: impl Fn(&Element) -> bool,
     ) -> Option<(ElementRef, f64)> {
-        let mut stack: Vec<u32> = Vec::with_capacity(64);
-        stack.extend(self.roots.iter().rev().filter(|&&r| self.nodes[r as usize].bound_below(p, d).is_some()));
+        let mut stack: SmallStack<u32, WALK_STACK> = SmallStack::new(0);
+        stack.extend(self.roots.iter().rev().copied().filter(|&r| self.nodes[r as usize].bound_below(p, d).is_some()));
         while let Some(id) = stack.pop() {
             let n = &self.nodes[id as usize];
             if n.left == u32::MAX {
@@ -404,7 +409,7 @@ impl ChainTree {
                 .fold(0u32, |m, k| m | (1 << k))
         };
         let all = if disks.len() >= 32 { u32::MAX } else { (1u32 << disks.len()) - 1 };
-        let mut stack: Vec<(u32, u32)> = Vec::with_capacity(64);
+        let mut stack: SmallStack<(u32, u32), WALK_STACK> = SmallStack::new((0, 0));
         for &r in self.roots.iter().rev() {
             let m = reaching(&self.nodes[r as usize], all);
             if m != 0 {
@@ -441,8 +446,8 @@ impl ChainTree {
     /// own box would hold every element of a boundary that its circle
     /// hugs (a nearly circular curve); the runs' capsules do not.
     pub fn visit_within(&self, p: Point, d: f64, mut visit: impl FnMut(ElementRef)) {
-        let mut stack: Vec<u32> = Vec::with_capacity(64);
-        stack.extend(self.roots.iter().rev().filter(|&&r| self.nodes[r as usize].bound_below(p, d).is_some()));
+        let mut stack: SmallStack<u32, WALK_STACK> = SmallStack::new(0);
+        stack.extend(self.roots.iter().rev().copied().filter(|&r| self.nodes[r as usize].bound_below(p, d).is_some()));
         while let Some(id) = stack.pop() {
             let n = &self.nodes[id as usize];
             if n.left == u32::MAX {
