@@ -13,7 +13,7 @@ use crate::plane::medial::conquer::error::AxisError;
 use crate::plane::medial::conquer::locals::{LocalAxes, LocalView};
 use crate::plane::medial::conquer::merge::{merge_coinciding_branches, merge_pass_through, polish_branches};
 use crate::plane::medial::conquer::rounding::contract_rounding_cycles;
-use crate::plane::medial::conquer::self_stubs::drop_self_stubs;
+use crate::plane::medial::conquer::self_stubs::{drop_rounding_spikes, drop_self_stubs};
 use crate::plane::medial::conquer::stray_conics::straighten_stray_conics;
 use crate::plane::medial::conquer::thin_cycles::drop_thin_cycles;
 use crate::plane::medial::decompose::subshape::Cut;
@@ -120,6 +120,7 @@ pub fn glue<K: AxisKernel>(
     contract_rounding_cycles(&mut axis, t.rounding_cycle(), fits);
     drop_thin_cycles(shape, &mut axis, shape.loops().len() - 1);
     drop_self_stubs(&mut axis, t.rounding_cycle());
+    drop_rounding_spikes(&mut axis, t.same_disk());
     classify(&mut axis, tol);
     polish_branches(finder.kernel(), shape, &mut axis);
     straighten_stray_conics(finder, &mut axis, t.rounding_cycle(), t.final_check());
