@@ -31,7 +31,6 @@ pub(super) fn tip_axis(cuts: &[Cut], disk: usize) -> LocalAxis {
 /// [`hugged`](crate::plane::medial::decompose::subshape::hugged) returned
 /// it for).
 pub(super) fn band_axis(shape: &Shape2d, s: &Subshape, cuts: &[Cut], h: Hugged) -> Option<LocalAxis> {
-    let port = |disk: usize| port(cuts, disk);
     match h {
         Hugged::Tip(_) | Hugged::Cluster => None,
         Hugged::Band([j0, j1]) => {
@@ -47,12 +46,7 @@ pub(super) fn band_axis(shape: &Shape2d, s: &Subshape, cuts: &[Cut], h: Hugged) 
             // Chain `a` runs from port 0 to port 1 with the inside on its
             // left, so walking the axis the same way it is on the right.
             let (a, b) = (chain(j0 + 1)?, chain(j1 + 1)?);
-            let (left, right) = (middle_element(shape, b)?, middle_element(shape, a)?);
-            Some(LocalAxis {
-                nodes: vec![port(d0), port(d1)],
-                edges: vec![straight_edge(shape, cuts, (0, d0), (1, d1), [left, right])],
-                aliases: Vec::new(),
-            })
+            Some(one_straight_edge(shape, cuts, [d0, d1], [middle_element(shape, b)?, middle_element(shape, a)?]))
         }
     }
 }
@@ -172,12 +166,17 @@ pub(super) fn two_port_axis(shape: &Shape2d, s: &Subshape, cuts: &[Cut]) -> Opti
         Piece::Chain { from, to } => middle_element(shape, (from, to)),
         Piece::Aux { .. } => None,
     };
-    let (left, right) = (middle(j0 + 3)?, middle(j0 + 1)?);
-    Some(LocalAxis {
+    Some(one_straight_edge(shape, cuts, [d0, d1], [middle(j0 + 3)?, middle(j0 + 1)?]))
+}
+
+/// The axis of the two ports of dividing disks `disks` joined by one
+/// straight edge with primitives `sides` on its left and right.
+fn one_straight_edge(shape: &Shape2d, cuts: &[Cut], [d0, d1]: [usize; 2], sides: [Primitive; 2]) -> LocalAxis {
+    LocalAxis {
         nodes: vec![port(cuts, d0), port(cuts, d1)],
-        edges: vec![straight_edge(shape, cuts, (0, d0), (1, d1), [left, right])],
+        edges: vec![straight_edge(shape, cuts, (0, d0), (1, d1), sides)],
         aliases: Vec::new(),
-    })
+    }
 }
 
 /// The straight edge from node `from.0` (dividing disk `from.1`) to node
