@@ -21,7 +21,8 @@ use crate::shape::{Element, ElementRef, Shape2d};
 
 /// A boundary primitive the medial axis is equidistant from. Indices are
 /// 32 bits: every axis edge names two primitives, and at 10^6 elements
-/// the axis holds about 3·10^6 edges.
+/// the axis holds about 3·10^6 edges. (A loop of 2^32 elements would take
+/// over 100 GB as a shape; the shape's index is 32-bit too.)
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Primitive {
     /// The inside of an element (segment or arc), indexed as in
@@ -45,11 +46,13 @@ pub enum Primitive {
 impl Primitive {
     /// The inside of element `r`.
     pub fn of_element(r: ElementRef) -> Self {
+        debug_assert!(r.loop_index <= u32::MAX as usize && r.element <= u32::MAX as usize);
         Primitive::Element { loop_index: r.loop_index as u32, element: r.element as u32 }
     }
 
     /// Reflex vertex `vertex` of loop `loop_index`.
     pub fn of_vertex(loop_index: usize, vertex: usize) -> Self {
+        debug_assert!(loop_index <= u32::MAX as usize && vertex <= u32::MAX as usize);
         Primitive::Vertex { loop_index: loop_index as u32, vertex: vertex as u32 }
     }
 

@@ -296,18 +296,17 @@ impl<K: AxisKernel> Builder<'_, K> {
             let p = self.point_of(j, b.u0);
             // The element whose normal the joint's disk grows along: the
             // one after the joint, or before it at the start of a fan.
-            let grow_from = match (a.prim, b.prim) {
-                (Primitive::Element { .. }, Primitive::Element { .. }) => {
-                    let eb = b.prim.element().expect("an element");
+            let grow_from = match (a.prim.element(), b.prim.element()) {
+                (Some(_), Some(eb)) => {
                     if self.shape.joint(eb.loop_index, eb.element) == JointKind::Convex {
                         self.add_event(p, 0.0, EventKind::Corner, vec![key], Vec::new());
                         continue;
                     }
                     (eb, false)
                 }
-                (Primitive::Element { .. }, Primitive::Vertex { .. }) => (a.prim.element().expect("an element"), true),
-                (Primitive::Vertex { .. }, Primitive::Element { .. }) => (b.prim.element().expect("an element"), false),
-                (Primitive::Vertex { .. }, Primitive::Vertex { .. }) => {
+                (Some(ea), None) => (ea, true),
+                (None, Some(eb)) => (eb, false),
+                (None, None) => {
                     // Two pieces of one point site's fan: the maximal disk
                     // through the point in the direction where they meet.
                     if a.prim != b.prim {

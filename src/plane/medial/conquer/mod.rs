@@ -96,9 +96,8 @@ pub fn medial_axis_with<K: AxisKernel>(
 ) -> Result<MedialAxis2d, AxisError> {
     let finder = DiskFinder::with_kernel(shape, kernel);
     // The augmentation is only the divide step's input; dropped once
-    // divided (a plate of random holes held 0.12 kB per element in it
-    // through the base cases, a sixth of the peak) and built again only
-    // for a retry.
+    // divided (a plate of random holes held 0.06 kB per element in it
+    // through the base cases) and built again only for a retry.
     let mut aug = Some(augment(&finder)?);
     // The divide step is randomized: a numerical breakdown in one
     // decomposition is retried with other random choices (derived from the

@@ -38,8 +38,12 @@ pub fn solve_leaves<K: AxisKernel>(
         // Solved leaves are freed batch by batch: at the end of this
         // step the leaves' axes and the leaves themselves would otherwise
         // both be held.
+        // Taken from the end of the reversed list: each batch is split off
+        // in its own length (draining the front moves the whole rest).
+        pending.reverse();
         while !pending.is_empty() {
-            let batch: Vec<Subshape> = pending.drain(..BATCH.min(pending.len())).collect();
+            let mut batch = pending.split_off(pending.len().saturating_sub(BATCH));
+            batch.reverse();
             let results: Vec<Result<LocalAxis, BaseCaseError>> =
                 batch.par_iter().map(|s| base_case::solve(shape, s, &d.cuts, tol, finder)).collect();
             for (s, r) in batch.into_iter().zip(results) {
