@@ -3,7 +3,10 @@
 //! `cargo run --release --features internals --example axis_phases -- KIND N [THREADS]`
 //! with KIND one of `fourier`, `circle`, `star`, `flower`, `holes` (a
 //! `write_sample` family; `MEDAX_SEED` picks the random one) or a shape
-//! file with N = 0. Prints one line per phase: seconds and share, then the
+//! file with N = 0. Prints one line per phase: seconds and share, resident
+//! memory after the phase and its peak so far, and (with
+//! `MEDAX_COUNT_ALLOC=1`) the bytes allocated after the phase and the most
+//! during it, all per element; then the
 //! divide step's critical path (span) and, from this run's times, the
 //! time Brent's bound predicts on more cores (run with THREADS = 1 for
 //! the work): validation, augmenting disks, base cases and the final check are parallel
