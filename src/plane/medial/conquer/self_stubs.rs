@@ -19,7 +19,7 @@
 //! spike that short is no branch of the axis at the final check's
 //! resolution.
 
-use crate::plane::axis::{AxisEdge, AxisNode, MedialAxis2d, NodeKind};
+use crate::plane::axis::{AxisEdge, AxisNode, MedialAxis2d};
 use crate::plane::medial::conquer::merge::compact;
 use rayon::prelude::*;
 
@@ -56,7 +56,9 @@ pub(crate) fn drop_rounding_spikes(axis: &mut MedialAxis2d, same: f64) {
     let mut deg = axis.degrees();
     let nodes = &axis.nodes;
     let one = |a: &AxisNode, b: &AxisNode| a.point.dist(b.point) <= same && (a.radius - b.radius).abs() <= same;
-    let tip = |v: usize, deg: &[usize]| deg[v] == 1 && nodes[v].kind != NodeKind::Corner && nodes[v].radius > 0.0;
+    // Node kinds are settled only after this pass; a convex corner is the
+    // node of radius 0.
+    let tip = |v: usize, deg: &[usize]| deg[v] == 1 && nodes[v].radius > 0.0;
     let mut spikes = vec![false; axis.edges.len()];
     let mut gone = vec![false; nodes.len()];
     for (i, e) in axis.edges.iter().enumerate() {
