@@ -1,7 +1,7 @@
 //! `medax info`: the validation report.
 
 use super::{fail, ShapeArgs};
-use medax::shape::Shape2d;
+use medax::shape::{Drawing2d, IgnoredKind, Shape2d};
 use std::process::ExitCode;
 use std::time::Instant;
 
@@ -29,8 +29,42 @@ pub fn report(s: &Shape2d) -> String {
 
 pub fn run(args: &ShapeArgs) -> Result<(), ExitCode> {
     let t = Instant::now();
-    let s = args.load().map_err(|e| fail(&args.shape, &e))?;
-    super::put(&report(&s));
+    let d = args.load_drawing().map_err(|e| fail(&args.shape, &e))?;
+    if d.shapes.is_empty() {
+        put_ignored(&d);
+        return Err(fail(&args.shape, &super::no_shape(&d, 0)));
+    }
+    if d.shapes.len() == 1 && args.pick.is_none_or(|k| k == 0) {
+        super::put(&report(&d.shapes[0]));
+    } else {
+        out!("{} shapes (largest first; `--shape K` picks one for the other commands)", d.shapes.len());
+        for (k, s) in d.shapes.iter().enumerate().filter(|(k, _)| args.pick.is_none_or(|p| p == *k)) {
+            out!("shape {k}:");
+            for line in report(s).lines() {
+                out!("  {line}");
+            }
+        }
+    }
+    put_ignored(&d);
     out!("read and validated in {:.3} s", t.elapsed().as_secs_f64());
     Ok(())
+}
+
+/// What the drawing held besides its shapes: a count per kind and the
+/// first few of each.
+fn put_ignored(d: &Drawing2d) {
+    const SHOWN: usize = 5;
+    for kind in [IgnoredKind::OpenChain, IgnoredKind::FlatLoop, IgnoredKind::DuplicateLoop, IgnoredKind::InvalidShape] {
+        let all: Vec<_> = d.ignored.iter().filter(|i| i.kind == kind).collect();
+        if all.is_empty() {
+            continue;
+        }
+        out!("ignored: {} {}(s)", all.len(), kind.name());
+        for i in all.iter().take(SHOWN) {
+            out!("  at line/byte {} near ({}, {}): {}", i.source, i.position.x, i.position.y, i.reason);
+        }
+        if all.len() > SHOWN {
+            out!("  … and {} more", all.len() - SHOWN);
+        }
+    }
 }

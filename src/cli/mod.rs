@@ -23,7 +23,7 @@ mod offset;
 mod voronoi;
 
 use clap::{Parser, Subcommand};
-use medax::shape::{Shape2d, ShapeError, ShapeOptions};
+use medax::shape::{Drawing2d, IgnoredKind, Shape2d, ShapeError, ShapeOptions};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -49,18 +49,69 @@ struct ShapeArgs {
     /// Gap closed when chaining DXF/SVG pieces into loops (default: 1e-6 × diagonal).
     #[arg(long)]
     chain_tolerance: Option<f64>,
+    /// Which shape of a drawing with several (0 = the largest; `medax info` lists them).
+    #[arg(long = "shape", value_name = "K")]
+    pick: Option<usize>,
+    /// Refuse a DXF/SVG drawing with anything but closed loops of one shape (no profile extraction).
+    #[arg(long)]
+    strict: bool,
 }
 
 impl ShapeArgs {
-    fn load(&self) -> Result<Shape2d, ShapeError> {
-        let opts = ShapeOptions {
+    fn options(&self) -> ShapeOptions {
+        ShapeOptions {
             tolerance: self.tolerance,
             angle_tolerance: self.angle_tolerance,
             chain_tolerance: self.chain_tolerance,
             ..ShapeOptions::default()
-        };
-        Shape2d::from_file(&self.shape, &opts)
+        }
     }
+
+    /// The drawing's profiles (one shape, nothing ignored, under `--strict`).
+    fn load_drawing(&self) -> Result<Drawing2d, ShapeError> {
+        if self.strict {
+            let shape = Shape2d::from_file(&self.shape, &self.options())?;
+            return Ok(Drawing2d { shapes: vec![shape], ignored: Vec::new() });
+        }
+        Drawing2d::from_file(&self.shape, &self.options())
+    }
+
+    /// The shape to work on: the one `--shape` picks (the largest by
+    /// default), with a note on stderr of what else the drawing held.
+    fn load(&self) -> Result<Shape2d, ShapeError> {
+        let mut d = self.load_drawing()?;
+        let k = self.pick.unwrap_or(0);
+        if d.shapes.len() > 1 || !d.ignored.is_empty() {
+            eprintln!(
+                "medax: {}: {} shape(s), {} thing(s) ignored; using shape {k} (`medax info` lists them)",
+                self.shape.display(),
+                d.shapes.len(),
+                d.ignored.len()
+            );
+        }
+        if k >= d.shapes.len() {
+            return Err(no_shape(&d, k));
+        }
+        Ok(d.shapes.swap_remove(k))
+    }
+}
+
+/// The error of a drawing without shape `k`: its first invalid shape's, an
+/// open chain's gap, or that it holds no loop.
+fn no_shape(d: &Drawing2d, k: usize) -> ShapeError {
+    if !d.shapes.is_empty() {
+        return ShapeError::InvalidArgument {
+            what: format!("--shape {k}: the drawing has {} shape(s)", d.shapes.len()),
+        };
+    }
+    let cause = d.ignored.iter().find_map(|i| i.cause.clone());
+    let open = d.ignored.iter().find(|i| i.kind == IgnoredKind::OpenChain);
+    cause.unwrap_or_else(|| match open {
+        Some(i) => ShapeError::InvalidArgument {
+            what: format!("no closed profile; an open chain from line/byte {}: {}", i.source, i.reason),
+        },
+        None => ShapeError::Empty,
+    })
 }
 
 /// Options shared by commands that compute an axis.

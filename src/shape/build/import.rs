@@ -40,21 +40,36 @@ fn scale_of(points: impl Iterator<Item = Point>) -> f64 {
     bb.diagonal()
 }
 
-/// Loops from a parsed drawing: closed polylines and circles as they are,
-/// everything else chained. The largest loop becomes the outer boundary.
-fn drawing_loops(d: &RawDrawing, opts: &ShapeOptions) -> Result<Vec<Loop>, ShapeError> {
+/// A parsed drawing's curves: closed polylines and circles as loops,
+/// everything else as loose elements to chain, each with its source.
+pub(crate) struct DrawingParts {
+    /// Loops and the source of their entity.
+    pub loops: Vec<(Loop, usize)>,
+    /// Elements to chain.
+    pub loose: Vec<LooseElement>,
+    /// The source of each loose element's entity.
+    pub sources: Vec<usize>,
+    /// The diagonal of the drawing's extent (model units).
+    pub diagonal: f64,
+}
+
+/// Splits a parsed drawing into loops and loose elements.
+pub(crate) fn drawing_parts(d: &RawDrawing) -> DrawingParts {
     let mut loops = Vec::new();
     let mut loose = Vec::new();
+    let mut sources = Vec::new();
     for p in &d.polylines {
         let elems = polyline_elements(p);
         if p.closed {
-            loops.push(Loop::new(elems.iter().map(|e| Vertex { p: e.a, bulge: e.bulge }).collect()));
+            loops.push((Loop::new(elems.iter().map(|e| Vertex { p: e.a, bulge: e.bulge }).collect()), p.source));
         } else {
+            sources.extend(std::iter::repeat_n(p.source, elems.len()));
             loose.extend(elems);
         }
     }
     for l in &d.lines {
         loose.push(LooseElement { a: pt(l.a), b: pt(l.b), bulge: 0.0 });
+        sources.push(l.source);
     }
     for a in &d.arcs {
         let c = pt(a.center);
@@ -65,20 +80,28 @@ fn drawing_loops(d: &RawDrawing, opts: &ShapeOptions) -> Result<Vec<Loop>, Shape
         }
         let start = c + Point::new(s.cos(), s.sin()) * a.radius;
         if sweep >= TAU * (1.0 - 1e-15) {
-            loops.push(circle_loop(c, a.radius));
+            loops.push((circle_loop(c, a.radius), a.source));
         } else {
             let end = c + Point::new(e.cos(), e.sin()) * a.radius;
             loose.push(LooseElement { a: start, b: end, bulge: (sweep / 4.0).tan() });
+            sources.push(a.source);
         }
     }
     for c in &d.circles {
-        loops.push(circle_loop(pt(c.center), c.radius));
+        loops.push((circle_loop(pt(c.center), c.radius), c.source));
     }
-    let diag = scale_of(
-        loops.iter().flat_map(|l| l.vertices.iter().map(|v| v.p)).chain(loose.iter().flat_map(|e| [e.a, e.b])),
+    let diagonal = scale_of(
+        loops.iter().flat_map(|(l, _)| l.vertices.iter().map(|v| v.p)).chain(loose.iter().flat_map(|e| [e.a, e.b])),
     );
-    let chained = chain_loops(&loose, opts.chain_tolerance_for(diag))?;
-    loops.extend(chained);
+    DrawingParts { loops, loose, sources, diagonal }
+}
+
+/// Loops from a parsed drawing: closed polylines and circles as they are,
+/// everything else chained. The largest loop becomes the outer boundary.
+fn drawing_loops(d: &RawDrawing, opts: &ShapeOptions) -> Result<Vec<Loop>, ShapeError> {
+    let parts = drawing_parts(d);
+    let mut loops: Vec<Loop> = parts.loops.into_iter().map(|(l, _)| l).collect();
+    loops.extend(chain_loops(&parts.loose, opts.chain_tolerance_for(parts.diagonal))?);
     Ok(outer_first(loops))
 }
 
@@ -105,7 +128,8 @@ fn svg_arc_bulge(from: Point, seg: &PathSeg, source: usize) -> Result<f64, Shape
     Ok((theta / 4.0).tan() * if sweep { 1.0 } else { -1.0 })
 }
 
-fn svg_loops(paths: &[SvgSubpath], opts: &ShapeOptions) -> Result<Vec<Loop>, ShapeError> {
+/// An SVG document's subpaths as a drawing of polylines.
+pub(crate) fn svg_drawing(paths: &[SvgSubpath]) -> Result<RawDrawing, ShapeError> {
     let mut drawing = RawDrawing::default();
     for sp in paths {
         let mut verts = Vec::with_capacity(sp.segs.len() + 1);
@@ -126,7 +150,11 @@ fn svg_loops(paths: &[SvgSubpath], opts: &ShapeOptions) -> Result<Vec<Loop>, Sha
         }
         drawing.polylines.push(RawPolyline { vertices: verts, closed: sp.closed, source: sp.source });
     }
-    drawing_loops(&drawing, opts)
+    Ok(drawing)
+}
+
+fn svg_loops(paths: &[SvgSubpath], opts: &ShapeOptions) -> Result<Vec<Loop>, ShapeError> {
+    drawing_loops(&svg_drawing(paths)?, opts)
 }
 
 impl Shape2d {
@@ -160,22 +188,14 @@ impl Shape2d {
     /// `.dxf`, `.svg`) or, failing that, from the first non-blank character.
     pub fn from_file(path: impl AsRef<std::path::Path>, opts: &ShapeOptions) -> Result<Shape2d, ShapeError> {
         let path = path.as_ref();
-        let io_err = |e: std::io::Error| ShapeError::Io { path: path.display().to_string(), message: e.to_string() };
-        let bytes = std::fs::read(path).map_err(io_err)?;
+        let bytes = read_bytes(path)?;
         let hint = Format::from_path(path);
-        let looks_json = || bytes.iter().find(|b| !b.is_ascii_whitespace()) == Some(&b'{');
-        if hint == Some(Format::Json) || (hint.is_none() && looks_json()) {
+        if hint == Some(Format::Json) || (hint.is_none() && looks_json(&bytes)) {
             if let Some(raw) = json::read_loops_fast(&bytes) {
                 return Shape2d::from_raw_json(raw, opts);
             }
         }
-        // Strict decoding first: it is several times faster than the lossy
-        // one, which is kept for files with stray bytes in comments.
-        let text = match std::str::from_utf8(&bytes) {
-            Ok(t) => std::borrow::Cow::Borrowed(t),
-            Err(_) => String::from_utf8_lossy(&bytes),
-        };
-        let format = hint.unwrap_or_else(|| sniff(&text));
+        let (text, format) = decode(&bytes, hint);
         Shape2d::from_str_as(&text, format, opts)
     }
 
@@ -187,6 +207,28 @@ impl Shape2d {
             Format::Svg => Shape2d::from_svg_str(text, opts),
         }
     }
+}
+
+/// A file's bytes, or the I/O error naming it.
+pub(crate) fn read_bytes(path: &std::path::Path) -> Result<Vec<u8>, ShapeError> {
+    std::fs::read(path).map_err(|e| ShapeError::Io { path: path.display().to_string(), message: e.to_string() })
+}
+
+/// True when the first non-blank byte opens a JSON object.
+pub(crate) fn looks_json(bytes: &[u8]) -> bool {
+    bytes.iter().find(|b| !b.is_ascii_whitespace()) == Some(&b'{')
+}
+
+/// A file's text and format (`hint` from the extension, else sniffed).
+/// Strict decoding first: it is several times faster than the lossy one,
+/// which is kept for files with stray bytes in comments.
+pub(crate) fn decode(bytes: &[u8], hint: Option<Format>) -> (std::borrow::Cow<'_, str>, Format) {
+    let text = match std::str::from_utf8(bytes) {
+        Ok(t) => std::borrow::Cow::Borrowed(t),
+        Err(_) => String::from_utf8_lossy(bytes),
+    };
+    let format = hint.unwrap_or_else(|| sniff(&text));
+    (text, format)
 }
 
 /// Guesses a format from content: `{` JSON, `<` SVG, otherwise DXF.

@@ -4,4 +4,5 @@
 
 pub(crate) mod chain;
 pub(crate) mod import;
+pub(crate) mod profiles;
 pub mod samples;
