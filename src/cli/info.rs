@@ -17,9 +17,14 @@ pub fn report(s: &Shape2d) -> String {
     out += &format!("area: {}\n", s.area());
     out += &format!("bounding box: [{}, {}] x [{}, {}]\n", bb.min.x, bb.max.x, bb.min.y, bb.max.y);
     out += &format!("tolerance: {:e}\n", s.tolerance());
-    let reversed: Vec<String> = (0..s.loops().len()).filter(|&l| s.was_reversed(l)).map(|l| l.to_string()).collect();
+    // The first few, and how many: a plate of 10^4 holes drawn the wrong
+    // way round named every one.
+    const NAMED: usize = 10;
+    let reversed: Vec<usize> = (0..s.loops().len()).filter(|&l| s.was_reversed(l)).collect();
     if !reversed.is_empty() {
-        out += &format!("reversed to normalise orientation: loop(s) {}\n", reversed.join(", "));
+        let named: Vec<String> = reversed.iter().take(NAMED).map(|l| l.to_string()).collect();
+        let more = if reversed.len() > NAMED { format!(" … ({} in all)", reversed.len()) } else { String::new() };
+        out += &format!("reversed to normalise orientation: loop(s) {}{more}\n", named.join(", "));
     }
     if s.flattened_arcs() > 0 {
         out += &format!("nearly straight arcs stored as segments: {}\n", s.flattened_arcs());
@@ -54,7 +59,13 @@ pub fn run(args: &ShapeArgs) -> Result<(), ExitCode> {
 /// first few of each.
 fn put_ignored(d: &Drawing2d) {
     const SHOWN: usize = 5;
-    for kind in [IgnoredKind::OpenChain, IgnoredKind::FlatLoop, IgnoredKind::DuplicateLoop, IgnoredKind::InvalidShape] {
+    for kind in [
+        IgnoredKind::OpenChain,
+        IgnoredKind::FlatLoop,
+        IgnoredKind::DuplicateLoop,
+        IgnoredKind::TouchingLoop,
+        IgnoredKind::InvalidShape,
+    ] {
         let all: Vec<_> = d.ignored.iter().filter(|i| i.kind == kind).collect();
         if all.is_empty() {
             continue;

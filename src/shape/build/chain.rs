@@ -62,37 +62,6 @@ impl EndGrid {
 /// element (index in the partial loop, loop index = number of loops closed
 /// before it) whose end finds no partner within `tol`.
 pub fn chain_loops(elems: &[LooseElement], tol: f64) -> Result<Vec<Loop>, ShapeError> {
-    let mut loops = Vec::new();
-    chain(elems, tol, |chained| match chained {
-        Chained::Loop(l, _) => {
-            loops.push(l);
-            Ok(())
-        }
-        Chained::Open { elements, gap, position } => Err(ShapeError::NotClosed {
-            at: ElementRef { loop_index: loops.len(), element: elements.len() - 1 },
-            gap,
-            position,
-        }),
-    })?;
-    Ok(loops)
-}
-
-/// What chaining found, one chain at a time.
-pub enum Chained {
-    /// A closed loop and the indices of the elements it was chained from,
-    /// in loop order.
-    Loop(Loop, Vec<usize>),
-    /// A chain whose end (`position`) finds no partner within the
-    /// tolerance: its elements' indices in chaining order, and the
-    /// distance from that end to the nearest free end or to the chain's
-    /// start (model units).
-    Open { elements: Vec<usize>, gap: f64, position: Point },
-}
-
-/// Chains loose elements, handing each closed loop and each open chain to
-/// `found` (every element lands in exactly one); stops at `found`'s first
-/// error. An open chain's elements are not offered to another chain.
-pub fn chain<E>(elems: &[LooseElement], tol: f64, mut found: impl FnMut(Chained) -> Result<(), E>) -> Result<(), E> {
     // A cell of 2·tol keeps every partner within the 3×3 neighbourhood while
     // bounding how many unrelated ends share a cell.
     let cell = (2.0 * tol).max(f64::MIN_POSITIVE * 1e10);
@@ -104,6 +73,7 @@ pub fn chain<E>(elems: &[LooseElement], tol: f64, mut found: impl FnMut(Chained)
         }
     }
     let mut used = vec![false; elems.len()];
+    let mut loops = Vec::new();
     for first in 0..elems.len() {
         if used[first] {
             continue;
@@ -111,7 +81,6 @@ pub fn chain<E>(elems: &[LooseElement], tol: f64, mut found: impl FnMut(Chained)
         used[first] = true;
         let start = elems[first].a;
         let mut verts = vec![Vertex { p: start, bulge: elems[first].bulge }];
-        let mut ids = vec![first];
         let mut end = elems[first].b;
         loop {
             let next = grid.nearest(end, elems, &used);
@@ -123,22 +92,22 @@ pub fn chain<E>(elems: &[LooseElement], tol: f64, mut found: impl FnMut(Chained)
                     // Entering at its end means walking it backwards.
                     let (far, bulge) = if is_end { (e.a, -e.bulge) } else { (e.b, e.bulge) };
                     verts.push(Vertex { p: end, bulge });
-                    ids.push(i);
                     end = far;
                 }
-                _ if closes => {
-                    found(Chained::Loop(Loop::new(verts), ids))?;
-                    break;
-                }
+                _ if closes => break,
                 other => {
                     let gap = other.map_or(end.dist(start), |(_, _, d)| d.min(end.dist(start)));
-                    found(Chained::Open { elements: ids, gap, position: end })?;
-                    break;
+                    return Err(ShapeError::NotClosed {
+                        at: ElementRef { loop_index: loops.len(), element: verts.len() - 1 },
+                        gap,
+                        position: end,
+                    });
                 }
             }
         }
+        loops.push(Loop::new(verts));
     }
-    Ok(())
+    Ok(loops)
 }
 
 /// Puts the loop with the largest enclosed area first (the outer boundary),

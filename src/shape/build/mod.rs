@@ -4,5 +4,6 @@
 
 pub(crate) mod chain;
 pub(crate) mod import;
+pub(crate) mod profile_graph;
 pub(crate) mod profiles;
 pub mod samples;

@@ -6,13 +6,14 @@
 
 use crate::io::{dxf, svg_path, Format, RawDrawing};
 use crate::kernel::{BBox, FilteredKernel, Point};
-use crate::shape::build::chain::{chain, Chained};
 use crate::shape::build::import::{decode, drawing_parts, looks_json, read_bytes, svg_drawing};
+use crate::shape::build::profile_graph::profile_loops;
 use crate::shape::index::box_tree::BoxTree;
 use crate::shape::model::bulge_loop::Loop;
 use crate::shape::model::error::ShapeError;
 use crate::shape::model::options::ShapeOptions;
 use crate::shape::shape2d::Shape2d;
+use std::collections::HashMap;
 use std::ops::ControlFlow;
 
 /// The shapes a drawing holds and what was left out of them.
@@ -53,9 +54,12 @@ pub enum IgnoredKind {
     FlatLoop,
     /// A copy of a loop drawn twice (the first is kept).
     DuplicateLoop,
-    /// An outer loop with its holes that does not validate (loops that
-    /// touch or cross, a loop drawn twice): the validation error says
-    /// where.
+    /// A loop inside a shape's outer loop that touches or crosses another
+    /// of its loops: left out, the shape kept without it.
+    TouchingLoop,
+    /// An outer loop with its holes that does not validate (the outer
+    /// loop crosses itself, or an element is degenerate): the validation
+    /// error says where.
     InvalidShape,
 }
 
@@ -66,6 +70,7 @@ impl IgnoredKind {
             IgnoredKind::OpenChain => "open chain",
             IgnoredKind::FlatLoop => "flat loop",
             IgnoredKind::DuplicateLoop => "duplicate loop",
+            IgnoredKind::TouchingLoop => "touching loop",
             IgnoredKind::InvalidShape => "invalid shape",
         }
     }
@@ -82,84 +87,118 @@ pub fn profiles(d: &RawDrawing, opts: &ShapeOptions) -> Drawing2d {
     let tol = opts.chain_tolerance_for(parts.diagonal);
     let mut loops = parts.loops;
     let mut ignored = Vec::new();
-    let _ = chain(&parts.loose, tol, |found| {
-        match found {
-            Chained::Loop(l, ids) => loops.push((l, parts.sources[ids[0]])),
-            Chained::Open { elements, gap, position } => ignored.push(Ignored {
-                kind: IgnoredKind::OpenChain,
-                source: parts.sources[elements[0]],
-                position,
-                reason: format!("{} entities end {gap:.3e} from any other free end", elements.len()),
-                cause: None,
-            }),
-        }
-        Ok::<(), ()>(())
-    });
+    let found = profile_loops(&parts.loose, tol);
+    loops.extend(found.loops.into_iter().map(|(l, ids)| (l, parts.sources[ids[0]])));
+    for (run, position) in found.open {
+        let first = run.iter().map(|&i| parts.sources[i]).min().unwrap_or(0);
+        ignored.push(Ignored {
+            kind: IgnoredKind::OpenChain,
+            source: first,
+            position,
+            reason: format!("{} entities that close no loop", run.len()),
+            cause: None,
+        });
+    }
     let (flat, loops): (Vec<_>, Vec<_>) = loops.into_iter().partition(|(l, _)| l.signed_area() == 0.0);
     ignored.extend(flat.into_iter().map(|(l, source)| Ignored {
         kind: IgnoredKind::FlatLoop,
         source,
         position: l.vertices().first().map_or(Point::default(), |v| v.p),
-        reason: "the loop encloses no area (entities drawn twice?)".into(),
+        reason: "the loop encloses no area in sum (it crosses itself, or its entities are drawn twice)".into(),
         cause: None,
     }));
     let (loops, twice) = drop_duplicates(loops, tol);
     ignored.extend(twice);
     let mut shapes = Vec::new();
     for group in nest(loops) {
-        let (source, position) = (group[0].1, group[0].0.vertices()[0].p);
-        match Shape2d::from_loops(group.into_iter().map(|(l, _)| l).collect(), opts) {
-            Ok(s) => shapes.push(s),
-            Err(e) => ignored.push(Ignored {
-                kind: IgnoredKind::InvalidShape,
-                source,
-                position,
-                reason: e.to_string(),
-                cause: Some(e),
-            }),
+        if let Some(shape) = validate(group, opts, &mut ignored) {
+            shapes.push(shape);
         }
     }
     Drawing2d { shapes, ignored }
+}
+
+/// The shape of a group (outer loop first), without the holes that touch
+/// or cross another of its loops (each reported, with the validation
+/// error naming both); `None` with the group reported when the outer loop
+/// itself is at fault or the error is another.
+fn validate(mut group: Vec<(Loop, usize)>, opts: &ShapeOptions, ignored: &mut Vec<Ignored>) -> Option<Shape2d> {
+    loop {
+        let loops = group.iter().map(|(l, _)| l.clone()).collect();
+        let e = match Shape2d::from_loops(loops, opts) {
+            Ok(s) => return Some(s),
+            Err(e) => e,
+        };
+        // The later of two loops that meet (the smaller: holes follow
+        // their outer loop by decreasing area), unless that is the outer.
+        let culprit = match e {
+            ShapeError::Intersection { first, second, .. } => first.loop_index.max(second.loop_index),
+            _ => 0,
+        };
+        let (l, source) = if culprit == 0 { group.swap_remove(0) } else { group.remove(culprit) };
+        let kind = if culprit == 0 { IgnoredKind::InvalidShape } else { IgnoredKind::TouchingLoop };
+        let position = l.vertices()[0].p;
+        ignored.push(Ignored { kind, source, position, reason: e.to_string(), cause: Some(e) });
+        if culprit == 0 {
+            return None;
+        }
+    }
 }
 
 /// Points of a loop tested for lying inside another (element midpoints).
 const PROBES: usize = 3;
 
 /// `loops` sorted by decreasing enclosed area, without the copies of a
-/// loop drawn twice (same area, box and vertices within `tol` of the
-/// first's, in either direction), which are returned as ignored.
+/// loop drawn twice (the same vertices within `tol`, in either direction
+/// and from any start, and the same area), which are returned as ignored.
 fn drop_duplicates(mut loops: Vec<(Loop, usize)>, tol: f64) -> (Vec<(Loop, usize)>, Vec<Ignored>) {
     loops.sort_by(|a, b| b.0.signed_area().abs().total_cmp(&a.0.signed_area().abs()));
-    let same = |a: &Loop, b: &Loop| {
-        let (ba, bb) = (a.bbox(), b.bbox());
-        a.len() == b.len()
-            && ba.min.dist(bb.min) <= tol
-            && ba.max.dist(bb.max) <= tol
-            && (a.signed_area().abs() - b.signed_area().abs()).abs() <= tol * (ba.width() + ba.height())
-            && a.vertices().iter().all(|v| b.vertices().iter().any(|w| v.p.dist(w.p) <= tol))
-    };
-    let mut kept: Vec<(Loop, usize)> = Vec::with_capacity(loops.len());
+    // Kept loops by the cell of their box's lower corner: a copy's corner
+    // lies within `tol`, in that cell or a neighbour.
+    let cell = tol.max(f64::MIN_POSITIVE * 1e10);
+    let key = |p: Point| ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);
+    let mut cells: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+    let mut kept: Vec<(Loop, usize, f64)> = Vec::with_capacity(loops.len());
     let mut twice = Vec::new();
     for (l, source) in loops {
-        // Equal areas are neighbours in the order: look back while they are.
-        let area = l.signed_area().abs();
-        let first = kept
-            .iter()
-            .rev()
-            .take_while(|(k, _)| k.signed_area().abs() - area <= tol * (k.bbox().width() + k.bbox().height()))
-            .find(|(k, _)| same(k, &l));
+        let (bb, area) = (l.bbox(), l.signed_area().abs());
+        let (kx, ky) = key(bb.min);
+        let first = (-1..=1)
+            .flat_map(|dx| (-1..=1).map(move |dy| (kx.saturating_add(dx), ky.saturating_add(dy))))
+            .filter_map(|k| cells.get(&k))
+            .flatten()
+            .copied()
+            .find(|&k| {
+                let (other, _, other_area) = &kept[k];
+                (other_area - area).abs() <= tol * (bb.width() + bb.height()) && same_cycle(other, &l, tol)
+            });
         match first {
-            Some(&(_, at)) => twice.push(Ignored {
+            Some(k) => twice.push(Ignored {
                 kind: IgnoredKind::DuplicateLoop,
                 source,
                 position: l.vertices()[0].p,
-                reason: format!("drawn twice: the same loop as the one at line/byte {at}, which is kept"),
+                reason: format!("drawn twice: the same loop as the one at line/byte {}, which is kept", kept[k].1),
                 cause: None,
             }),
-            None => kept.push((l, source)),
+            None => {
+                cells.entry((kx, ky)).or_default().push(kept.len());
+                kept.push((l, source, area));
+            }
         }
     }
-    (kept, twice)
+    (kept.into_iter().map(|(l, s, _)| (l, s)).collect(), twice)
+}
+
+/// True when `b` has the vertices of `a` within `tol`, in the same cyclic
+/// order either way round.
+fn same_cycle(a: &Loop, b: &Loop, tol: f64) -> bool {
+    let (va, vb) = (a.vertices(), b.vertices());
+    let n = va.len();
+    n == vb.len()
+        && (0..n).filter(|&j| vb[j].p.dist(va[0].p) <= tol).any(|j| {
+            (0..n).all(|i| vb[(j + i) % n].p.dist(va[i].p) <= tol)
+                || (0..n).all(|i| vb[(j + n - i) % n].p.dist(va[i].p) <= tol)
+        })
 }
 
 /// Groups loops (with their sources, by decreasing area) into shapes: each
