@@ -283,3 +283,53 @@ fn offset_bad_arguments_name_the_option() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("intersect"));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Two parts side by side and a centre line, drawn as DXF LINEs.
+fn two_part_drawing(dir: &Path) -> PathBuf {
+    let line = |a: [f64; 2], b: [f64; 2]| {
+        format!("0\nLINE\n8\nPART\n10\n{}\n20\n{}\n11\n{}\n21\n{}\n", a[0], a[1], b[0], b[1])
+    };
+    let square = |x: f64, s: f64| {
+        [[x, 0.0], [x + s, 0.0], [x + s, s], [x, s]]
+            .iter()
+            .zip([[x + s, 0.0], [x + s, s], [x, s], [x, 0.0]])
+            .map(|(a, b)| line(*a, b))
+            .collect::<String>()
+    };
+    let text = format!(
+        "0\nSECTION\n2\nENTITIES\n{}{}{}0\nENDSEC\n0\nEOF\n",
+        square(0.0, 4.0),
+        square(10.0, 2.0),
+        line([-1.0, 2.0], [5.0, 2.0])
+    );
+    let p = dir.join("parts.dxf");
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+#[test]
+fn a_drawing_of_two_parts_gives_two_shapes_and_says_what_it_ignored() {
+    let dir = std::env::temp_dir().join(format!("medax-cli-parts-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let drawing = two_part_drawing(&dir);
+    let json = dir.join("parts.json");
+    let out = medax().arg("info").arg(&drawing).arg("--json").arg(&json).output().unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{stdout}{}", String::from_utf8_lossy(&out.stderr));
+    assert!(stdout.contains("2 shapes") && stdout.contains("ignored: 1 open chain"), "{stdout}");
+    let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(doc["shapes"].as_array().unwrap().len(), 2);
+    assert_eq!(doc["ignored"][0]["kind"], "open_chain");
+    assert_eq!(doc["ignored"][0]["layer"], "PART");
+    // The other commands take one shape: the second with --shape 1.
+    let axis = dir.join("axis.json");
+    let out = medax().arg("axis").arg(&drawing).args(["--shape", "1", "--json"]).arg(&axis).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("2 shape(s)"));
+    let out = medax().arg("axis").arg(&drawing).args(["--shape", "2"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    // Under --strict the drawing is refused whole, as before.
+    let out = medax().arg("info").arg(&drawing).arg("--strict").output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    std::fs::remove_dir_all(&dir).ok();
+}

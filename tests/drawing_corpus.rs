@@ -4,7 +4,7 @@
 //! here without the library's reader, chaining or validation. Files where
 //! that graph closes a cycle should give a shape and the others none.
 
-use medax::shape::{Drawing2d, ShapeOptions};
+use medax::shape::{Drawing2d, DrawingOptions, ShapeOptions};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
@@ -232,7 +232,7 @@ fn profiles_agree_with_an_independent_cycle_test_on_the_librecad_library() {
     for f in &files {
         let text = String::from_utf8_lossy(&std::fs::read(f).unwrap()).into_owned();
         let cycle = closes_a_cycle(&curves(&text));
-        let shape = Drawing2d::from_file(f, &opts).is_ok_and(|d| !d.shapes.is_empty());
+        let shape = Drawing2d::from_file(f, &opts, &DrawingOptions::default()).is_ok_and(|d| !d.shapes.is_empty());
         cycles += usize::from(cycle);
         shapes += usize::from(shape);
         if cycle == shape {

@@ -6,7 +6,7 @@
 
 use libfuzzer_sys::fuzz_target;
 use medax::io::Format;
-use medax::shape::{Drawing2d, Shape2d, ShapeOptions};
+use medax::shape::{Drawing2d, DrawingOptions, Shape2d, ShapeOptions};
 
 fuzz_target!(|data: &[u8]| {
     let text = String::from_utf8_lossy(data);
@@ -18,7 +18,7 @@ fuzz_target!(|data: &[u8]| {
     if let Ok(shape) = Shape2d::from_str_as(&text, Format::Dxf, &opts) {
         round_trip(&shape);
     }
-    if let Ok(drawing) = Drawing2d::from_str_as(&text, Format::Dxf, &opts) {
+    if let Ok(drawing) = Drawing2d::from_str_as(&text, Format::Dxf, &opts, &DrawingOptions::default()) {
         drawing.shapes.iter().for_each(round_trip);
     }
 });

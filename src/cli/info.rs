@@ -2,6 +2,7 @@
 
 use super::{fail, ShapeArgs};
 use medax::shape::{Drawing2d, IgnoredKind, Shape2d};
+use std::path::Path;
 use std::process::ExitCode;
 use std::time::Instant;
 
@@ -32,9 +33,13 @@ pub fn report(s: &Shape2d) -> String {
     out
 }
 
-pub fn run(args: &ShapeArgs) -> Result<(), ExitCode> {
+pub fn run(args: &ShapeArgs, json: Option<&Path>) -> Result<(), ExitCode> {
     let t = Instant::now();
     let d = args.load_drawing().map_err(|e| fail(&args.shape, &e))?;
+    if let Some(path) = json {
+        super::write_file(path, &d.to_json())?;
+        out!("wrote {}", path.display());
+    }
     if d.shapes.is_empty() {
         put_ignored(&d);
         return Err(fail(&args.shape, &super::no_shape(&d, 0)));
@@ -72,10 +77,14 @@ fn put_ignored(d: &Drawing2d) {
         }
         out!("ignored: {} {}(s)", all.len(), kind.name());
         for i in all.iter().take(SHOWN) {
-            out!("  at line/byte {} near ({}, {}): {}", i.source, i.position.x, i.position.y, i.reason);
+            let layer = if i.layer.is_empty() { String::new() } else { format!(", layer {}", i.layer) };
+            out!("  at line/byte {}{layer} near ({}, {}): {}", i.source, i.position.x, i.position.y, i.reason);
         }
         if all.len() > SHOWN {
             out!("  … and {} more", all.len() - SHOWN);
         }
+    }
+    if let Some((p, widest)) = d.gaps.first() {
+        out!("gaps closed: {} (widest {widest:e} at ({}, {}))", d.gaps.len(), p.x, p.y);
     }
 }

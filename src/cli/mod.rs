@@ -23,7 +23,7 @@ mod offset;
 mod voronoi;
 
 use clap::{Parser, Subcommand};
-use medax::shape::{Drawing2d, IgnoredKind, Shape2d, ShapeError, ShapeOptions};
+use medax::shape::{Drawing2d, DrawingOptions, IgnoredKind, Shape2d, ShapeError, ShapeOptions};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -55,6 +55,9 @@ struct ShapeArgs {
     /// Refuse a DXF/SVG drawing with anything but closed loops of one shape (no profile extraction).
     #[arg(long)]
     strict: bool,
+    /// Take the curves of this DXF layer only (repeatable; default: every layer).
+    #[arg(long = "layer", value_name = "NAME")]
+    layers: Vec<String>,
 }
 
 impl ShapeArgs {
@@ -71,9 +74,9 @@ impl ShapeArgs {
     fn load_drawing(&self) -> Result<Drawing2d, ShapeError> {
         if self.strict {
             let shape = Shape2d::from_file(&self.shape, &self.options())?;
-            return Ok(Drawing2d { shapes: vec![shape], ignored: Vec::new() });
+            return Ok(Drawing2d { shapes: vec![shape], ignored: Vec::new(), gaps: Vec::new() });
         }
-        Drawing2d::from_file(&self.shape, &self.options())
+        Drawing2d::from_file(&self.shape, &self.options(), &DrawingOptions { layers: self.layers.clone() })
     }
 
     /// The shape to work on: the one `--shape` picks (the largest by
@@ -140,10 +143,13 @@ impl RunArgs {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Validate a shape and report loops, elements, joints, area and extent.
+    /// Validate a shape, or the shapes of a drawing, and report loops, elements, joints, area, extent and what was ignored.
     Info {
         #[command(flatten)]
         shape: ShapeArgs,
+        /// Write the drawing's shapes, ignored things and closed gaps as JSON.
+        #[arg(long)]
+        json: Option<PathBuf>,
     },
     /// Draw a shape as SVG (arcs stay exact arcs).
     Draw {
@@ -208,7 +214,7 @@ fn write_streamed(
 pub fn run() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command.unwrap_or(Command::Demo { output: "medax-demo.svg".into() }) {
-        Command::Info { shape } => info::run(&shape),
+        Command::Info { shape, json } => info::run(&shape, json.as_deref()),
         Command::Axis(args) => axis::run(&args),
         Command::Voronoi(args) => voronoi::run(&args),
         Command::Offset(args) => offset::run(&args),

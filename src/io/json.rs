@@ -81,7 +81,12 @@ pub fn read_loops_generic(text: &str) -> Result<Vec<RawPolyline>, ParseError> {
         .loops
         .into_iter()
         .enumerate()
-        .map(|(li, lp)| RawPolyline { vertices: lp.into_iter().map(|v| v.0).collect(), closed: true, source: li })
+        .map(|(li, lp)| RawPolyline {
+            vertices: lp.into_iter().map(|v| v.0).collect(),
+            closed: true,
+            source: li,
+            layer: 0,
+        })
         .collect())
 }
 

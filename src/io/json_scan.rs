@@ -149,7 +149,7 @@ pub(super) fn scan_loops(bytes: &[u8], piece_bytes: usize) -> Option<Vec<RawPoly
         loops
             .into_iter()
             .enumerate()
-            .map(|(source, vertices)| RawPolyline { vertices, closed: true, source })
+            .map(|(source, vertices)| RawPolyline { vertices, closed: true, source, layer: 0 })
             .collect(),
     )
 }

@@ -105,6 +105,9 @@ pub struct RawPolyline {
     pub closed: bool,
     /// 1-based source line (DXF) or byte offset (SVG) where it starts.
     pub source: usize,
+    /// Its layer: an index into [`RawDrawing::layers`] (0 in formats
+    /// without layers).
+    pub layer: u32,
 }
 
 /// A circular arc as read from a file: centre, radius and angles in degrees,
@@ -121,6 +124,8 @@ pub struct RawArc {
     pub end_deg: f64,
     /// 1-based source line.
     pub source: usize,
+    /// Its layer: an index into [`RawDrawing::layers`].
+    pub layer: u32,
 }
 
 /// A line segment as read from a file.
@@ -132,6 +137,8 @@ pub struct RawLine {
     pub b: [f64; 2],
     /// 1-based source line.
     pub source: usize,
+    /// Its layer: an index into [`RawDrawing::layers`].
+    pub layer: u32,
 }
 
 /// A full circle as read from a file.
@@ -143,6 +150,8 @@ pub struct RawCircle {
     pub radius: f64,
     /// 1-based source line (DXF) or byte offset (SVG).
     pub source: usize,
+    /// Its layer: an index into [`RawDrawing::layers`].
+    pub layer: u32,
 }
 
 /// Everything geometric a drawing file held, before chaining into loops.
@@ -156,4 +165,24 @@ pub struct RawDrawing {
     pub arcs: Vec<RawArc>,
     /// Full circles (each is a loop).
     pub circles: Vec<RawCircle>,
+    /// Layer names, indexed by the entities' `layer`; empty in formats
+    /// without layers.
+    pub layers: Vec<String>,
+    /// Entities that are not curves medax reads (text, dimensions,
+    /// hatches, points, block references, splines, ellipses…), in file
+    /// order.
+    pub skipped: Vec<RawSkipped>,
+}
+
+/// An entity of a drawing that is not a curve medax reads.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RawSkipped {
+    /// Its type as the file names it (`TEXT`, `HATCH`, `INSERT`…).
+    pub entity: String,
+    /// Its layer: an index into [`RawDrawing::layers`].
+    pub layer: u32,
+    /// Its insertion or first point (groups 10 and 20) where it has one.
+    pub position: Option<[f64; 2]>,
+    /// 1-based source line.
+    pub source: usize,
 }

@@ -3,7 +3,8 @@
 //! direction says so; sections other than ENTITIES skipped.
 
 use crate::io::dxf::pairs::{error, integer, number, Pair};
-use crate::io::{ParseError, RawArc, RawCircle, RawDrawing, RawLine, RawPolyline, RawVertex};
+use crate::io::{ParseError, RawArc, RawCircle, RawDrawing, RawLine, RawPolyline, RawSkipped, RawVertex};
+use std::collections::HashMap;
 
 /// POLYLINE flag bits of 3D polylines, polygon meshes and polyface meshes,
 /// which have no place in a 2D shape and are skipped.
@@ -86,7 +87,13 @@ pub(crate) struct Reader {
     pub(crate) out: RawDrawing,
     section: Section,
     polyline: Option<OpenPolyline>,
+    /// Layer names seen so far, to their index in `out.layers`.
+    layer_ids: HashMap<String, u32>,
 }
+
+/// Records that only structure the file or belong to a POLYLINE: never
+/// reported as skipped entities.
+const STRUCTURE: [&str; 4] = ["SEQEND", "EOF", "ENDTAB", "ENDBLK"];
 
 impl Reader {
     /// Interprets one complete record: its `0` pair and the groups after it.
@@ -115,13 +122,14 @@ impl Reader {
         }
         // Any other entity ends a POLYLINE, also when its SEQEND is missing.
         self.flush_polyline();
+        let layer = self.layer(groups);
         match name.as_str() {
-            "LWPOLYLINE" => self.lwpolyline(at, groups),
+            "LWPOLYLINE" => self.lwpolyline(at, layer, groups),
             "POLYLINE" => {
                 let f = Fields::read("POLYLINE", at, groups)?;
                 let flags = f.flags.unwrap_or(0);
                 self.polyline = Some(OpenPolyline {
-                    polyline: RawPolyline { vertices: Vec::new(), closed: flags & 1 != 0, source: at },
+                    polyline: RawPolyline { vertices: Vec::new(), closed: flags & 1 != 0, source: at, layer },
                     skip: flags & POLYLINE_NOT_2D != 0,
                     mirror: f.mirrored(),
                 });
@@ -134,6 +142,7 @@ impl Reader {
                     a: [required("LINE", at, f.x, 10, "start x")?, required("LINE", at, f.y, 20, "start y")?],
                     b: [required("LINE", at, f.x2, 11, "end x")?, required("LINE", at, f.y2, 21, "end y")?],
                     source: at,
+                    layer,
                 };
                 self.out.lines.push(line);
                 Ok(())
@@ -146,6 +155,7 @@ impl Reader {
                     start_deg: required("ARC", at, f.start_deg, 50, "start angle")?,
                     end_deg: required("ARC", at, f.end_deg, 51, "end angle")?,
                     source: at,
+                    layer,
                 };
                 if f.mirrored() {
                     // Mirroring reverses the direction: the old end becomes the start.
@@ -166,6 +176,7 @@ impl Reader {
                     ],
                     radius: required("CIRCLE", at, f.radius, 40, "radius")?,
                     source: at,
+                    layer,
                 };
                 if f.mirrored() {
                     circle.center[0] = -circle.center[0];
@@ -173,9 +184,30 @@ impl Reader {
                 self.out.circles.push(circle);
                 Ok(())
             }
-            // SEQEND only ends the POLYLINE, done above; the rest is not geometry we read.
-            _ => Ok(()),
+            // SEQEND only ends the POLYLINE, done above.
+            _ if STRUCTURE.contains(&name.as_str()) => Ok(()),
+            _ => {
+                // Not geometry we read: kept to be reported. Its point is
+                // only a hint, so a value that does not parse is no error.
+                let coord = |code: i32| groups.iter().find(|g| g.code == code)?.value.trim().parse::<f64>().ok();
+                let position = coord(10).zip(coord(20)).map(|(x, y)| [x, y]);
+                self.out.skipped.push(RawSkipped { entity: name, layer, position, source: at });
+                Ok(())
+            }
         }
+    }
+
+    /// The index of the entity's layer (group 8; "0", DXF's default
+    /// layer, when it has none), adding the name on first sight.
+    fn layer(&mut self, groups: &[Pair]) -> u32 {
+        let name = groups.iter().find(|g| g.code == 8).map_or("0", |g| g.value.trim());
+        if let Some(&id) = self.layer_ids.get(name) {
+            return id;
+        }
+        let id = self.out.layers.len() as u32;
+        self.out.layers.push(name.to_string());
+        self.layer_ids.insert(name.to_string(), id);
+        id
     }
 
     fn vertex(&mut self, at: usize, groups: &[Pair]) -> Result<(), ParseError> {
@@ -203,7 +235,7 @@ impl Reader {
         Ok(())
     }
 
-    fn lwpolyline(&mut self, at: usize, groups: &[Pair]) -> Result<(), ParseError> {
+    fn lwpolyline(&mut self, at: usize, layer: u32, groups: &[Pair]) -> Result<(), ParseError> {
         const E: &str = "LWPOLYLINE";
         // Group 90 (vertex count) is not trusted: the 10 groups are the vertices.
         let mut vertices: Vec<RawVertex> = Vec::new();
@@ -247,7 +279,7 @@ impl Reader {
                 v.bulge = -v.bulge;
             }
         }
-        self.out.polylines.push(RawPolyline { vertices, closed, source: at });
+        self.out.polylines.push(RawPolyline { vertices, closed, source: at, layer });
         Ok(())
     }
 

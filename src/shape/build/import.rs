@@ -40,38 +40,50 @@ fn scale_of(points: impl Iterator<Item = Point>) -> f64 {
     bb.diagonal()
 }
 
+/// Where a curve of a drawing comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub(crate) struct Origin {
+    /// 1-based line (DXF) or byte offset (SVG) of its entity.
+    pub source: usize,
+    /// Its layer, an index into [`RawDrawing::layers`].
+    pub layer: u32,
+}
+
 /// A parsed drawing's curves: closed polylines and circles as loops,
-/// everything else as loose elements to chain, each with its source.
+/// everything else as loose elements to chain, each with its origin.
 pub(crate) struct DrawingParts {
-    /// Loops and the source of their entity.
-    pub loops: Vec<(Loop, usize)>,
+    /// Loops and the origin of their entity.
+    pub loops: Vec<(Loop, Origin)>,
     /// Elements to chain.
     pub loose: Vec<LooseElement>,
-    /// The source of each loose element's entity.
-    pub sources: Vec<usize>,
-    /// The diagonal of the drawing's extent (model units).
+    /// The origin of each loose element's entity.
+    pub origins: Vec<Origin>,
+    /// The diagonal of the extent of the curves taken (model units).
     pub diagonal: f64,
 }
 
-/// Splits a parsed drawing into loops and loose elements.
-pub(crate) fn drawing_parts(d: &RawDrawing) -> DrawingParts {
+/// Splits a parsed drawing into loops and loose elements, taking the
+/// curves of the layers `take` accepts.
+pub(crate) fn drawing_parts(d: &RawDrawing, take: impl Fn(u32) -> bool) -> DrawingParts {
     let mut loops = Vec::new();
     let mut loose = Vec::new();
-    let mut sources = Vec::new();
-    for p in &d.polylines {
+    let mut origins = Vec::new();
+    for p in d.polylines.iter().filter(|p| take(p.layer)) {
         let elems = polyline_elements(p);
+        let origin = Origin { source: p.source, layer: p.layer };
         if p.closed {
-            loops.push((Loop::new(elems.iter().map(|e| Vertex { p: e.a, bulge: e.bulge }).collect()), p.source));
+            loops.push((Loop::new(elems.iter().map(|e| Vertex { p: e.a, bulge: e.bulge }).collect()), origin));
         } else {
-            sources.extend(std::iter::repeat_n(p.source, elems.len()));
+            origins.extend(std::iter::repeat_n(origin, elems.len()));
             loose.extend(elems);
         }
     }
-    for l in &d.lines {
+    for l in d.lines.iter().filter(|l| take(l.layer)) {
         loose.push(LooseElement { a: pt(l.a), b: pt(l.b), bulge: 0.0 });
-        sources.push(l.source);
+        origins.push(Origin { source: l.source, layer: l.layer });
     }
-    for a in &d.arcs {
+    for a in d.arcs.iter().filter(|a| take(a.layer)) {
+        let origin = Origin { source: a.source, layer: a.layer };
         let c = pt(a.center);
         let (s, e) = (a.start_deg.to_radians(), a.end_deg.to_radians());
         let mut sweep = (e - s).rem_euclid(TAU);
@@ -80,26 +92,26 @@ pub(crate) fn drawing_parts(d: &RawDrawing) -> DrawingParts {
         }
         let start = c + Point::new(s.cos(), s.sin()) * a.radius;
         if sweep >= TAU * (1.0 - 1e-15) {
-            loops.push((circle_loop(c, a.radius), a.source));
+            loops.push((circle_loop(c, a.radius), origin));
         } else {
             let end = c + Point::new(e.cos(), e.sin()) * a.radius;
             loose.push(LooseElement { a: start, b: end, bulge: (sweep / 4.0).tan() });
-            sources.push(a.source);
+            origins.push(origin);
         }
     }
-    for c in &d.circles {
-        loops.push((circle_loop(pt(c.center), c.radius), c.source));
+    for c in d.circles.iter().filter(|c| take(c.layer)) {
+        loops.push((circle_loop(pt(c.center), c.radius), Origin { source: c.source, layer: c.layer }));
     }
     let diagonal = scale_of(
         loops.iter().flat_map(|(l, _)| l.vertices.iter().map(|v| v.p)).chain(loose.iter().flat_map(|e| [e.a, e.b])),
     );
-    DrawingParts { loops, loose, sources, diagonal }
+    DrawingParts { loops, loose, origins, diagonal }
 }
 
 /// Loops from a parsed drawing: closed polylines and circles as they are,
 /// everything else chained. The largest loop becomes the outer boundary.
 fn drawing_loops(d: &RawDrawing, opts: &ShapeOptions) -> Result<Vec<Loop>, ShapeError> {
-    let parts = drawing_parts(d);
+    let parts = drawing_parts(d, |_| true);
     let mut loops: Vec<Loop> = parts.loops.into_iter().map(|(l, _)| l).collect();
     loops.extend(chain_loops(&parts.loose, opts.chain_tolerance_for(parts.diagonal))?);
     Ok(outer_first(loops))
@@ -148,7 +160,7 @@ pub(crate) fn svg_drawing(paths: &[SvgSubpath]) -> Result<RawDrawing, ShapeError
         } else if !sp.closed {
             verts.push(crate::io::RawVertex { x: cur.x, y: cur.y, bulge: 0.0 });
         }
-        drawing.polylines.push(RawPolyline { vertices: verts, closed: sp.closed, source: sp.source });
+        drawing.polylines.push(RawPolyline { vertices: verts, closed: sp.closed, source: sp.source, layer: 0 });
     }
     Ok(drawing)
 }

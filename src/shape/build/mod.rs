@@ -3,6 +3,7 @@
 //! shapes for tests, benchmarks and demos.
 
 pub(crate) mod chain;
+pub(crate) mod drawing;
 pub(crate) mod import;
 pub(crate) mod profile_graph;
 pub(crate) mod profiles;

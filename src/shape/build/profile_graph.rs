@@ -23,11 +23,16 @@ pub(crate) struct Profiles {
     /// Connected runs of curves in no loop (each index once), each with a
     /// point of it: a loose end where it has one.
     pub open: Vec<(Vec<usize>, Point)>,
+    /// Vertices of the loops where curve ends that did not meet exactly
+    /// were joined, and the widest gap joined there (model units).
+    pub gaps: Vec<(Point, f64)>,
 }
 
 /// The graph: vertex positions, and each curve's two end vertices.
 struct Graph {
     points: Vec<Point>,
+    /// The farthest end joined into each vertex.
+    widest: Vec<f64>,
     ends: Vec<[usize; 2]>,
     /// Curves at each vertex (a curve from a vertex to itself twice).
     at: Vec<Vec<usize>>,
@@ -41,6 +46,7 @@ impl Graph {
         let key = |p: Point| ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);
         let mut cells: HashMap<(i64, i64), Vec<usize>> = HashMap::with_capacity(elems.len());
         let mut points: Vec<Point> = Vec::new();
+        let mut widest: Vec<f64> = Vec::new();
         let mut vertex = |p: Point| {
             let (kx, ky) = key(p);
             let near = (-1..=1)
@@ -52,9 +58,13 @@ impl Graph {
                 .filter(|&(d, _)| d <= tol)
                 .min_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
             match near {
-                Some((_, v)) => v,
+                Some((d, v)) => {
+                    widest[v] = widest[v].max(d);
+                    v
+                }
                 None => {
                     points.push(p);
+                    widest.push(0.0);
                     cells.entry((kx, ky)).or_default().push(points.len() - 1);
                     points.len() - 1
                 }
@@ -66,7 +76,7 @@ impl Graph {
             at[u].push(i);
             at[v].push(i);
         }
-        Graph { points, ends, at }
+        Graph { points, widest, ends, at }
     }
 
     /// The other end of curve `e` from vertex `v`.
@@ -208,6 +218,9 @@ fn walk_cycles(elems: &[LooseElement], g: &Graph, state: &mut Live, out: &mut Pr
                 for &(u, _) in &cycle {
                     on_path.remove(&u);
                 }
+                out.gaps.extend(
+                    cycle.iter().filter(|&&(u, _)| g.widest[u] > 0.0).map(|&(u, _)| (g.points[u], g.widest[u])),
+                );
                 out.loops.push(loop_of(elems, g, &cycle));
             }
             let heading = -leaving(e, w);

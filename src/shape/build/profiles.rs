@@ -4,9 +4,9 @@
 //! the parts, and often several parts: refusing the whole file for one open
 //! line (as [`Shape2d::from_file`] does) refused 94 % of a real library.
 
-use crate::io::{dxf, svg_path, Format, RawDrawing};
+use crate::io::RawDrawing;
 use crate::kernel::{BBox, FilteredKernel, Point};
-use crate::shape::build::import::{decode, drawing_parts, looks_json, read_bytes, svg_drawing};
+use crate::shape::build::import::{drawing_parts, Origin};
 use crate::shape::build::profile_graph::profile_loops;
 use crate::shape::index::box_tree::BoxTree;
 use crate::shape::model::bulge_loop::Loop;
@@ -25,6 +25,11 @@ pub struct Drawing2d {
     pub shapes: Vec<Shape2d>,
     /// Everything of the drawing in no shape, in the order found.
     pub ignored: Vec<Ignored>,
+    /// Where the loops' curves did not meet within the validation
+    /// tolerance ([`ShapeOptions::tolerance_for`]) but within the chaining
+    /// tolerance, and were joined: the joint and the gap closed (model
+    /// units), widest first.
+    pub gaps: Vec<(Point, f64)>,
 }
 
 /// Something of a drawing that is in none of its shapes.
@@ -34,6 +39,8 @@ pub struct Ignored {
     pub kind: IgnoredKind,
     /// 1-based line (DXF) or byte offset (SVG) of its first entity.
     pub source: usize,
+    /// That entity's layer ("" in formats without layers).
+    pub layer: String,
     /// A point of it (model units): an open chain's loose end, a shape's
     /// first vertex.
     pub position: Point,
@@ -57,6 +64,12 @@ pub enum IgnoredKind {
     /// A loop inside a shape's outer loop that touches or crosses another
     /// of its loops: left out, the shape kept without it.
     TouchingLoop,
+    /// An entity that is not a curve medax reads (text, dimension, hatch,
+    /// point, block reference, spline, ellipse…): its type is the reason.
+    Entity,
+    /// The curves of a layer the selection leaves out, one report per
+    /// layer with their count.
+    OtherLayer,
     /// An outer loop with its holes that does not validate (the outer
     /// loop crosses itself, or an element is degenerate): the validation
     /// error says where.
@@ -68,6 +81,8 @@ impl IgnoredKind {
     pub fn name(self) -> &'static str {
         match self {
             IgnoredKind::OpenChain => "open chain",
+            IgnoredKind::Entity => "entity",
+            IgnoredKind::OtherLayer => "other layer",
             IgnoredKind::FlatLoop => "flat loop",
             IgnoredKind::DuplicateLoop => "duplicate loop",
             IgnoredKind::TouchingLoop => "touching loop",
@@ -76,53 +91,105 @@ impl IgnoredKind {
     }
 }
 
-/// The profiles of a parsed drawing: curve entities chained within the
-/// chaining tolerance ([`ShapeOptions::chain_tolerance_for`] of the
-/// drawing's extent), closed loops kept and grouped into shapes, open
-/// chains and shapes that do not validate reported in
+/// What to take out of a drawing.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct DrawingOptions {
+    /// Take the curves of these layers only (DXF group 8; "0" for entities
+    /// without one); empty: every layer.
+    pub layers: Vec<String>,
+}
+
+/// The things left out of a drawing, as they are found.
+struct Report<'a> {
+    /// The drawing's layer names.
+    layers: &'a [String],
+    out: Vec<Ignored>,
+}
+
+impl Report<'_> {
+    fn push(&mut self, kind: IgnoredKind, at: Origin, position: Point, reason: String, cause: Option<ShapeError>) {
+        let layer = self.layers.get(at.layer as usize).cloned().unwrap_or_default();
+        self.out.push(Ignored { kind, source: at.source, layer, position, reason, cause });
+    }
+}
+
+/// The profiles of a parsed drawing: curve entities of the selected
+/// layers chained within the chaining tolerance
+/// ([`ShapeOptions::chain_tolerance_for`] of their extent), closed loops
+/// kept and grouped into shapes; open chains, other entities, other
+/// layers and shapes that do not validate reported in
 /// [`Drawing2d::ignored`]. Never fails: a drawing without a closed loop
 /// gives no shapes.
-pub fn profiles(d: &RawDrawing, opts: &ShapeOptions) -> Drawing2d {
-    let parts = drawing_parts(d);
+pub fn profiles(d: &RawDrawing, opts: &ShapeOptions, select: &DrawingOptions) -> Drawing2d {
+    let taken: Vec<bool> =
+        d.layers.iter().map(|name| select.layers.is_empty() || select.layers.iter().any(|l| l == name)).collect();
+    let take = |layer: u32| taken.get(layer as usize).copied().unwrap_or(select.layers.is_empty());
+    let mut report = Report { layers: &d.layers, out: Vec::new() };
+    for e in d.skipped.iter().filter(|e| take(e.layer)) {
+        let at = Origin { source: e.source, layer: e.layer };
+        let position = e.position.map_or(Point::default(), |[x, y]| Point::new(x, y));
+        report.push(IgnoredKind::Entity, at, position, format!("{} is not a curve medax reads", e.entity), None);
+    }
+    left_out_layers(d, &take, &mut report);
+    let parts = drawing_parts(d, take);
     let tol = opts.chain_tolerance_for(parts.diagonal);
     let mut loops = parts.loops;
-    let mut ignored = Vec::new();
     let found = profile_loops(&parts.loose, tol);
-    loops.extend(found.loops.into_iter().map(|(l, ids)| (l, parts.sources[ids[0]])));
+    let mut gaps: Vec<(Point, f64)> =
+        found.gaps.into_iter().filter(|&(_, d)| d > opts.tolerance_for(parts.diagonal)).collect();
+    gaps.sort_by(|a, b| b.1.total_cmp(&a.1));
+    loops.extend(found.loops.into_iter().map(|(l, ids)| (l, parts.origins[ids[0]])));
     for (run, position) in found.open {
-        let first = run.iter().map(|&i| parts.sources[i]).min().unwrap_or(0);
-        ignored.push(Ignored {
-            kind: IgnoredKind::OpenChain,
-            source: first,
-            position,
-            reason: format!("{} entities that close no loop", run.len()),
-            cause: None,
-        });
+        let first = run.iter().map(|&i| parts.origins[i]).min_by_key(|o| o.source).unwrap_or_default();
+        let reason = format!("{} entities that close no loop", run.len());
+        report.push(IgnoredKind::OpenChain, first, position, reason, None);
     }
     let (flat, loops): (Vec<_>, Vec<_>) = loops.into_iter().partition(|(l, _)| l.signed_area() == 0.0);
-    ignored.extend(flat.into_iter().map(|(l, source)| Ignored {
-        kind: IgnoredKind::FlatLoop,
-        source,
-        position: l.vertices().first().map_or(Point::default(), |v| v.p),
-        reason: "the loop encloses no area in sum (it crosses itself, or its entities are drawn twice)".into(),
-        cause: None,
-    }));
-    let (loops, twice) = drop_duplicates(loops, tol);
-    ignored.extend(twice);
+    for (l, at) in flat {
+        let position = l.vertices().first().map_or(Point::default(), |v| v.p);
+        let reason = "the loop encloses no area in sum (it crosses itself, or its entities are drawn twice)";
+        report.push(IgnoredKind::FlatLoop, at, position, reason.into(), None);
+    }
+    let loops = drop_duplicates(loops, tol, &mut report);
     let mut shapes = Vec::new();
     for group in nest(loops) {
-        if let Some(shape) = validate(group, opts, &mut ignored) {
+        if let Some(shape) = validate(group, opts, &mut report) {
             shapes.push(shape);
         }
     }
-    Drawing2d { shapes, ignored }
+    Drawing2d { shapes, ignored: report.out, gaps }
+}
+
+/// One report per layer whose curves `take` leaves out, with their count.
+fn left_out_layers(d: &RawDrawing, take: &impl Fn(u32) -> bool, report: &mut Report) {
+    let mut count: Vec<(usize, Origin, Point)> = vec![(0, Origin::default(), Point::default()); d.layers.len()];
+    let curves = d.lines.iter().map(|l| (l.layer, l.source, l.a));
+    let curves = curves.chain(d.arcs.iter().map(|a| (a.layer, a.source, a.center)));
+    let curves = curves.chain(d.circles.iter().map(|c| (c.layer, c.source, c.center)));
+    let curves = curves.chain(d.polylines.iter().map(|p| {
+        let first = p.vertices.first().map_or([0.0, 0.0], |v| [v.x, v.y]);
+        (p.layer, p.source, first)
+    }));
+    for (layer, source, [x, y]) in curves.filter(|c| !take(c.0)) {
+        if let Some(c) = count.get_mut(layer as usize) {
+            if c.0 == 0 {
+                (c.1, c.2) = (Origin { source, layer }, Point::new(x, y));
+            }
+            c.0 += 1;
+        }
+    }
+    for (name, (n, at, position)) in d.layers.iter().zip(count) {
+        if n > 0 {
+            report.push(IgnoredKind::OtherLayer, at, position, format!("{n} curve(s) on layer {name}"), None);
+        }
+    }
 }
 
 /// The shape of a group (outer loop first), without the holes that touch
 /// or cross another of its loops (each reported, with the validation
 /// error naming both); `None` with the group reported when the outer loop
 /// itself is at fault or the error is another.
-fn validate(mut group: Vec<(Loop, usize)>, opts: &ShapeOptions, ignored: &mut Vec<Ignored>) -> Option<Shape2d> {
+fn validate(mut group: Vec<(Loop, Origin)>, opts: &ShapeOptions, report: &mut Report) -> Option<Shape2d> {
     loop {
         let loops = group.iter().map(|(l, _)| l.clone()).collect();
         let e = match Shape2d::from_loops(loops, opts) {
@@ -135,10 +202,9 @@ fn validate(mut group: Vec<(Loop, usize)>, opts: &ShapeOptions, ignored: &mut Ve
             ShapeError::Intersection { first, second, .. } => first.loop_index.max(second.loop_index),
             _ => 0,
         };
-        let (l, source) = if culprit == 0 { group.swap_remove(0) } else { group.remove(culprit) };
+        let (l, at) = if culprit == 0 { group.swap_remove(0) } else { group.remove(culprit) };
         let kind = if culprit == 0 { IgnoredKind::InvalidShape } else { IgnoredKind::TouchingLoop };
-        let position = l.vertices()[0].p;
-        ignored.push(Ignored { kind, source, position, reason: e.to_string(), cause: Some(e) });
+        report.push(kind, at, l.vertices()[0].p, e.to_string(), Some(e));
         if culprit == 0 {
             return None;
         }
@@ -150,17 +216,16 @@ const PROBES: usize = 3;
 
 /// `loops` sorted by decreasing enclosed area, without the copies of a
 /// loop drawn twice (the same vertices within `tol`, in either direction
-/// and from any start, and the same area), which are returned as ignored.
-fn drop_duplicates(mut loops: Vec<(Loop, usize)>, tol: f64) -> (Vec<(Loop, usize)>, Vec<Ignored>) {
+/// and from any start, and the same area), which are reported.
+fn drop_duplicates(mut loops: Vec<(Loop, Origin)>, tol: f64, report: &mut Report) -> Vec<(Loop, Origin)> {
     loops.sort_by(|a, b| b.0.signed_area().abs().total_cmp(&a.0.signed_area().abs()));
     // Kept loops by the cell of their box's lower corner: a copy's corner
     // lies within `tol`, in that cell or a neighbour.
     let cell = tol.max(f64::MIN_POSITIVE * 1e10);
     let key = |p: Point| ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);
     let mut cells: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
-    let mut kept: Vec<(Loop, usize, f64)> = Vec::with_capacity(loops.len());
-    let mut twice = Vec::new();
-    for (l, source) in loops {
+    let mut kept: Vec<(Loop, Origin, f64)> = Vec::with_capacity(loops.len());
+    for (l, at) in loops {
         let (bb, area) = (l.bbox(), l.signed_area().abs());
         let (kx, ky) = key(bb.min);
         let first = (-1..=1)
@@ -173,20 +238,18 @@ fn drop_duplicates(mut loops: Vec<(Loop, usize)>, tol: f64) -> (Vec<(Loop, usize
                 (other_area - area).abs() <= tol * (bb.width() + bb.height()) && same_cycle(other, &l, tol)
             });
         match first {
-            Some(k) => twice.push(Ignored {
-                kind: IgnoredKind::DuplicateLoop,
-                source,
-                position: l.vertices()[0].p,
-                reason: format!("drawn twice: the same loop as the one at line/byte {}, which is kept", kept[k].1),
-                cause: None,
-            }),
+            Some(k) => {
+                let reason =
+                    format!("drawn twice: the same loop as the one at line/byte {}, which is kept", kept[k].1.source);
+                report.push(IgnoredKind::DuplicateLoop, at, l.vertices()[0].p, reason, None);
+            }
             None => {
                 cells.entry((kx, ky)).or_default().push(kept.len());
-                kept.push((l, source, area));
+                kept.push((l, at, area));
             }
         }
     }
-    (kept.into_iter().map(|(l, s, _)| (l, s)).collect(), twice)
+    kept.into_iter().map(|(l, at, _)| (l, at)).collect()
 }
 
 /// True when `b` has the vertices of `a` within `tol`, in the same cyclic
@@ -206,7 +269,7 @@ fn same_cycle(a: &Loop, b: &Loop, tol: f64) -> bool {
 /// at even depth is the outer loop of a shape, one at odd depth a hole of
 /// its parent's shape. Groups are outer loop first, largest outer loop
 /// first.
-fn nest(loops: Vec<(Loop, usize)>) -> Vec<Vec<(Loop, usize)>> {
+fn nest(loops: Vec<(Loop, Origin)>) -> Vec<Vec<(Loop, Origin)>> {
     let tree = BoxTree::new(loops.iter().map(|(l, _)| l.bbox()).collect());
     let k = FilteredKernel;
     // The group of each loop, and its depth.
@@ -239,41 +302,6 @@ fn nest(loops: Vec<(Loop, usize)>) -> Vec<Vec<(Loop, usize)>> {
             }
         }
     }
-    let mut slots: Vec<Option<(Loop, usize)>> = loops.into_iter().map(Some).collect();
+    let mut slots: Vec<Option<(Loop, Origin)>> = loops.into_iter().map(Some).collect();
     groups.into_iter().map(|g| g.into_iter().filter_map(|i| slots[i].take()).collect()).collect()
-}
-
-impl Drawing2d {
-    /// Reads a drawing file: DXF and SVG through [`profiles`]; a medax JSON
-    /// file is one shape, read as [`Shape2d::from_file`] does. The format
-    /// comes from the extension or, failing that, from the content.
-    ///
-    /// # Errors
-    ///
-    /// The file cannot be read or parsed, or (JSON only) its shape does not
-    /// validate; an SVG elliptical arc.
-    pub fn from_file(path: impl AsRef<std::path::Path>, opts: &ShapeOptions) -> Result<Drawing2d, ShapeError> {
-        let path = path.as_ref();
-        let bytes = read_bytes(path)?;
-        let hint = Format::from_path(path);
-        if hint == Some(Format::Json) || (hint.is_none() && looks_json(&bytes)) {
-            return Ok(Drawing2d { shapes: vec![Shape2d::from_file(path, opts)?], ignored: Vec::new() });
-        }
-        let (text, format) = decode(&bytes, hint);
-        Drawing2d::from_str_as(&text, format, opts)
-    }
-
-    /// Reads drawing text in the given format (see
-    /// [`from_file`](Self::from_file)).
-    pub fn from_str_as(text: &str, format: Format, opts: &ShapeOptions) -> Result<Drawing2d, ShapeError> {
-        opts.check()?;
-        let raw = match format {
-            Format::Json => {
-                return Ok(Drawing2d { shapes: vec![Shape2d::from_json_str(text, opts)?], ignored: Vec::new() })
-            }
-            Format::Dxf => dxf::read_dxf(text)?,
-            Format::Svg => svg_drawing(&svg_path::read_svg(text)?)?,
-        };
-        Ok(profiles(&raw, opts))
-    }
 }
