@@ -2,6 +2,7 @@
 //! VERTEX records, LINE, ARC and CIRCLE, mirrored where the extrusion
 //! direction says so; sections other than ENTITIES skipped.
 
+use crate::io::dxf::blocks::{expand, Block, Insert};
 use crate::io::dxf::pairs::{error, integer, number, Pair};
 use crate::io::{ParseError, RawArc, RawCircle, RawDrawing, RawLine, RawPolyline, RawSkipped, RawVertex};
 use std::collections::HashMap;
@@ -78,17 +79,29 @@ enum Section {
     #[default]
     None,
     Entities,
+    /// Block definitions: the entities of each BLOCK are kept for the
+    /// INSERTs that place them.
+    Blocks,
     /// Any other section: skipped.
     Other,
 }
 
 #[derive(Default)]
 pub(crate) struct Reader {
-    pub(crate) out: RawDrawing,
+    /// What is being read: the drawing, or the BLOCK being defined.
+    out: RawDrawing,
+    /// The INSERTs of `out`.
+    inserts: Vec<Insert>,
     section: Section,
     polyline: Option<OpenPolyline>,
-    /// Layer names seen so far, to their index in `out.layers`.
+    /// Layer names seen so far (in the drawing and in blocks alike), and
+    /// their indices.
+    layers: Vec<String>,
     layer_ids: HashMap<String, u32>,
+    /// The BLOCK being defined: its name, base point, and the drawing's
+    /// own entities and INSERTs while it is read.
+    block: Option<(String, [f64; 2], RawDrawing, Vec<Insert>)>,
+    blocks: HashMap<String, Block>,
 }
 
 /// Records that only structure the file or belong to a POLYLINE: never
@@ -102,19 +115,44 @@ impl Reader {
         match name.as_str() {
             "SECTION" => {
                 self.flush_polyline();
-                let is_entities = groups.iter().any(|g| g.code == 2 && g.value.trim().eq_ignore_ascii_case("ENTITIES"));
-                self.section = if is_entities { Section::Entities } else { Section::Other };
+                let named = |n: &str| groups.iter().any(|g| g.code == 2 && g.value.trim().eq_ignore_ascii_case(n));
+                self.section = if named("ENTITIES") {
+                    Section::Entities
+                } else if named("BLOCKS") {
+                    Section::Blocks
+                } else {
+                    Section::Other
+                };
                 return Ok(());
             }
             "ENDSEC" => {
                 self.flush_polyline();
+                self.end_block();
                 self.section = Section::None;
                 return Ok(());
             }
             _ => {}
         }
-        if self.section == Section::Other {
-            return Ok(());
+        match (&self.section, name.as_str()) {
+            (Section::Other, _) => return Ok(()),
+            (Section::Blocks, "BLOCK") => {
+                self.flush_polyline();
+                self.end_block();
+                let text = |code: i32| groups.iter().find(|g| g.code == code).map(|g| g.value.trim());
+                let coord = |code: i32| text(code).and_then(|v| v.parse::<f64>().ok()).unwrap_or(0.0);
+                let main = std::mem::take(&mut self.out);
+                let main_inserts = std::mem::take(&mut self.inserts);
+                self.block = Some((text(2).unwrap_or("").to_string(), [coord(10), coord(20)], main, main_inserts));
+                return Ok(());
+            }
+            (Section::Blocks, "ENDBLK") => {
+                self.flush_polyline();
+                self.end_block();
+                return Ok(());
+            }
+            // Entities between blocks belong to none.
+            (Section::Blocks, _) if self.block.is_none() => return Ok(()),
+            _ => {}
         }
         let at = head.line;
         if name == "VERTEX" {
@@ -124,6 +162,29 @@ impl Reader {
         self.flush_polyline();
         let layer = self.layer(groups);
         match name.as_str() {
+            "INSERT" | "MINSERT" => {
+                let f = Fields::read(&name, at, groups)?;
+                let mut extra = [None; 6];
+                for g in groups {
+                    if let Some(k) = [41, 42, 44, 45, 71, 43].iter().position(|&c| c == g.code) {
+                        extra[k] = Some(number(&name, at, g)?);
+                    }
+                }
+                let count = |v: Option<f64>| v.map_or(1, |n| n.clamp(1.0, u32::MAX as f64) as u32);
+                self.inserts.push(Insert {
+                    name: groups.iter().find(|g| g.code == 2).map_or("", |g| g.value.trim()).to_string(),
+                    at: [f.x.unwrap_or(0.0), f.y.unwrap_or(0.0)],
+                    scale: [extra[0].unwrap_or(1.0), f.bulge.unwrap_or(1.0)],
+                    rotation_deg: f.start_deg.unwrap_or(0.0),
+                    columns: f.flags.map_or(1, |n| n.clamp(1, u32::MAX as i64) as u32),
+                    rows: count(extra[4]),
+                    spacing: [extra[2].unwrap_or(0.0), extra[3].unwrap_or(0.0)],
+                    mirror: f.mirrored(),
+                    source: at,
+                    layer,
+                });
+                Ok(())
+            }
             "LWPOLYLINE" => self.lwpolyline(at, layer, groups),
             "POLYLINE" => {
                 let f = Fields::read("POLYLINE", at, groups)?;
@@ -204,10 +265,29 @@ impl Reader {
         if let Some(&id) = self.layer_ids.get(name) {
             return id;
         }
-        let id = self.out.layers.len() as u32;
-        self.out.layers.push(name.to_string());
+        let id = self.layers.len() as u32;
+        self.layers.push(name.to_string());
         self.layer_ids.insert(name.to_string(), id);
         id
+    }
+
+    /// Ends the BLOCK being defined, if any: kept by name, and the
+    /// drawing read on.
+    fn end_block(&mut self) {
+        if let Some((name, base, main, main_inserts)) = self.block.take() {
+            let drawing = std::mem::replace(&mut self.out, main);
+            let inserts = std::mem::replace(&mut self.inserts, main_inserts);
+            self.blocks.insert(name, Block { base, drawing, inserts });
+        }
+    }
+
+    /// The drawing, with its block references expanded.
+    pub(crate) fn finish(mut self) -> RawDrawing {
+        self.flush_polyline();
+        self.end_block();
+        self.out.layers = std::mem::take(&mut self.layers);
+        expand(&mut self.out, &self.inserts, &self.blocks);
+        self.out
     }
 
     fn vertex(&mut self, at: usize, groups: &[Pair]) -> Result<(), ParseError> {

@@ -24,6 +24,7 @@
 //! after trimming; "inf" and "nan" are passed through for the shape layer to
 //! reject.
 
+mod blocks;
 mod entities;
 mod pairs;
 
@@ -75,8 +76,7 @@ pub fn read_dxf(text: &str) -> Result<RawDrawing, ParseError> {
             None => break,
         }
     }
-    reader.flush_polyline();
-    Ok(reader.out)
+    Ok(reader.finish())
 }
 
 #[cfg(test)]
