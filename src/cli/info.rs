@@ -84,6 +84,9 @@ fn put_ignored(d: &Drawing2d) {
             out!("  … and {} more", all.len() - SHOWN);
         }
     }
+    if let Some(units) = d.units {
+        out!("units: {units} (DXF $INSUNITS)");
+    }
     if let Some((p, widest)) = d.gaps.first() {
         out!("gaps closed: {} (widest {widest:e} at ({}, {}))", d.gaps.len(), p.x, p.y);
     }

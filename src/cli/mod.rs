@@ -23,7 +23,7 @@ mod offset;
 mod voronoi;
 
 use clap::{Parser, Subcommand};
-use medax::shape::{Drawing2d, DrawingOptions, IgnoredKind, Shape2d, ShapeError, ShapeOptions};
+use medax::shape::{Drawing2d, DrawingOptions, Shape2d, ShapeError, ShapeOptions};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -73,8 +73,7 @@ impl ShapeArgs {
     /// The drawing's profiles (one shape, nothing ignored, under `--strict`).
     fn load_drawing(&self) -> Result<Drawing2d, ShapeError> {
         if self.strict {
-            let shape = Shape2d::from_file(&self.shape, &self.options())?;
-            return Ok(Drawing2d { shapes: vec![shape], ignored: Vec::new(), gaps: Vec::new() });
+            return Ok(Drawing2d::of(Shape2d::from_file(&self.shape, &self.options())?));
         }
         Drawing2d::from_file(&self.shape, &self.options(), &DrawingOptions { layers: self.layers.clone() })
     }
@@ -99,22 +98,31 @@ impl ShapeArgs {
     }
 }
 
-/// The error of a drawing without shape `k`: its first invalid shape's, an
-/// open chain's gap, or that it holds no loop.
+/// The error of a drawing without shape `k`: its first invalid shape's
+/// validation error, or that it holds no closed profile.
 fn no_shape(d: &Drawing2d, k: usize) -> ShapeError {
     if !d.shapes.is_empty() {
         return ShapeError::InvalidArgument {
             what: format!("--shape {k}: the drawing has {} shape(s)", d.shapes.len()),
         };
     }
-    let cause = d.ignored.iter().find_map(|i| i.cause.clone());
-    let open = d.ignored.iter().find(|i| i.kind == IgnoredKind::OpenChain);
-    cause.unwrap_or_else(|| match open {
-        Some(i) => ShapeError::InvalidArgument {
-            what: format!("no closed profile; an open chain from line/byte {}: {}", i.source, i.reason),
+    if let Some(cause) = d.ignored.iter().find_map(|i| i.cause.clone()) {
+        return cause;
+    }
+    match d.ignored.first() {
+        Some(i) => ShapeError::NoProfile {
+            ignored: d.ignored.len(),
+            first: format!(
+                "{} at line/byte {} near ({}, {}): {}",
+                i.kind.name(),
+                i.source,
+                i.position.x,
+                i.position.y,
+                i.reason
+            ),
         },
         None => ShapeError::Empty,
-    })
+    }
 }
 
 /// Options shared by commands that compute an axis.

@@ -107,6 +107,7 @@ impl From<ShapeError> for FfiError {
             }
             ShapeError::Io { .. }
             | ShapeError::Empty
+            | ShapeError::NoProfile { .. }
             | ShapeError::Unsupported { .. }
             | ShapeError::InvalidArgument { .. } => {}
         }

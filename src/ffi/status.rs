@@ -64,7 +64,7 @@ impl mx_status {
             ShapeError::Parse(p) if p.unsupported => MX_ERR_UNSUPPORTED,
             ShapeError::Parse(_) => MX_ERR_PARSE,
             ShapeError::Io { .. } => MX_ERR_IO,
-            ShapeError::Empty => MX_ERR_EMPTY,
+            ShapeError::Empty | ShapeError::NoProfile { .. } => MX_ERR_EMPTY,
             ShapeError::TooFewElements { .. } => MX_ERR_TOO_FEW_ELEMENTS,
             ShapeError::NonFinite { .. } => MX_ERR_NON_FINITE,
             ShapeError::OutOfRange { .. } => MX_ERR_OUT_OF_RANGE,

@@ -169,9 +169,12 @@ pub struct RawDrawing {
     /// without layers.
     pub layers: Vec<String>,
     /// Entities that are not curves medax reads (text, dimensions,
-    /// hatches, points, block references, splines, ellipses…), in file
-    /// order.
+    /// hatches, points, splines, ellipses…, and block references that
+    /// could not be placed), in file order.
     pub skipped: Vec<RawSkipped>,
+    /// The drawing's unit as DXF's `$INSUNITS` code (0 unitless, 1 inch,
+    /// 2 foot, 4 millimetre, 5 centimetre, 6 metre…), where it says.
+    pub units: Option<i64>,
 }
 
 /// An entity of a drawing that is not a curve medax reads.

@@ -116,6 +116,12 @@ impl Reader {
             "SECTION" => {
                 self.flush_polyline();
                 let named = |n: &str| groups.iter().any(|g| g.code == 2 && g.value.trim().eq_ignore_ascii_case(n));
+                if named("HEADER") {
+                    // Header variables are `9 $NAME` pairs, each followed by its value.
+                    let at =
+                        groups.iter().position(|g| g.code == 9 && g.value.trim().eq_ignore_ascii_case("$INSUNITS"));
+                    self.out.units = at.and_then(|k| groups.get(k + 1)).and_then(|g| g.value.trim().parse().ok());
+                }
                 self.section = if named("ENTITIES") {
                     Section::Entities
                 } else if named("BLOCKS") {

@@ -8,6 +8,11 @@ use crate::shape::model::options::ShapeOptions;
 use crate::shape::shape2d::Shape2d;
 
 impl Drawing2d {
+    /// A drawing of one shape and nothing else.
+    pub fn of(shape: Shape2d) -> Drawing2d {
+        Drawing2d { shapes: vec![shape], ignored: Vec::new(), gaps: Vec::new(), units: None }
+    }
+
     /// Reads a drawing file: DXF and SVG through [`profiles`]; a medax JSON
     /// file is one shape, read as [`Shape2d::from_file`] does. The format
     /// comes from the extension or, failing that, from the content.
@@ -25,11 +30,7 @@ impl Drawing2d {
         let bytes = read_bytes(path)?;
         let hint = Format::from_path(path);
         if hint == Some(Format::Json) || (hint.is_none() && looks_json(&bytes)) {
-            return Ok(Drawing2d {
-                shapes: vec![Shape2d::from_file(path, opts)?],
-                ignored: Vec::new(),
-                gaps: Vec::new(),
-            });
+            return Ok(Drawing2d::of(Shape2d::from_file(path, opts)?));
         }
         let (text, format) = decode(&bytes, hint);
         Drawing2d::from_str_as(&text, format, opts, select)
@@ -46,8 +47,7 @@ impl Drawing2d {
         opts.check()?;
         let raw = match format {
             Format::Json => {
-                let shapes = vec![Shape2d::from_json_str(text, opts)?];
-                return Ok(Drawing2d { shapes, ignored: Vec::new(), gaps: Vec::new() });
+                return Ok(Drawing2d::of(Shape2d::from_json_str(text, opts)?));
             }
             Format::Dxf => dxf::read_dxf(text)?,
             Format::Svg => svg_drawing(&svg_path::read_svg(text)?)?,
@@ -55,8 +55,8 @@ impl Drawing2d {
         Ok(profiles(&raw, opts, select))
     }
 
-    /// The drawing as JSON: `{"shapes": [SHAPE, ...], "ignored": [...],
-    /// "gaps": [...]}`, each shape in medax shape JSON (`{"loops": ...}`,
+    /// The drawing as JSON: `{"units": NAME or null, "shapes": [SHAPE,
+    /// ...], "ignored": [...], "gaps": [...]}`, each shape in medax shape JSON (`{"loops": ...}`,
     /// what [`Shape2d::from_json_str`] reads), each ignored thing as
     /// `{"kind", "source", "layer", "position": [x, y], "reason"}` (kind
     /// in snake case: `open_chain`, `entity`, `other_layer`, `flat_loop`,
@@ -80,7 +80,8 @@ impl Drawing2d {
         let gaps: Vec<serde_json::Value> =
             self.gaps.iter().map(|(p, d)| serde_json::json!({"position": [p.x, p.y], "gap": d})).collect();
         format!(
-            "{{\"shapes\": [{}], \"ignored\": {}, \"gaps\": {}}}\n",
+            "{{\"units\": {}, \"shapes\": [{}], \"ignored\": {}, \"gaps\": {}}}\n",
+            serde_json::Value::from(self.units),
             shapes.join(", "),
             serde_json::Value::from(ignored),
             serde_json::Value::from(gaps)

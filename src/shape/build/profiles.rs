@@ -30,6 +30,39 @@ pub struct Drawing2d {
     /// tolerance, and were joined: the joint and the gap closed (model
     /// units), widest first.
     pub gaps: Vec<(Point, f64)>,
+    /// The unit the drawing says its coordinates are in (DXF `$INSUNITS`),
+    /// by name: "millimetre", "inch"…; `None` where it does not say, or
+    /// says "unitless".
+    pub units: Option<&'static str>,
+}
+
+/// The name of a DXF `$INSUNITS` code; `None` for 0 (unitless) and codes
+/// DXF does not define.
+pub fn unit_name(code: i64) -> Option<&'static str> {
+    const NAMES: [&str; 21] = [
+        "",
+        "inch",
+        "foot",
+        "mile",
+        "millimetre",
+        "centimetre",
+        "metre",
+        "kilometre",
+        "microinch",
+        "mil",
+        "yard",
+        "ångström",
+        "nanometre",
+        "micrometre",
+        "decimetre",
+        "decametre",
+        "hectometre",
+        "gigametre",
+        "astronomical unit",
+        "light year",
+        "parsec",
+    ];
+    usize::try_from(code).ok().and_then(|k| NAMES.get(k)).copied().filter(|n| !n.is_empty())
 }
 
 /// Something of a drawing that is in none of its shapes.
@@ -157,7 +190,7 @@ pub fn profiles(d: &RawDrawing, opts: &ShapeOptions, select: &DrawingOptions) ->
             shapes.push(shape);
         }
     }
-    Drawing2d { shapes, ignored: report.out, gaps }
+    Drawing2d { shapes, ignored: report.out, gaps, units: d.units.and_then(unit_name) }
 }
 
 /// One report per layer whose curves `take` leaves out, with their count.

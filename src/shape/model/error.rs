@@ -49,6 +49,14 @@ pub enum ShapeError {
     },
     /// The input holds no loop at all.
     Empty,
+    /// A drawing holds no closed profile that makes a valid shape; what
+    /// it held instead is in [`Drawing2d::ignored`](crate::shape::Drawing2d::ignored).
+    NoProfile {
+        /// How many things the drawing held that are in no shape.
+        ignored: usize,
+        /// The first of them, for a person.
+        first: String,
+    },
     /// A loop has fewer elements than a closed boundary needs (two arcs, or
     /// three segments).
     TooFewElements {
@@ -153,7 +161,7 @@ impl ShapeError {
             | InconsistentArc { at, .. } => Some(at.loop_index),
             Intersection { first, .. } => Some(first.loop_index),
             HoleOutside { hole, .. } | HoleInsideHole { hole, .. } => Some(*hole),
-            Parse(_) | Io { .. } | Empty | Unsupported { .. } | InvalidArgument { .. } => None,
+            Parse(_) | Io { .. } | Empty | NoProfile { .. } | Unsupported { .. } | InvalidArgument { .. } => None,
         }
     }
 }
@@ -165,6 +173,9 @@ impl fmt::Display for ShapeError {
             Parse(e) => write!(f, "{e}"),
             Io { path, message } => write!(f, "cannot read {path}: {message}"),
             Empty => write!(f, "the shape has no loops"),
+            NoProfile { ignored, first } => {
+                write!(f, "no closed profile in the drawing; {ignored} thing(s) in no shape, the first: {first}")
+            }
             TooFewElements { loop_index, count } => {
                 write!(f, "loop {loop_index} has {count} element(s); a closed loop needs at least 2 arcs or 3 segments")
             }
