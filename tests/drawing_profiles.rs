@@ -201,3 +201,19 @@ fn json_stays_one_strict_shape() {
     assert_eq!(d.shapes.len(), 1);
     assert!(d.ignored.is_empty());
 }
+
+#[test]
+fn an_svg_of_two_parts_and_a_stroke() {
+    let svg = r#"<svg xmlns="http://www.w3.org/2000/svg">
+        <path d="M 0 0 L 10 0 L 10 10 L 0 10 Z M 3 3 L 3 7 L 7 7 L 7 3 Z"/>
+        <rect x="20" y="0" width="4" height="2"/>
+        <path d="M -5 -5 L 30 -5"/>
+    </svg>"#;
+    let d = Drawing2d::from_str_as(svg, Format::Svg, &ShapeOptions::default(), &DrawingOptions::default()).unwrap();
+    assert_eq!(d.shapes.len(), 2);
+    assert_eq!(d.shapes[0].holes().len(), 1);
+    assert!((d.shapes[0].area() - 84.0).abs() < 1e-9);
+    assert!((d.shapes[1].area() - 8.0).abs() < 1e-9);
+    assert_eq!(kinds(&d), [IgnoredKind::OpenChain]);
+    assert_eq!(d.ignored[0].layer, "");
+}

@@ -13,7 +13,10 @@ use crate::kernel::element::Element;
 use crate::kernel::Point;
 use crate::shape::model::bulge_loop::{Loop, Vertex};
 use crate::shape::model::loose::LooseElement;
-use std::collections::HashMap;
+use crate::util::fast_hash::FastMap;
+
+/// The side of the cells that join curve ends, in chaining tolerances.
+const CELL: f64 = 16.0;
 
 /// What [`profile_loops`] found.
 #[derive(Debug, Default)]
@@ -40,17 +43,23 @@ struct Graph {
 
 impl Graph {
     fn new(elems: &[LooseElement], tol: f64) -> Graph {
-        // Cells of size `tol`: a point within `tol` of a vertex lies in
-        // the vertex's cell or a neighbour.
-        let cell = tol.max(f64::MIN_POSITIVE * 1e10);
+        // Cells of `CELL` tolerances: a point within `tol` of a vertex
+        // lies in the vertex's cell or in a neighbour it is within `tol`
+        // of, and most points are near no cell side (one lookup).
+        let cell = (CELL * tol).max(f64::MIN_POSITIVE * 1e10);
         let key = |p: Point| ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);
-        let mut cells: HashMap<(i64, i64), Vec<usize>> = HashMap::with_capacity(elems.len());
+        // The neighbouring cells (-1, 0, 1 per axis) a point may reach.
+        let reach = |x: f64, k: i64| {
+            let f = x / cell - k as f64;
+            (if f * cell < tol { -1 } else { 0 })..=(if (1.0 - f) * cell < tol { 1 } else { 0 })
+        };
+        let mut cells: FastMap<(i64, i64), Vec<usize>> = FastMap::default();
         let mut points: Vec<Point> = Vec::new();
         let mut widest: Vec<f64> = Vec::new();
         let mut vertex = |p: Point| {
             let (kx, ky) = key(p);
-            let near = (-1..=1)
-                .flat_map(|dx| (-1..=1).map(move |dy| (kx.saturating_add(dx), ky.saturating_add(dy))))
+            let near = reach(p.x, kx)
+                .flat_map(|dx| reach(p.y, ky).map(move |dy| (kx.saturating_add(dx), ky.saturating_add(dy))))
                 .filter_map(|k| cells.get(&k))
                 .flatten()
                 .copied()
@@ -199,7 +208,7 @@ fn walk_cycles(elems: &[LooseElement], g: &Graph, state: &mut Live, out: &mut Pr
             -el.end_tangent()
         }
     };
-    let mut on_path: HashMap<usize, usize> = HashMap::new();
+    let mut on_path: FastMap<usize, usize> = FastMap::default();
     for first in 0..elems.len() {
         if !state.live[first] {
             continue;

@@ -13,7 +13,7 @@ use crate::shape::model::bulge_loop::Loop;
 use crate::shape::model::error::ShapeError;
 use crate::shape::model::options::ShapeOptions;
 use crate::shape::shape2d::Shape2d;
-use std::collections::HashMap;
+use crate::util::fast_hash::FastMap;
 use std::ops::ControlFlow;
 
 /// The shapes a drawing holds and what was left out of them.
@@ -256,7 +256,7 @@ fn drop_duplicates(mut loops: Vec<(Loop, Origin)>, tol: f64, report: &mut Report
     // lies within `tol`, in that cell or a neighbour.
     let cell = tol.max(f64::MIN_POSITIVE * 1e10);
     let key = |p: Point| ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);
-    let mut cells: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+    let mut cells: FastMap<(i64, i64), Vec<usize>> = FastMap::default();
     let mut kept: Vec<(Loop, Origin, f64)> = Vec::with_capacity(loops.len());
     for (l, at) in loops {
         let (bb, area) = (l.bbox(), l.signed_area().abs());
