@@ -33,6 +33,41 @@
 #define MX_AXIS_MIN_RELATIVE_SAMPLE_TOLERANCE 1e-12
 
 /**
+ * `mx_ignored.kind`: curves that close no loop.
+ */
+#define MX_IGNORED_OPEN_CHAIN 1
+
+/**
+ * `mx_ignored.kind`: an entity that is not a curve medax reads.
+ */
+#define MX_IGNORED_ENTITY 2
+
+/**
+ * `mx_ignored.kind`: the curves of a layer left out by the selection.
+ */
+#define MX_IGNORED_OTHER_LAYER 3
+
+/**
+ * `mx_ignored.kind`: a loop enclosing no area in sum.
+ */
+#define MX_IGNORED_FLAT_LOOP 4
+
+/**
+ * `mx_ignored.kind`: a copy of a loop drawn twice.
+ */
+#define MX_IGNORED_DUPLICATE_LOOP 5
+
+/**
+ * `mx_ignored.kind`: a hole touching or crossing another loop of its shape.
+ */
+#define MX_IGNORED_TOUCHING_LOOP 6
+
+/**
+ * `mx_ignored.kind`: an outer loop with its holes that does not validate.
+ */
+#define MX_IGNORED_INVALID_SHAPE 7
+
+/**
  * `mx_pocket_options.order`: every ring after the rings inside it (the
  * wall last, as a finishing pass).
  */
@@ -320,6 +355,13 @@ typedef struct mx_axis mx_axis;
 typedef struct mx_ball mx_ball;
 
 /**
+ * A drawing read through profile extraction: its shapes (largest first)
+ * and the things of it in no shape. Immutable; may be shared between
+ * threads.
+ */
+typedef struct mx_drawing mx_drawing;
+
+/**
  * A triangulated solid (3D medial axis, thesis chapter 3). Opaque.
  */
 typedef struct mx_mesh3d mx_mesh3d;
@@ -475,6 +517,83 @@ typedef struct mx_axis_edge {
    */
   struct mx_axis_site sites[2];
 } mx_axis_edge;
+
+/**
+ * Tolerances for building shapes. Initialise with `mx_shape_options_default`
+ * (which sets `struct_size`), then change fields. Lengths in model units.
+ */
+typedef struct mx_shape_options {
+  /**
+   * `sizeof(mx_shape_options)` as the caller was compiled; lets later
+   * versions add fields without breaking old callers.
+   */
+  size_t struct_size;
+  /**
+   * Absolute touching / zero-length tolerance; 0 = `relative_tolerance`
+   * times the bounding-box diagonal.
+   */
+  double tolerance;
+  /**
+   * Relative tolerance used when `tolerance` is 0. Default 1e-9.
+   */
+  double relative_tolerance;
+  /**
+   * Joint angle tolerance in radians (smooth vs corner). Default 1e-6.
+   */
+  double angle_tolerance;
+  /**
+   * Arcs with a sagitta at most this become segments; negative = same as
+   * the touching tolerance (default).
+   */
+  double flatten_sagitta;
+  /**
+   * Gap closed when chaining loose elements; 0 = 1e-6 × diagonal (default).
+   */
+  double chain_tolerance;
+  /**
+   * Arcs with a radius above this multiple of the diagonal become
+   * segments (default 1e6; deviation at most diagonal / (8 × ratio)).
+   */
+  double max_radius_ratio;
+  /**
+   * Worker threads that check the shape (crossings, nesting of holes):
+   * 0 = all cores (default), else at most `MX_AXIS_MAX_THREADS`. Added
+   * after 0.1.0: a caller compiled against 0.1.0's struct (whose
+   * `struct_size` ends before this field) gets the default.
+   */
+  size_t threads;
+} mx_shape_options;
+
+/**
+ * One thing of a drawing in no shape.
+ */
+typedef struct mx_ignored {
+  /**
+   * What it is: an `MX_IGNORED_*` constant.
+   */
+  uint32_t kind;
+  /**
+   * 1-based line (DXF) or byte offset (SVG) of its first entity.
+   */
+  size_t source;
+  /**
+   * A point of it, model units.
+   */
+  double x;
+  /**
+   * A point of it, model units.
+   */
+  double y;
+  /**
+   * Its layer, NUL-terminated ("" without layers); valid as long as
+   * the drawing.
+   */
+  const char *layer;
+  /**
+   * Why it was left out, NUL-terminated; valid as long as the drawing.
+   */
+  const char *reason;
+} mx_ignored;
 
 /**
  * Structured details of the last error on this thread. Indices are −1 when
@@ -772,52 +891,6 @@ typedef struct mx_uncut_region {
    */
   struct mx_bulge_loops loops;
 } mx_uncut_region;
-
-/**
- * Tolerances for building shapes. Initialise with `mx_shape_options_default`
- * (which sets `struct_size`), then change fields. Lengths in model units.
- */
-typedef struct mx_shape_options {
-  /**
-   * `sizeof(mx_shape_options)` as the caller was compiled; lets later
-   * versions add fields without breaking old callers.
-   */
-  size_t struct_size;
-  /**
-   * Absolute touching / zero-length tolerance; 0 = `relative_tolerance`
-   * times the bounding-box diagonal.
-   */
-  double tolerance;
-  /**
-   * Relative tolerance used when `tolerance` is 0. Default 1e-9.
-   */
-  double relative_tolerance;
-  /**
-   * Joint angle tolerance in radians (smooth vs corner). Default 1e-6.
-   */
-  double angle_tolerance;
-  /**
-   * Arcs with a sagitta at most this become segments; negative = same as
-   * the touching tolerance (default).
-   */
-  double flatten_sagitta;
-  /**
-   * Gap closed when chaining loose elements; 0 = 1e-6 × diagonal (default).
-   */
-  double chain_tolerance;
-  /**
-   * Arcs with a radius above this multiple of the diagonal become
-   * segments (default 1e6; deviation at most diagonal / (8 × ratio)).
-   */
-  double max_radius_ratio;
-  /**
-   * Worker threads that check the shape (crossings, nesting of holes):
-   * 0 = all cores (default), else at most `MX_AXIS_MAX_THREADS`. Added
-   * after 0.1.0: a caller compiled against 0.1.0's struct (whose
-   * `struct_size` ends before this field) gets the default.
-   */
-  size_t threads;
-} mx_shape_options;
 
 /**
  * One boundary element. As output all fields are set. As input
@@ -1235,6 +1308,80 @@ enum mx_status mx_axis_edge_sample(const struct mx_axis *axis,
                                    double *xyr,
                                    size_t capacity,
                                    size_t *count);
+
+/**
+ * Reads a drawing file (DXF or SVG through profile extraction; a medax
+ * JSON file is one shape; `MX_FORMAT_AUTO` picks by extension, then
+ * content) with the curves of the `layer_count` layers named in `layers`
+ * (`layer_count` 0: every layer; `layers` may then be NULL). A drawing
+ * without a closed profile is not an error: it has no shapes, and its
+ * ignored things say why.
+ *
+ * # Safety
+ * `path` NULL or NUL-terminated; `options` NULL or valid; `layers` valid
+ * for `layer_count` NUL-terminated strings; `out` writable.
+ */
+enum mx_status mx_drawing_from_file(const char *path,
+                                    uint32_t format,
+                                    const struct mx_shape_options *options,
+                                    const char *const *layers,
+                                    size_t layer_count,
+                                    struct mx_drawing **out);
+
+/**
+ * Frees a drawing; NULL is fine. Shapes taken from it stay valid.
+ *
+ * # Safety
+ * `drawing` NULL or a live handle, not used afterwards.
+ */
+void mx_drawing_free(struct mx_drawing *drawing);
+
+/**
+ * Number of shapes (0 when the drawing has no closed profile).
+ *
+ * # Safety
+ * `drawing` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_drawing_shape_count(const struct mx_drawing *drawing, size_t *out);
+
+/**
+ * A new handle holding shape `index` (0 = the largest); the caller frees
+ * it with `mx_shape2d_free`.
+ *
+ * # Safety
+ * `drawing` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_drawing_shape(const struct mx_drawing *drawing,
+                                size_t index,
+                                struct mx_shape2d **out);
+
+/**
+ * Number of things of the drawing in no shape.
+ *
+ * # Safety
+ * `drawing` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_drawing_ignored_count(const struct mx_drawing *drawing, size_t *out);
+
+/**
+ * Ignored thing `index`, in the order found; its strings live as long as
+ * the drawing.
+ *
+ * # Safety
+ * `drawing` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_drawing_get_ignored(const struct mx_drawing *drawing,
+                                      size_t index,
+                                      struct mx_ignored *out);
+
+/**
+ * Writes the drawing as JSON (`{"units", "shapes", "ignored", "gaps"}`,
+ * each shape in medax shape JSON) to `path`.
+ *
+ * # Safety
+ * `drawing` NULL or a live handle; `path` NULL or NUL-terminated.
+ */
+enum mx_status mx_drawing_write_json(const struct mx_drawing *drawing, const char *path);
 
 /**
  * Releases a `mx_mesh3d`. NULL is a no-op.

@@ -14,6 +14,7 @@
 
 mod axis;
 mod boundary;
+mod drawing;
 mod handles;
 mod last_error;
 mod offset;
@@ -25,6 +26,7 @@ mod version;
 mod voronoi;
 
 pub use axis::*;
+pub use drawing::*;
 pub use handles::*;
 pub use last_error::*;
 pub use offset::*;

@@ -150,7 +150,7 @@ pub unsafe extern "C" fn mx_shape_options_default(out: *mut mx_shape_options) ->
 }
 
 /// Options from C, checked, with the thread count; NULL means defaults.
-unsafe fn options(p: *const mx_shape_options) -> Result<(ShapeOptions, usize), FfiError> {
+pub(crate) unsafe fn options(p: *const mx_shape_options) -> Result<(ShapeOptions, usize), FfiError> {
     // SAFETY: forwarded contract.
     let Some(o) = (unsafe { mx_shape_options::read(p)? }) else {
         return Ok((ShapeOptions::default(), 0));
@@ -306,7 +306,7 @@ fn elements_shape(
     built(threads, || Ok(Shape2d::from_elements(&loops, &opts)?))
 }
 
-fn format_of(code: u32) -> Result<Option<Format>, FfiError> {
+pub(crate) fn format_of(code: u32) -> Result<Option<Format>, FfiError> {
     match code {
         MX_FORMAT_AUTO => Ok(None),
         MX_FORMAT_JSON => Ok(Some(Format::Json)),
