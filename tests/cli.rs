@@ -328,6 +328,26 @@ fn a_drawing_of_two_parts_gives_two_shapes_and_says_what_it_ignored() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("2 shape(s)"));
     let out = medax().arg("axis").arg(&drawing).args(["--shape", "2"]).output().unwrap();
     assert_eq!(out.status.code(), Some(1));
+    // Every shape in one run: a file per shape.
+    let all = dir.join("all.json");
+    let out = medax().arg("axis").arg(&drawing).args(["--shape", "all", "--json"]).arg(&all).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    for k in 0..2 {
+        let text = std::fs::read_to_string(dir.join(format!("all.{k}.json"))).unwrap();
+        assert!(text.contains("\"edges\""), "{text}");
+    }
+    let rings = dir.join("rings.dxf");
+    let out = medax()
+        .arg("offset")
+        .arg(&drawing)
+        .args(["--shape", "all", "--pocket", "0.2,0.3", "--dxf"])
+        .arg(&rings)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(dir.join("rings.0.dxf").exists() && dir.join("rings.1.dxf").exists());
+    let out = medax().arg("draw").arg(&drawing).args(["--shape", "all", "-o"]).arg(dir.join("x.svg")).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
     // Under --strict the drawing is refused whole, as before.
     let out = medax().arg("info").arg(&drawing).arg("--strict").output().unwrap();
     assert_eq!(out.status.code(), Some(1));

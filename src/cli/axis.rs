@@ -1,7 +1,8 @@
 //! `medax axis`: the medial axis of a shape as JSON and/or SVG.
 
-use super::{fail, write_file, write_streamed, RunArgs, ShapeArgs};
+use super::{fail, per_shape, write_file, write_streamed, RunArgs, ShapeArgs};
 use medax::plane::{medial_axis, AxisOptions, AxisPicture, NodeKind};
+use medax::shape::Shape2d;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -26,13 +27,31 @@ pub struct AxisArgs {
 
 pub fn run(args: &AxisArgs) -> Result<(), ExitCode> {
     let t = Instant::now();
-    let shape = args.shape.load().map_err(|e| fail(&args.shape.shape, &e))?;
+    let shapes = args.shape.load_each().map_err(|e| fail(&args.shape.shape, &e))?;
     let read = t.elapsed().as_secs_f64();
     let pool = args.run.pool()?;
+    for (k, shape) in &shapes {
+        if let Some(k) = k {
+            out!("shape {k}:");
+        }
+        run_one(args, shape, *k, read, &pool)?;
+    }
+    Ok(())
+}
+
+/// The axis of one shape (`k`: its number, when the run has several).
+fn run_one(
+    args: &AxisArgs,
+    shape: &Shape2d,
+    k: Option<usize>,
+    read: f64,
+    pool: &rayon::ThreadPool,
+) -> Result<(), ExitCode> {
     let opts = AxisOptions { seed: args.run.seed, ..AxisOptions::default() };
     let t = Instant::now();
-    let axis = pool.install(|| medial_axis(&shape, &opts)).map_err(|e| {
-        eprintln!("medax: {}: {e}", args.shape.shape.display());
+    let axis = pool.install(|| medial_axis(shape, &opts)).map_err(|e| {
+        let which = k.map_or_else(String::new, |k| format!(" shape {k}"));
+        eprintln!("medax: {}{which}: {e}", args.shape.shape.display());
         ExitCode::from(1)
     })?;
     let took = t.elapsed().as_secs_f64();
@@ -49,12 +68,14 @@ pub fn run(args: &AxisArgs) -> Result<(), ExitCode> {
     out!("read in {read:.3} s, axis in {took:.3} s ({} elements)", shape.element_count());
     let tol = args.run.sample_tolerance.unwrap_or(1e-4 * shape.bbox().diagonal());
     if let Some(path) = &args.json {
-        write_streamed(path, |w| axis.write_json(&shape, tol, w))?;
+        let path = per_shape(path, k);
+        write_streamed(&path, |w| axis.write_json(shape, tol, w))?;
         out!("wrote {}", path.display());
     }
     if let Some(path) = &args.svg {
+        let path = per_shape(path, k);
         let pic = AxisPicture { width_px: 900.0, tolerance: tol, disks: args.disks };
-        write_file(path, &axis.to_svg(&shape, &pic))?;
+        write_file(&path, &axis.to_svg(shape, &pic))?;
         out!("wrote {}", path.display());
     }
     Ok(())

@@ -44,11 +44,15 @@ pub fn run(args: &ShapeArgs, json: Option<&Path>) -> Result<(), ExitCode> {
         put_ignored(&d);
         return Err(fail(&args.shape, &super::no_shape(&d, 0)));
     }
-    if d.shapes.len() == 1 && args.pick.is_none_or(|k| k == 0) {
+    let only = match args.pick {
+        Some(super::Pick::One(k)) => Some(k),
+        _ => None,
+    };
+    if d.shapes.len() == 1 && only.is_none_or(|k| k == 0) {
         super::put(&report(&d.shapes[0]));
     } else {
         out!("{} shapes (largest first; `--shape K` picks one for the other commands)", d.shapes.len());
-        for (k, s) in d.shapes.iter().enumerate().filter(|(k, _)| args.pick.is_none_or(|p| p == *k)) {
+        for (k, s) in d.shapes.iter().enumerate().filter(|(k, _)| only.is_none_or(|p| p == *k)) {
             out!("shape {k}:");
             for line in report(s).lines() {
                 out!("  {line}");

@@ -49,15 +49,42 @@ struct ShapeArgs {
     /// Gap closed when chaining DXF/SVG pieces into loops (default: 1e-6 × diagonal).
     #[arg(long)]
     chain_tolerance: Option<f64>,
-    /// Which shape of a drawing with several (0 = the largest; `medax info` lists them).
-    #[arg(long = "shape", value_name = "K")]
-    pick: Option<usize>,
+    /// Which shape of a drawing with several: K (0 = the largest; `medax info` lists them), or
+    /// `all` (axis, offset: one run per shape, output files NAME.K.EXT).
+    #[arg(long = "shape", value_name = "K|all", value_parser = pick)]
+    pick: Option<Pick>,
     /// Refuse a DXF/SVG drawing with anything but closed loops of one shape (no profile extraction).
     #[arg(long)]
     strict: bool,
     /// Take the curves of this DXF layer only (repeatable; default: every layer).
     #[arg(long = "layer", value_name = "NAME")]
     layers: Vec<String>,
+}
+
+/// `--shape`: one shape of a drawing, or every one.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Pick {
+    One(usize),
+    All,
+}
+
+fn pick(s: &str) -> Result<Pick, String> {
+    match s.trim() {
+        "all" => Ok(Pick::All),
+        k => k.parse().map(Pick::One).map_err(|_| format!("{s:?} is neither a shape number nor `all`")),
+    }
+}
+
+/// `path` with the shape number before its extension (`out.json` →
+/// `out.2.json`) when a run writes one file per shape (`k` given).
+fn per_shape(path: &Path, k: Option<usize>) -> PathBuf {
+    let Some(k) = k else { return path.to_path_buf() };
+    let stem = path.file_stem().map_or_else(String::new, |s| s.to_string_lossy().into_owned());
+    let name = match path.extension() {
+        Some(ext) => format!("{stem}.{k}.{}", ext.to_string_lossy()),
+        None => format!("{stem}.{k}"),
+    };
+    path.with_file_name(name)
 }
 
 impl ShapeArgs {
@@ -81,20 +108,44 @@ impl ShapeArgs {
     /// The shape to work on: the one `--shape` picks (the largest by
     /// default), with a note on stderr of what else the drawing held.
     fn load(&self) -> Result<Shape2d, ShapeError> {
+        if self.pick == Some(Pick::All) {
+            return Err(ShapeError::InvalidArgument { what: "--shape all: this command takes one shape".into() });
+        }
+        Ok(self.load_each()?.swap_remove(0).1)
+    }
+
+    /// The shapes to work on, each with its number when there are several
+    /// (`--shape all` on a drawing of more than one), else the one picked.
+    fn load_each(&self) -> Result<Vec<(Option<usize>, Shape2d)>, ShapeError> {
         let mut d = self.load_drawing()?;
-        let k = self.pick.unwrap_or(0);
+        let picked = match self.pick {
+            Some(Pick::All) => format!("all {}", d.shapes.len()),
+            Some(Pick::One(k)) => format!("shape {k}"),
+            None => "shape 0".into(),
+        };
         if d.shapes.len() > 1 || !d.ignored.is_empty() {
             eprintln!(
-                "medax: {}: {} shape(s), {} thing(s) ignored; using shape {k} (`medax info` lists them)",
+                "medax: {}: {} shape(s), {} thing(s) ignored; using {picked} (`medax info` lists them)",
                 self.shape.display(),
                 d.shapes.len(),
                 d.ignored.len()
             );
         }
-        if k >= d.shapes.len() {
-            return Err(no_shape(&d, k));
+        match self.pick {
+            Some(Pick::All) if d.shapes.len() > 1 => {
+                Ok(d.shapes.into_iter().enumerate().map(|(k, s)| (Some(k), s)).collect())
+            }
+            pick => {
+                let k = match pick {
+                    Some(Pick::One(k)) => k,
+                    _ => 0,
+                };
+                if k >= d.shapes.len() {
+                    return Err(no_shape(&d, k));
+                }
+                Ok(vec![(None, d.shapes.swap_remove(k))])
+            }
         }
-        Ok(d.shapes.swap_remove(k))
     }
 }
 

@@ -1,7 +1,7 @@
 //! `medax offset`: trimmed offsets at given distances, pocketing rings or
 //! V-carve paths of a shape, as JSON, DXF and/or SVG.
 
-use super::{fail, write_file, write_streamed, RunArgs, ShapeArgs};
+use super::{fail, per_shape, write_file, write_streamed, RunArgs, ShapeArgs};
 use medax::cam::{pocket, vcarve, CamError, Pocket, PocketOptions, PocketOrder, VCarve, VCarveOptions};
 use medax::plane::offsets_to_dxf;
 use medax::plane::offsets_to_svg;
@@ -131,18 +131,31 @@ pub fn run(args: &OffsetArgs) -> Result<(), ExitCode> {
         eprintln!("medax offset: --outside-in orders pocket rings; use it with --pocket");
         return Err(ExitCode::from(2));
     }
-    let name = args.shape.shape.display().to_string();
-    let shape = args.shape.load().map_err(|e| fail(&args.shape.shape, &e))?;
+    let shapes = args.shape.load_each().map_err(|e| fail(&args.shape.shape, &e))?;
     let pool = args.run.pool()?;
+    for (k, shape) in &shapes {
+        if let Some(k) = k {
+            out!("shape {k}:");
+        }
+        run_one(args, shape, *k, &pool)?;
+    }
+    Ok(())
+}
+
+/// The offsets, pocket or v-carve of one shape (`k`: its number, when the
+/// run has several).
+fn run_one(args: &OffsetArgs, shape: &Shape2d, k: Option<usize>, pool: &rayon::ThreadPool) -> Result<(), ExitCode> {
+    let which = k.map_or_else(String::new, |k| format!(" shape {k}"));
+    let name = format!("{}{which}", args.shape.shape.display());
     let failed = |e: &dyn std::fmt::Display| {
         eprintln!("medax: {name}: {e}");
         ExitCode::from(1)
     };
     let axis_opts = AxisOptions { seed: args.run.seed, ..AxisOptions::default() };
     let t = Instant::now();
-    let axis = pool.install(|| medial_axis(&shape, &axis_opts)).map_err(|e| failed(&e))?;
+    let axis = pool.install(|| medial_axis(shape, &axis_opts)).map_err(|e| failed(&e))?;
     let tol = args.run.sample_tolerance.unwrap_or(1e-4 * shape.bbox().diagonal());
-    let ctx = Context { shape: &shape, axis: &axis, axis_opts, tol };
+    let ctx = Context { shape, axis: &axis, axis_opts, tol };
     let computed = pool.install(|| {
         if let Some(ds) = &args.distance {
             offsets(&ctx, ds)
@@ -157,14 +170,16 @@ pub fn run(args: &OffsetArgs) -> Result<(), ExitCode> {
     let computed = computed.map_err(|e| failed(&e))?;
     out!("computed in {:.3} s ({} elements)", t.elapsed().as_secs_f64(), shape.element_count());
     if let Some(path) = &args.json {
-        write_streamed(path, |w| computed.write_json(w))?;
+        let path = per_shape(path, k);
+        write_streamed(&path, |w| computed.write_json(w))?;
         out!("wrote {}", path.display());
     }
     let writers: [(&Option<PathBuf>, &dyn Fn() -> String); 2] =
         [(&args.dxf, &|| computed.dxf()), (&args.svg, &|| computed.svg(&ctx))];
     for (path, text) in writers {
         if let Some(path) = path {
-            write_file(path, &text())?;
+            let path = per_shape(path, k);
+            write_file(&path, &text())?;
             out!("wrote {}", path.display());
         }
     }

@@ -1,6 +1,8 @@
 //! The entities read from the pairs: LWPOLYLINE, POLYLINE with its
 //! VERTEX records, LINE, ARC and CIRCLE, mirrored where the extrusion
-//! direction says so; sections other than ENTITIES skipped.
+//! direction says so, each with its layer; INSERT records and BLOCK
+//! definitions kept for `blocks.rs`; other entities kept as skipped;
+//! sections other than HEADER, BLOCKS and ENTITIES skipped.
 
 use crate::io::dxf::blocks::{expand, Block, Insert};
 use crate::io::dxf::pairs::{error, integer, number, Pair};

@@ -1,13 +1,15 @@
 //! ASCII DXF reader: LWPOLYLINE, POLYLINE/VERTEX/SEQEND, LINE, ARC and CIRCLE
-//! entities of the ENTITIES section, as raw plain data.
+//! entities of the ENTITIES section with their layers, and the blocks its
+//! INSERTs place, as raw plain data.
 //!
-//! A DXF file is a sequence of group code/value line pairs. Only the ENTITIES
+//! A DXF file is a sequence of group code/value line pairs. The ENTITIES
 //! section is read (a bare entity list with no SECTION structure is accepted
-//! too); HEADER, TABLES, BLOCKS, OBJECTS and the rest are skipped, so block
-//! definitions and the INSERTs that place them are not expanded. Unknown
-//! entities and unknown group codes are ignored, because real files carry many
-//! of both. Z values are ignored: everything is read in the XY plane, in the
-//! drawing's model units.
+//! too), the BLOCKS section for the blocks that INSERT and MINSERT records
+//! place (`blocks.rs`), and `$INSUNITS` from the HEADER; TABLES, OBJECTS and
+//! the rest are skipped. Other entities (text, dimensions, hatches…) are
+//! kept by type, layer and point for the caller to report; unknown group
+//! codes are ignored, because real files carry many. Z values are ignored:
+//! everything is read in the XY plane, in the drawing's model units.
 //!
 //! Mirrored entities: CAD programs often write 2D entities with the extrusion
 //! direction (groups 210/220/230) set to (0, 0, -1). ARC, CIRCLE, LWPOLYLINE

@@ -149,9 +149,9 @@ impl<'g> Live<'g> {
 pub(crate) fn profile_loops(elems: &[LooseElement], tol: f64) -> Profiles {
     let g = Graph::new(elems, tol);
     let mut live = vec![true; elems.len()];
-    // A curve from a vertex to itself: a loop of its own if it bends
-    // (a full circle drawn as one arc with both ends at one point is read
-    // as a circle before it gets here), else nothing.
+    // A curve from a vertex to itself (its ends within the tolerance: a
+    // dot, or an arc the tolerance closes; a whole circle drawn as one arc
+    // is read as a circle before it gets here) closes no loop of its own.
     let mut out = Profiles::default();
     for (i, &[u, v]) in g.ends.iter().enumerate() {
         if u == v {
