@@ -69,7 +69,7 @@ void every_layer() {
     mt::begin_case("every layer");
     const std::string path = write("parts.dxf", drawing());
     mx_drawing* d = nullptr;
-    MT_CHECK_OK(mx_drawing_from_file(path.c_str(), MX_FORMAT_AUTO, nullptr, nullptr, 0, &d));
+    MT_CHECK_OK(mx_drawing_from_file(path.c_str(), MX_FORMAT_AUTO, nullptr, nullptr, &d));
     size_t shapes = 0, ignored = 0;
     MT_CHECK_OK(mx_drawing_shape_count(d, &shapes));
     MT_CHECK_EQ(shapes, size_t{2});
@@ -121,9 +121,12 @@ void one_layer_and_no_profile() {
     mt::begin_case("layers");
     const std::string path = write("layers.dxf", drawing());
     const char* layers[] = {"CENTER"};
+    mx_drawing_select select{};
+    select.layers = layers;
+    select.layer_count = 1;
     mx_drawing* d = nullptr;
     // The centre line alone closes nothing: no shapes, and no error.
-    MT_CHECK_OK(mx_drawing_from_file(path.c_str(), MX_FORMAT_DXF, nullptr, layers, 1, &d));
+    MT_CHECK_OK(mx_drawing_from_file(path.c_str(), MX_FORMAT_DXF, nullptr, &select, &d));
     size_t shapes = 7;
     MT_CHECK_OK(mx_drawing_shape_count(d, &shapes));
     MT_CHECK_EQ(shapes, size_t{0});
@@ -133,16 +136,78 @@ void one_layer_and_no_profile() {
     mx_drawing_free(d);
     // NULL arguments.
     mx_drawing* untouched = reinterpret_cast<mx_drawing*>(0x1);
-    MT_CHECK_STATUS(mx_drawing_from_file(nullptr, MX_FORMAT_AUTO, nullptr, nullptr, 0, &untouched),
+    MT_CHECK_STATUS(mx_drawing_from_file(nullptr, MX_FORMAT_AUTO, nullptr, nullptr, &untouched),
                     MX_ERR_NULL_ARGUMENT);
-    MT_CHECK_STATUS(mx_drawing_from_file(path.c_str(), MX_FORMAT_AUTO, nullptr, nullptr, 2, &untouched),
+    mx_drawing_select missing{};
+    missing.layer_count = 2;
+    MT_CHECK_STATUS(mx_drawing_from_file(path.c_str(), MX_FORMAT_AUTO, nullptr, &missing, &untouched),
                     MX_ERR_NULL_ARGUMENT);
+    const int16_t no_colour[] = {0};
+    mx_drawing_select bad_colour{};
+    bad_colour.colours = no_colour;
+    bad_colour.colour_count = 1;
+    MT_CHECK_STATUS(mx_drawing_from_file(path.c_str(), MX_FORMAT_AUTO, nullptr, &bad_colour, &untouched),
+                    MX_ERR_INVALID_ARGUMENT);
     MT_CHECK(untouched == reinterpret_cast<mx_drawing*>(0x1));
     MT_CHECK_STATUS(mx_drawing_shape_count(nullptr, &shapes), MX_ERR_NULL_ARGUMENT);
-    MT_CHECK_STATUS(mx_drawing_from_file("/nonexistent/x.dxf", MX_FORMAT_AUTO, nullptr, nullptr, 0, &untouched),
+    MT_CHECK_STATUS(mx_drawing_from_file("/nonexistent/x.dxf", MX_FORMAT_AUTO, nullptr, nullptr, &untouched),
                     MX_ERR_IO);
     mx_drawing_free(nullptr);
     fs::remove(path);
+}
+
+// Two closed polylines sharing an edge (handles 2A and 2B, colour 1 and
+// by layer on a layer of colour 3), a circle drawn twice (handles 3A, 3B):
+// read from memory, selected by colour, the touching pair and the copy
+// named by handle.
+void memory_colours_and_handles() {
+    mt::begin_case("memory, colours, handles");
+    const std::string text =
+        "0\nSECTION\n2\nTABLES\n0\nTABLE\n2\nLAYER\n0\nLAYER\n2\nGREEN\n62\n3\n0\nENDTAB\n0\nENDSEC\n"
+        "0\nSECTION\n2\nENTITIES\n"
+        "0\nLWPOLYLINE\n5\n2A\n8\n0\n62\n1\n90\n4\n70\n1\n10\n0\n20\n0\n10\n10\n20\n0\n10\n10\n20\n10\n10\n0\n20\n10\n"
+        "0\nLWPOLYLINE\n5\n2B\n8\nGREEN\n90\n4\n70\n1\n10\n10\n20\n2\n10\n14\n20\n2\n10\n14\n20\n6\n10\n10\n20\n6\n"
+        "0\nCIRCLE\n5\n3A\n8\n0\n10\n30\n20\n0\n40\n2\n"
+        "0\nCIRCLE\n5\n3B\n8\n0\n10\n30\n20\n0\n40\n2\n"
+        "0\nENDSEC\n0\nEOF\n";
+    mx_drawing* d = nullptr;
+    MT_CHECK_OK(mx_drawing_from_memory(reinterpret_cast<const uint8_t*>(text.data()), text.size(), MX_FORMAT_AUTO,
+                                       nullptr, nullptr, &d));
+    size_t shapes = 0, warnings = 0, ignored = 0;
+    MT_CHECK_OK(mx_drawing_shape_count(d, &shapes));
+    MT_CHECK_EQ(shapes, size_t{3});
+    MT_CHECK_OK(mx_drawing_warning_count(d, &warnings));
+    MT_CHECK_EQ(warnings, size_t{1});
+    mx_warning w{};
+    MT_CHECK_OK(mx_drawing_get_warning(d, 0, &w));
+    MT_CHECK_EQ(w.kind, MX_WARNING_TOUCHING_SHAPES);
+    MT_CHECK(w.handles[0] + w.handles[1] == 0x2A + 0x2B && w.handles[0] != w.handles[1]);
+    MT_CHECK(w.x == 10.0 && w.y >= 2.0 && w.y <= 6.0);
+    MT_CHECK_STATUS(mx_drawing_get_warning(d, 1, &w), MX_ERR_INDEX_OUT_OF_RANGE);
+    MT_CHECK_OK(mx_drawing_ignored_count(d, &ignored));
+    MT_CHECK_EQ(ignored, size_t{1});
+    mx_ignored copy{};
+    MT_CHECK_OK(mx_drawing_get_ignored(d, 0, &copy));
+    MT_CHECK_EQ(copy.kind, MX_IGNORED_DUPLICATE_LOOP);
+    MT_CHECK_EQ(copy.handle, uint64_t{0x3B});
+    MT_CHECK_EQ(copy.other_handle, uint64_t{0x3A});
+    mx_drawing_free(d);
+    // Green only: the square on layer GREEN, by layer.
+    const int16_t green[] = {3};
+    mx_drawing_select select{};
+    select.colours = green;
+    select.colour_count = 1;
+    MT_CHECK_OK(mx_drawing_from_memory(reinterpret_cast<const uint8_t*>(text.data()), text.size(), MX_FORMAT_DXF,
+                                       nullptr, &select, &d));
+    MT_CHECK_OK(mx_drawing_shape_count(d, &shapes));
+    MT_CHECK_EQ(shapes, size_t{1});
+    MT_CHECK_NEAR(area_of(d, 0), 16.0, 1e-12);
+    mx_drawing_free(d);
+    // NULL data is fine only when empty: an empty drawing has no shapes.
+    mx_drawing* untouched = reinterpret_cast<mx_drawing*>(0x1);
+    MT_CHECK_STATUS(mx_drawing_from_memory(nullptr, 5, MX_FORMAT_DXF, nullptr, nullptr, &untouched),
+                    MX_ERR_NULL_ARGUMENT);
+    MT_CHECK(untouched == reinterpret_cast<mx_drawing*>(0x1));
 }
 
 }  // namespace
@@ -150,5 +215,6 @@ void one_layer_and_no_profile() {
 int main() {
     every_layer();
     one_layer_and_no_profile();
+    memory_colours_and_handles();
     return mt::finish("c_api_drawing");
 }

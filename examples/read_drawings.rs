@@ -34,13 +34,14 @@ fn main() {
     let bytes: usize = texts.iter().map(Vec::len).sum();
     let (opts, select) = (ShapeOptions::default(), DrawingOptions::default());
     let t = Instant::now();
-    let (mut with_shapes, mut shapes, mut errors) = (0, 0, 0);
+    let (mut with_shapes, mut shapes, mut errors, mut touching) = (0, 0, 0, 0);
     let mut ignored: BTreeMap<&'static str, usize> = BTreeMap::new();
     for f in &files {
         match Drawing2d::from_file(f, &opts, &select) {
             Ok(d) => {
                 with_shapes += usize::from(!d.shapes.is_empty());
                 shapes += d.shapes.len();
+                touching += d.touching.len();
                 for i in &d.ignored {
                     *ignored.entry(i.kind.name()).or_default() += 1;
                 }
@@ -56,7 +57,7 @@ fn main() {
         files.len() as f64 / secs,
         bytes as f64 / 1e6 / secs
     );
-    println!("{with_shapes} files gave {shapes} shapes; {errors} could not be read");
+    println!("{with_shapes} files gave {shapes} shapes ({touching} pairs touching); {errors} could not be read");
     for (kind, n) in ignored {
         println!("  ignored {kind}: {n}");
     }

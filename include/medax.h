@@ -68,6 +68,17 @@
 #define MX_IGNORED_INVALID_SHAPE 7
 
 /**
+ * `mx_warning.kind`: curve ends that did not meet within the validation
+ * tolerance were joined (within the chaining tolerance).
+ */
+#define MX_WARNING_GAP_CLOSED 1
+
+/**
+ * `mx_warning.kind`: two shapes touch or cross (both kept).
+ */
+#define MX_WARNING_TOUCHING_SHAPES 2
+
+/**
  * `mx_pocket_options.order`: every ring after the rings inside it (the
  * wall last, as a finishing pass).
  */
@@ -565,6 +576,37 @@ typedef struct mx_shape_options {
 } mx_shape_options;
 
 /**
+ * What to take out of a drawing; every field may be zero (all of it).
+ */
+typedef struct mx_drawing_select {
+  /**
+   * Take the curves of these layers only (DXF group 8, UTF-8,
+   * NUL-terminated): `layer_count` of them; NULL when 0.
+   */
+  const char *const *layers;
+  /**
+   * How many `layers` (0: every layer).
+   */
+  size_t layer_count;
+  /**
+   * Take the curves of these colours only: AutoCAD colour indices
+   * 1-255 ("by layer" and "by block" resolved; 7 where nothing says);
+   * NULL when `colour_count` is 0.
+   */
+  const int16_t *colours;
+  /**
+   * How many `colours` (0: every colour).
+   */
+  size_t colour_count;
+  /**
+   * Nonzero: keep both copies of a loop drawn twice (they then meet
+   * and are reported); 0: merge them into one, reported as
+   * `MX_IGNORED_DUPLICATE_LOOP`.
+   */
+  uint8_t keep_duplicates;
+} mx_drawing_select;
+
+/**
  * One thing of a drawing in no shape.
  */
 typedef struct mx_ignored {
@@ -593,7 +635,55 @@ typedef struct mx_ignored {
    * Why it was left out, NUL-terminated; valid as long as the drawing.
    */
   const char *reason;
+  /**
+   * The DXF handle (group 5) of its first entity, or of the block
+   * reference that placed it; 0 where the file gives none.
+   */
+  uint64_t handle;
+  /**
+   * For `MX_IGNORED_DUPLICATE_LOOP` the handle of the copy kept, for
+   * `MX_IGNORED_TOUCHING_LOOP` and `MX_IGNORED_INVALID_SHAPE` that of
+   * the entity met; 0 otherwise.
+   */
+  uint64_t other_handle;
 } mx_ignored;
+
+/**
+ * Something of a drawing's shapes worth knowing: a gap closed, or two
+ * shapes that touch.
+ */
+typedef struct mx_warning {
+  /**
+   * An `MX_WARNING_*` constant.
+   */
+  uint32_t kind;
+  /**
+   * Where, model units.
+   */
+  double x;
+  /**
+   * Where, model units.
+   */
+  double y;
+  /**
+   * `MX_WARNING_GAP_CLOSED`: the gap joined, model units; else 0.
+   */
+  double gap;
+  /**
+   * `MX_WARNING_TOUCHING_SHAPES`: the two shapes (indices for
+   * `mx_drawing_shape`); else 0, 0.
+   */
+  size_t shapes[2];
+  /**
+   * `MX_WARNING_TOUCHING_SHAPES`: the 1-based lines (DXF) or byte
+   * offsets (SVG) of the two entities that meet; else 0, 0.
+   */
+  size_t sources[2];
+  /**
+   * `MX_WARNING_TOUCHING_SHAPES`: their DXF handles (0 where none).
+   */
+  uint64_t handles[2];
+} mx_warning;
 
 /**
  * Structured details of the last error on this thread. Indices are −1 when
@@ -1310,23 +1400,37 @@ enum mx_status mx_axis_edge_sample(const struct mx_axis *axis,
                                    size_t *count);
 
 /**
- * Reads a drawing file (DXF or SVG through profile extraction; a medax
- * JSON file is one shape; `MX_FORMAT_AUTO` picks by extension, then
- * content) with the curves of the `layer_count` layers named in `layers`
- * (`layer_count` 0: every layer; `layers` may then be NULL). A drawing
- * without a closed profile is not an error: it has no shapes, and its
- * ignored things say why.
+ * Reads a drawing file (DXF or SVG through profile extraction; medax shape
+ * JSON is one shape, drawing JSON its shapes; `MX_FORMAT_AUTO` picks by
+ * extension, then content), taking what `select` selects (NULL:
+ * everything). A drawing without a closed profile is not an error: it has
+ * no shapes, and its ignored things say why.
  *
  * # Safety
- * `path` NULL or NUL-terminated; `options` NULL or valid; `layers` valid
- * for `layer_count` NUL-terminated strings; `out` writable.
+ * `path` NULL or NUL-terminated; `options` NULL or valid; `select` NULL or
+ * valid; `out` writable.
  */
 enum mx_status mx_drawing_from_file(const char *path,
                                     uint32_t format,
                                     const struct mx_shape_options *options,
-                                    const char *const *layers,
-                                    size_t layer_count,
+                                    const struct mx_drawing_select *select,
                                     struct mx_drawing **out);
+
+/**
+ * Reads a drawing from `len` bytes in memory (a file's content: UTF-8,
+ * other bytes replaced; `MX_FORMAT_AUTO` guesses from the content), as
+ * `mx_drawing_from_file` does.
+ *
+ * # Safety
+ * `data` NULL (only when `len` is 0) or `len` readable bytes; `options`
+ * and `select` NULL or valid; `out` writable.
+ */
+enum mx_status mx_drawing_from_memory(const uint8_t *data,
+                                      size_t len,
+                                      uint32_t format,
+                                      const struct mx_shape_options *options,
+                                      const struct mx_drawing_select *select,
+                                      struct mx_drawing **out);
 
 /**
  * Frees a drawing; NULL is fine. Shapes taken from it stay valid.
@@ -1356,6 +1460,15 @@ enum mx_status mx_drawing_shape(const struct mx_drawing *drawing,
                                 struct mx_shape2d **out);
 
 /**
+ * Writes the drawing as JSON (`{"units", "shapes", "ignored",
+ * "warnings"}`, each shape in medax shape JSON; see README) to `path`.
+ *
+ * # Safety
+ * `drawing` NULL or a live handle; `path` NULL or NUL-terminated.
+ */
+enum mx_status mx_drawing_write_json(const struct mx_drawing *drawing, const char *path);
+
+/**
  * Number of things of the drawing in no shape.
  *
  * # Safety
@@ -1375,13 +1488,23 @@ enum mx_status mx_drawing_get_ignored(const struct mx_drawing *drawing,
                                       struct mx_ignored *out);
 
 /**
- * Writes the drawing as JSON (`{"units", "shapes", "ignored", "gaps"}`,
- * each shape in medax shape JSON) to `path`.
+ * Number of warnings: the gaps closed (widest first), then the pairs of
+ * shapes that touch.
  *
  * # Safety
- * `drawing` NULL or a live handle; `path` NULL or NUL-terminated.
+ * `drawing` NULL or a live handle; `out` NULL or writable.
  */
-enum mx_status mx_drawing_write_json(const struct mx_drawing *drawing, const char *path);
+enum mx_status mx_drawing_warning_count(const struct mx_drawing *drawing, size_t *out);
+
+/**
+ * Warning `index` (see `mx_drawing_warning_count` for the order).
+ *
+ * # Safety
+ * `drawing` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_drawing_get_warning(const struct mx_drawing *drawing,
+                                      size_t index,
+                                      struct mx_warning *out);
 
 /**
  * Releases a `mx_mesh3d`. NULL is a no-op.

@@ -348,6 +348,22 @@ fn a_drawing_of_two_parts_gives_two_shapes_and_says_what_it_ignored() {
     assert!(dir.join("rings.0.dxf").exists() && dir.join("rings.1.dxf").exists());
     let out = medax().arg("draw").arg(&drawing).args(["--shape", "all", "-o"]).arg(dir.join("x.svg")).output().unwrap();
     assert_eq!(out.status.code(), Some(1));
+    // The drawing JSON that info wrote reads back as the same two shapes.
+    let again = dir.join("again.json");
+    let out = medax().arg("axis").arg(&json).args(["--shape", "1", "--json"]).arg(&again).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(std::fs::read_to_string(&again).unwrap(), std::fs::read_to_string(&axis).unwrap());
+    // The Voronoi diagram of the parts: each part a region site.
+    let vd = dir.join("vd.json");
+    let out = medax().arg("voronoi").arg(&drawing).arg("--json").arg(&vd).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("2 part(s) as region sites"));
+    let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&vd).unwrap()).unwrap();
+    let between = doc["edges"].as_array().unwrap().iter().any(|e| {
+        e["separates"] == serde_json::json!([{"region": 0}, {"region": 1}])
+            || e["separates"] == serde_json::json!([{"region": 1}, {"region": 0}])
+    });
+    assert!(between, "no edge between the two parts");
     // Under --strict the drawing is refused whole, as before.
     let out = medax().arg("info").arg(&drawing).arg("--strict").output().unwrap();
     assert_eq!(out.status.code(), Some(1));

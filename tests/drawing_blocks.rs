@@ -84,7 +84,7 @@ fn nested_blocks_arrays_and_layer_zero() {
     // Layer selection sees the placed curves on the MINSERT's layer.
     let text =
         format!("0\nSECTION\n2\nBLOCKS\n{TAB}{pair}0\nENDSEC\n0\nSECTION\n2\nENTITIES\n{minsert}0\nENDSEC\n0\nEOF\n");
-    let other = DrawingOptions { layers: vec!["OTHER".into()] };
+    let other = DrawingOptions { layers: vec!["OTHER".into()], ..DrawingOptions::default() };
     let none = Drawing2d::from_str_as(&text, Format::Dxf, &ShapeOptions::default(), &other).unwrap();
     assert!(none.shapes.is_empty());
     assert_eq!(none.ignored.iter().map(|i| i.kind).collect::<Vec<_>>(), [IgnoredKind::OtherLayer]);

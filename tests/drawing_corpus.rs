@@ -4,9 +4,11 @@
 //! here without the library's reader, chaining or validation. Files where
 //! that graph closes a cycle should give a shape and the others none.
 
+mod common;
+
 use medax::shape::{Drawing2d, DrawingOptions, ShapeOptions};
 use std::collections::HashMap;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 const LIBRARY: &str = "/usr/share/librecad";
 
@@ -200,23 +202,6 @@ fn closes_a_cycle(curves: &[Curve]) -> bool {
     false
 }
 
-fn dxf_files(root: &Path) -> Vec<PathBuf> {
-    let mut files = Vec::new();
-    let mut dirs = vec![root.to_path_buf()];
-    while let Some(dir) = dirs.pop() {
-        for entry in std::fs::read_dir(&dir).unwrap().flatten() {
-            let p = entry.path();
-            if p.is_dir() {
-                dirs.push(p);
-            } else if p.extension().is_some_and(|e| e.eq_ignore_ascii_case("dxf")) {
-                files.push(p);
-            }
-        }
-    }
-    files.sort();
-    files
-}
-
 #[test]
 fn profiles_agree_with_an_independent_cycle_test_on_the_librecad_library() {
     let root = Path::new(LIBRARY);
@@ -224,7 +209,7 @@ fn profiles_agree_with_an_independent_cycle_test_on_the_librecad_library() {
         eprintln!("skipped: {LIBRARY} is not installed (Debian package librecad-data)");
         return;
     }
-    let files = dxf_files(root);
+    let files = common::dxf_files(root);
     assert!(files.len() > 1000, "{} DXF files", files.len());
     let opts = ShapeOptions::default();
     let (mut agree, mut shapes, mut cycles, mut compared) = (0, 0, 0, 0);

@@ -37,7 +37,8 @@ impl Dxf {
     }
     fn read_layers(self, layers: &[&str]) -> Drawing2d {
         let text = self.0 + "0\nENDSEC\n0\nEOF\n";
-        let select = DrawingOptions { layers: layers.iter().map(|l| l.to_string()).collect() };
+        let select =
+            DrawingOptions { layers: layers.iter().map(|l| l.to_string()).collect(), ..DrawingOptions::default() };
         Drawing2d::from_str_as(&text, Format::Dxf, &ShapeOptions::default(), &select).expect("the drawing parses")
     }
 }
@@ -216,4 +217,42 @@ fn an_svg_of_two_parts_and_a_stroke() {
     assert!((d.shapes[1].area() - 8.0).abs() < 1e-9);
     assert_eq!(kinds(&d), [IgnoredKind::OpenChain]);
     assert_eq!(d.ignored[0].layer, "");
+}
+
+#[test]
+fn a_part_inside_a_frame_with_a_title_block() {
+    // A sheet: outer edge, inner border, a title block in the border's
+    // lower right corner (its bottom and right edges are the border's),
+    // split into cells with text; the part (a plate with a bore) and its
+    // centre lines in the middle of the sheet.
+    let d = Dxf::new()
+        .on("FRAME")
+        .rect(0.0, 0.0, 297.0, 210.0)
+        .rect(10.0, 10.0, 287.0, 200.0)
+        .line([187.0, 10.0], [187.0, 50.0])
+        .line([187.0, 50.0], [287.0, 50.0])
+        .line([187.0, 30.0], [287.0, 30.0])
+        .line([237.0, 10.0], [237.0, 30.0])
+        .text([190.0, 40.0], "PLATE 1")
+        .text([190.0, 20.0], "1:1")
+        .on("PART")
+        .rect(40.0, 80.0, 120.0, 160.0)
+        .circle([80.0, 120.0], 10.0)
+        .on("CENTRE")
+        .line([65.0, 120.0], [95.0, 120.0])
+        .line([80.0, 105.0], [80.0, 135.0])
+        .read();
+    let part = 6400.0 - 100.0 * std::f64::consts::PI;
+    let found: Vec<_> = d.shapes.iter().filter(|s| (s.area() - part).abs() < 1e-9).collect();
+    assert_eq!(found.len(), 1, "{:?}", d.shapes.iter().map(|s| s.area()).collect::<Vec<_>>());
+    assert_eq!(found[0].holes().len(), 1);
+    // Every shape validates, no loop is in two shapes, and the text and
+    // centre lines are reported.
+    let loops: usize = d.shapes.iter().map(|s| s.loops().len()).sum();
+    assert!(loops >= 3, "{loops}");
+    assert_eq!(kinds(&d).iter().filter(|&&k| k == IgnoredKind::Entity).count(), 2);
+    assert!(kinds(&d).contains(&IgnoredKind::OpenChain));
+    // The part's layer alone gives the part alone.
+    let only = Dxf::new().on("PART").rect(40.0, 80.0, 120.0, 160.0).circle([80.0, 120.0], 10.0).read_layers(&["PART"]);
+    assert_eq!(only.shapes.len(), 1);
 }

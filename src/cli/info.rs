@@ -82,7 +82,13 @@ fn put_ignored(d: &Drawing2d) {
         out!("ignored: {} {}(s)", all.len(), kind.name());
         for i in all.iter().take(SHOWN) {
             let layer = if i.layer.is_empty() { String::new() } else { format!(", layer {}", i.layer) };
-            out!("  at line/byte {}{layer} near ({}, {}): {}", i.source, i.position.x, i.position.y, i.reason);
+            let handles = if i.handles.is_empty() {
+                String::new()
+            } else {
+                let hex: Vec<String> = i.handles.iter().map(|h| format!("{h:X}")).collect();
+                format!(", handle {}", hex.join(" and "))
+            };
+            out!("  at line/byte {}{layer}{handles} near ({}, {}): {}", i.source, i.position.x, i.position.y, i.reason);
         }
         if all.len() > SHOWN {
             out!("  … and {} more", all.len() - SHOWN);
@@ -93,5 +99,25 @@ fn put_ignored(d: &Drawing2d) {
     }
     if let Some((p, widest)) = d.gaps.first() {
         out!("gaps closed: {} (widest {widest:e} at ({}, {}))", d.gaps.len(), p.x, p.y);
+    }
+    if !d.touching.is_empty() {
+        out!("touching shapes: {} pair(s), each kept", d.touching.len());
+        for t in d.touching.iter().take(SHOWN) {
+            let [a, b] = t.shapes;
+            let [la, lb] = t.sources;
+            out!(
+                "  shapes {a} and {b} meet at ({}, {}): entities at line/byte {la} and {lb}{}",
+                t.position.x,
+                t.position.y,
+                if t.handles == [0, 0] {
+                    String::new()
+                } else {
+                    format!(" (handles {:X} and {:X})", t.handles[0], t.handles[1])
+                }
+            );
+        }
+        if d.touching.len() > SHOWN {
+            out!("  … and {} more", d.touching.len() - SHOWN);
+        }
     }
 }

@@ -59,6 +59,13 @@ struct ShapeArgs {
     /// Take the curves of this DXF layer only (repeatable; default: every layer).
     #[arg(long = "layer", value_name = "NAME")]
     layers: Vec<String>,
+    /// Take the curves of this DXF colour only: an AutoCAD colour index 1-255, by layer and by
+    /// block resolved (repeatable; default: every colour).
+    #[arg(long = "colour", visible_alias = "color", value_name = "ACI", value_parser = clap::value_parser!(i16).range(1..=255))]
+    colours: Vec<i16>,
+    /// Keep both copies of a loop drawn twice (default: merge them into one, reported).
+    #[arg(long)]
+    keep_duplicates: bool,
 }
 
 /// `--shape`: one shape of a drawing, or every one.
@@ -102,7 +109,12 @@ impl ShapeArgs {
         if self.strict {
             return Ok(Drawing2d::of(Shape2d::from_file(&self.shape, &self.options())?));
         }
-        Drawing2d::from_file(&self.shape, &self.options(), &DrawingOptions { layers: self.layers.clone() })
+        let select = DrawingOptions {
+            layers: self.layers.clone(),
+            colours: self.colours.clone(),
+            keep_duplicates: self.keep_duplicates,
+        };
+        Drawing2d::from_file(&self.shape, &self.options(), &select)
     }
 
     /// The shape to work on: the one `--shape` picks (the largest by

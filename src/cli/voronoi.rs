@@ -1,10 +1,13 @@
 //! `medax voronoi`: the Voronoi diagram of sites as JSON and/or SVG.
 
 use super::{write_file, write_streamed, RunArgs};
+use medax::io::Format;
+use medax::kernel::FilteredKernel;
 use medax::plane::read_sites;
 use medax::plane::AxisOptions;
+use medax::plane::Sites;
 use medax::plane::{voronoi, VoronoiOptions};
-use medax::shape::ShapeOptions;
+use medax::shape::{Drawing2d, DrawingOptions, Shape2d, ShapeOptions, Vertex};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -13,8 +16,15 @@ use std::time::Instant;
 #[derive(clap::Args)]
 pub struct VoronoiArgs {
     /// Sites file (JSON): {"points": [[x,y],..], "curves": [[[x,y,bulge],..],..],
-    /// "regions": [[[x,y,bulge],..],..], "boundary": [[x,y,bulge],..]}, every key optional.
+    /// "regions": [[[x,y,bulge],..],..], "boundary": [[x,y,bulge],..]}, every key optional; or a
+    /// drawing (DXF, SVG, shape or drawing JSON), whose parts (outer loops) are the region sites.
     pub sites: PathBuf,
+    /// Of a drawing, take the curves of this DXF layer only (repeatable).
+    #[arg(long = "layer", value_name = "NAME")]
+    pub layers: Vec<String>,
+    /// Of a drawing, take the curves of this DXF colour only (repeatable; 1-255).
+    #[arg(long = "colour", visible_alias = "color", value_name = "ACI", value_parser = clap::value_parser!(i16).range(1..=255))]
+    pub colours: Vec<i16>,
     /// Write the diagram as JSON (nodes, edges with the sites they separate, regions).
     #[arg(long)]
     pub json: Option<PathBuf>,
@@ -32,16 +42,61 @@ pub struct VoronoiArgs {
     pub run: RunArgs,
 }
 
-pub fn run(args: &VoronoiArgs) -> Result<(), ExitCode> {
+/// The sites of a sites file, or the parts of a drawing as region sites.
+fn load(args: &VoronoiArgs) -> Result<(Sites, Option<Vec<Vertex>>), ExitCode> {
     let name = args.sites.display();
-    let text = std::fs::read_to_string(&args.sites).map_err(|e| {
-        eprintln!("medax: cannot read {name}: {e}");
-        ExitCode::from(3)
-    })?;
-    let (sites, boundary) = read_sites(&text).map_err(|e| {
+    let fail = |e: &dyn std::fmt::Display| {
         eprintln!("medax: {name}: {e}");
         ExitCode::from(1)
+    };
+    let format = Format::from_path(&args.sites);
+    let mut sites_error = None;
+    if matches!(format, None | Some(Format::Json)) {
+        let text = std::fs::read_to_string(&args.sites).map_err(|e| {
+            eprintln!("medax: cannot read {name}: {e}");
+            ExitCode::from(3)
+        })?;
+        match read_sites(&text) {
+            Ok(read) => return Ok(read),
+            // Not a sites file: perhaps a shape or drawing.
+            Err(e) if text.contains("\"loops\"") || text.contains("\"shapes\"") => sites_error = Some(e),
+            Err(e) => return Err(fail(&e)),
+        }
+    }
+    let select = DrawingOptions { layers: args.layers.clone(), colours: args.colours.clone(), ..Default::default() };
+    let opts = ShapeOptions { tolerance: args.tolerance, ..ShapeOptions::default() };
+    let d = Drawing2d::from_file(&args.sites, &opts, &select).map_err(|e| match &sites_error {
+        Some(s) => fail(&format!("{s}; nor is it a drawing: {e}")),
+        None => fail(&e),
     })?;
+    let parts = parts(&d.shapes);
+    if parts.is_empty() {
+        return Err(fail(&"the drawing has no closed profile (`medax info` says what it holds)"));
+    }
+    let islands = d.shapes.len() - parts.len();
+    eprintln!(
+        "medax: {name}: the outer loops of {} part(s) as region sites{}",
+        parts.len(),
+        if islands > 0 { format!(" ({islands} island(s) inside other parts left out)") } else { String::new() }
+    );
+    let regions = parts.iter().map(|s| s.outer().vertices().to_vec()).collect();
+    Ok((Sites { regions, ..Sites::default() }, None))
+}
+
+/// The shapes not inside another shape's outer loop: islands in holes
+/// would overlap the part around them as region sites.
+fn parts(shapes: &[Shape2d]) -> Vec<&Shape2d> {
+    let k = FilteredKernel;
+    let inside = |s: &Shape2d, o: &Shape2d| {
+        let p = s.outer().vertices()[0].p;
+        !std::ptr::eq(s, o) && o.bbox().contains(p) && o.outer().winding_number(&k, p) != 0
+    };
+    shapes.iter().filter(|s| !shapes.iter().any(|o| inside(s, o))).collect()
+}
+
+pub fn run(args: &VoronoiArgs) -> Result<(), ExitCode> {
+    let name = args.sites.display();
+    let (sites, boundary) = load(args)?;
     let opts = VoronoiOptions {
         axis: AxisOptions { seed: args.run.seed, ..AxisOptions::default() },
         shape: ShapeOptions { tolerance: args.tolerance, ..ShapeOptions::default() },

@@ -1,21 +1,28 @@
 //! `mx_drawing`: the shapes of a DXF or SVG drawing (its closed profiles,
 //! grouped by containment) and what was left out of them.
 
-use super::boundary::{c_str, guard, in_pool, nth};
+use super::boundary::{c_str, guard, in_pool, nth, slice};
 use super::handles::{arg, create, free, query, Handle};
 use super::last_error::FfiError;
 use super::shape2d::{format_of, mx_shape2d, mx_shape_options, options};
 use super::status::mx_status;
-use crate::shape::{Drawing2d, DrawingOptions, IgnoredKind};
+use crate::shape::{Drawing2d, DrawingOptions};
 use std::ffi::{c_char, CString};
 
 /// A drawing read through profile extraction: its shapes (largest first)
 /// and the things of it in no shape. Immutable; may be shared between
 /// threads.
 pub struct mx_drawing {
-    inner: Drawing2d,
+    pub(super) inner: Drawing2d,
     /// Each ignored thing's layer and reason, NUL-terminated, lent to C.
-    texts: Vec<(CString, CString)>,
+    pub(super) texts: Vec<(CString, CString)>,
+}
+
+impl mx_drawing {
+    fn new(inner: Drawing2d) -> mx_drawing {
+        let texts = inner.ignored.iter().map(|i| (c_string(&i.layer), c_string(&i.reason))).collect();
+        mx_drawing { inner, texts }
+    }
 }
 
 impl Handle for mx_drawing {
@@ -23,93 +30,82 @@ impl Handle for mx_drawing {
     type Ownership = super::handles::Boxed;
 }
 
-/// `mx_ignored.kind`: curves that close no loop.
-pub const MX_IGNORED_OPEN_CHAIN: u32 = 1;
-/// `mx_ignored.kind`: an entity that is not a curve medax reads.
-pub const MX_IGNORED_ENTITY: u32 = 2;
-/// `mx_ignored.kind`: the curves of a layer left out by the selection.
-pub const MX_IGNORED_OTHER_LAYER: u32 = 3;
-/// `mx_ignored.kind`: a loop enclosing no area in sum.
-pub const MX_IGNORED_FLAT_LOOP: u32 = 4;
-/// `mx_ignored.kind`: a copy of a loop drawn twice.
-pub const MX_IGNORED_DUPLICATE_LOOP: u32 = 5;
-/// `mx_ignored.kind`: a hole touching or crossing another loop of its shape.
-pub const MX_IGNORED_TOUCHING_LOOP: u32 = 6;
-/// `mx_ignored.kind`: an outer loop with its holes that does not validate.
-pub const MX_IGNORED_INVALID_SHAPE: u32 = 7;
-
-/// One thing of a drawing in no shape.
-#[repr(C)]
-#[derive(Debug, Clone, Copy)]
-pub struct mx_ignored {
-    /// What it is: an `MX_IGNORED_*` constant.
-    pub kind: u32,
-    /// 1-based line (DXF) or byte offset (SVG) of its first entity.
-    pub source: usize,
-    /// A point of it, model units.
-    pub x: f64,
-    /// A point of it, model units.
-    pub y: f64,
-    /// Its layer, NUL-terminated ("" without layers); valid as long as
-    /// the drawing.
-    pub layer: *const c_char,
-    /// Why it was left out, NUL-terminated; valid as long as the drawing.
-    pub reason: *const c_char,
-}
-
-fn kind_code(k: IgnoredKind) -> u32 {
-    match k {
-        IgnoredKind::OpenChain => MX_IGNORED_OPEN_CHAIN,
-        IgnoredKind::Entity => MX_IGNORED_ENTITY,
-        IgnoredKind::OtherLayer => MX_IGNORED_OTHER_LAYER,
-        IgnoredKind::FlatLoop => MX_IGNORED_FLAT_LOOP,
-        IgnoredKind::DuplicateLoop => MX_IGNORED_DUPLICATE_LOOP,
-        IgnoredKind::TouchingLoop => MX_IGNORED_TOUCHING_LOOP,
-        IgnoredKind::InvalidShape => MX_IGNORED_INVALID_SHAPE,
-    }
-}
-
 /// A C string of `s`, interior NULs replaced (they cannot cross into C).
 fn c_string(s: &str) -> CString {
     CString::new(s.replace('\0', " ")).unwrap_or_default()
 }
 
-/// Reads a drawing file (DXF or SVG through profile extraction; a medax
-/// JSON file is one shape; `MX_FORMAT_AUTO` picks by extension, then
-/// content) with the curves of the `layer_count` layers named in `layers`
-/// (`layer_count` 0: every layer; `layers` may then be NULL). A drawing
-/// without a closed profile is not an error: it has no shapes, and its
-/// ignored things say why.
+/// What to take out of a drawing; every field may be zero (all of it).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct mx_drawing_select {
+    /// Take the curves of these layers only (DXF group 8, UTF-8,
+    /// NUL-terminated): `layer_count` of them; NULL when 0.
+    pub layers: *const *const c_char,
+    /// How many `layers` (0: every layer).
+    pub layer_count: usize,
+    /// Take the curves of these colours only: AutoCAD colour indices
+    /// 1-255 ("by layer" and "by block" resolved; 7 where nothing says);
+    /// NULL when `colour_count` is 0.
+    pub colours: *const i16,
+    /// How many `colours` (0: every colour).
+    pub colour_count: usize,
+    /// Nonzero: keep both copies of a loop drawn twice (they then meet
+    /// and are reported); 0: merge them into one, reported as
+    /// `MX_IGNORED_DUPLICATE_LOOP`.
+    pub keep_duplicates: u8,
+}
+
+/// The selection `select` points to (NULL: everything).
 ///
 /// # Safety
-/// `path` NULL or NUL-terminated; `options` NULL or valid; `layers` valid
-/// for `layer_count` NUL-terminated strings; `out` writable.
+/// `select` NULL or valid, its arrays valid for their counts.
+unsafe fn selection(select: *const mx_drawing_select) -> Result<DrawingOptions, FfiError> {
+    let mut out = DrawingOptions::default();
+    if select.is_null() {
+        return Ok(out);
+    }
+    // SAFETY: caller contract.
+    let s = unsafe { &*select };
+    // SAFETY: caller contract.
+    for &name in unsafe { slice(s.layers, s.layer_count, "select.layers")? } {
+        // SAFETY: caller contract.
+        out.layers.push(unsafe { c_str(name, "select.layers[k]")? }.to_string());
+    }
+    // SAFETY: caller contract.
+    out.colours = unsafe { slice(s.colours, s.colour_count, "select.colours")? }.to_vec();
+    if let Some(c) = out.colours.iter().find(|c| !(1..=255).contains(*c)) {
+        return Err(FfiError::new(
+            mx_status::MX_ERR_INVALID_ARGUMENT,
+            format!("select.colours: {c} is not a colour index 1-255"),
+        ));
+    }
+    out.keep_duplicates = s.keep_duplicates != 0;
+    Ok(out)
+}
+
+/// Reads a drawing file (DXF or SVG through profile extraction; medax shape
+/// JSON is one shape, drawing JSON its shapes; `MX_FORMAT_AUTO` picks by
+/// extension, then content), taking what `select` selects (NULL:
+/// everything). A drawing without a closed profile is not an error: it has
+/// no shapes, and its ignored things say why.
+///
+/// # Safety
+/// `path` NULL or NUL-terminated; `options` NULL or valid; `select` NULL or
+/// valid; `out` writable.
 #[no_mangle]
 pub unsafe extern "C" fn mx_drawing_from_file(
     path: *const c_char,
     format: u32,
     options: *const mx_shape_options,
-    layers: *const *const c_char,
-    layer_count: usize,
+    select: *const mx_drawing_select,
     out: *mut *mut mx_drawing,
 ) -> mx_status {
     // SAFETY: caller contract.
     unsafe {
         create(out, || {
             let (path, (opts, threads)) = (c_str(path, "path")?, self::options(options)?);
-            let format = format_of(format)?;
-            let mut select = DrawingOptions::default();
-            if layer_count > 0 {
-                if layers.is_null() {
-                    return Err(FfiError::new(
-                        mx_status::MX_ERR_NULL_ARGUMENT,
-                        format!("argument `layers` is NULL but `layer_count` is {layer_count}"),
-                    ));
-                }
-                for k in 0..layer_count {
-                    select.layers.push(c_str(*layers.add(k), "layers[k]")?.to_string());
-                }
-            }
+            let (format, select) = (format_of(format)?, selection(select)?);
             let inner = in_pool(threads, || -> Result<Drawing2d, FfiError> {
                 Ok(match format {
                     None => Drawing2d::from_file(path, &opts, &select)?,
@@ -121,8 +117,36 @@ pub unsafe extern "C" fn mx_drawing_from_file(
                     }
                 })
             })??;
-            let texts = inner.ignored.iter().map(|i| (c_string(&i.layer), c_string(&i.reason))).collect();
-            Ok(mx_drawing { inner, texts })
+            Ok(mx_drawing::new(inner))
+        })
+    }
+}
+
+/// Reads a drawing from `len` bytes in memory (a file's content: UTF-8,
+/// other bytes replaced; `MX_FORMAT_AUTO` guesses from the content), as
+/// `mx_drawing_from_file` does.
+///
+/// # Safety
+/// `data` NULL (only when `len` is 0) or `len` readable bytes; `options`
+/// and `select` NULL or valid; `out` writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_drawing_from_memory(
+    data: *const u8,
+    len: usize,
+    format: u32,
+    options: *const mx_shape_options,
+    select: *const mx_drawing_select,
+    out: *mut *mut mx_drawing,
+) -> mx_status {
+    // SAFETY: caller contract.
+    unsafe {
+        create(out, || {
+            let (bytes, (opts, threads)) = (slice(data, len, "data")?, self::options(options)?);
+            let (format, select) = (format_of(format)?, selection(select)?);
+            let text = String::from_utf8_lossy(bytes);
+            let format = format.unwrap_or_else(|| crate::shape::sniff(&text));
+            let inner = in_pool(threads, || Drawing2d::from_str_as(&text, format, &opts, &select))??;
+            Ok(mx_drawing::new(inner))
         })
     }
 }
@@ -167,46 +191,8 @@ pub unsafe extern "C" fn mx_drawing_shape(
     }
 }
 
-/// Number of things of the drawing in no shape.
-///
-/// # Safety
-/// `drawing` NULL or a live handle; `out` NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn mx_drawing_ignored_count(drawing: *const mx_drawing, out: *mut usize) -> mx_status {
-    // SAFETY: forwarded contract.
-    unsafe { query(drawing, out, |d| Ok(d.inner.ignored.len())) }
-}
-
-/// Ignored thing `index`, in the order found; its strings live as long as
-/// the drawing.
-///
-/// # Safety
-/// `drawing` NULL or a live handle; `out` NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn mx_drawing_get_ignored(
-    drawing: *const mx_drawing,
-    index: usize,
-    out: *mut mx_ignored,
-) -> mx_status {
-    // SAFETY: forwarded contract.
-    unsafe {
-        query(drawing, out, |d| {
-            let i = nth(&d.inner.ignored, index, "ignored thing")?;
-            let (layer, reason) = &d.texts[index];
-            Ok(mx_ignored {
-                kind: kind_code(i.kind),
-                source: i.source,
-                x: i.position.x,
-                y: i.position.y,
-                layer: layer.as_ptr(),
-                reason: reason.as_ptr(),
-            })
-        })
-    }
-}
-
-/// Writes the drawing as JSON (`{"units", "shapes", "ignored", "gaps"}`,
-/// each shape in medax shape JSON) to `path`.
+/// Writes the drawing as JSON (`{"units", "shapes", "ignored",
+/// "warnings"}`, each shape in medax shape JSON; see README) to `path`.
 ///
 /// # Safety
 /// `drawing` NULL or a live handle; `path` NULL or NUL-terminated.

@@ -15,6 +15,7 @@
 mod axis;
 mod boundary;
 mod drawing;
+mod drawing_report;
 mod handles;
 mod last_error;
 mod offset;
@@ -27,6 +28,7 @@ mod voronoi;
 
 pub use axis::*;
 pub use drawing::*;
+pub use drawing_report::*;
 pub use handles::*;
 pub use last_error::*;
 pub use offset::*;

@@ -17,6 +17,55 @@ struct ShapeFile {
     loops: Vec<Vec<JsonVertex>>,
 }
 
+/// A shape file or a drawing file (`{"shapes": [{"loops": ...}, ...]}`,
+/// what `medax info --json` writes).
+#[derive(Deserialize)]
+struct AnyFile {
+    loops: Option<Vec<Vec<JsonVertex>>>,
+    shapes: Option<Vec<ShapeFile>>,
+}
+
+fn polylines(loops: Vec<Vec<JsonVertex>>) -> Vec<RawPolyline> {
+    loops
+        .into_iter()
+        .enumerate()
+        .map(|(li, lp)| RawPolyline {
+            vertices: lp.into_iter().map(|v| v.0).collect(),
+            closed: true,
+            source: li,
+            ..RawPolyline::default()
+        })
+        .collect()
+}
+
+/// A JSON document of medax: one shape or a drawing of several.
+#[derive(Debug, Clone, PartialEq)]
+pub enum JsonDoc {
+    /// `{"loops": ...}`: the loops of one shape.
+    Shape(Vec<RawPolyline>),
+    /// `{"shapes": [{"loops": ...}, ...]}`: the loops of each shape.
+    Drawing(Vec<Vec<RawPolyline>>),
+}
+
+/// Reads shape JSON or drawing JSON (`loops` wins where both are given).
+pub fn read_doc(text: &str) -> Result<JsonDoc, ParseError> {
+    if let Some(loops) = read_loops_fast(text.as_bytes()) {
+        return Ok(JsonDoc::Shape(loops));
+    }
+    let file: AnyFile = serde_json::from_str(text).map_err(parse_error)?;
+    match (file.loops, file.shapes) {
+        (Some(loops), _) => Ok(JsonDoc::Shape(polylines(loops))),
+        (None, Some(shapes)) => Ok(JsonDoc::Drawing(shapes.into_iter().map(|s| polylines(s.loops)).collect())),
+        (None, None) => Err(ParseError {
+            format: Format::Json,
+            line: 1,
+            column: 1,
+            message: "neither `loops` (a shape) nor `shapes` (a drawing) is given".into(),
+            unsupported: false,
+        }),
+    }
+}
+
 /// `[x, y]` or `[x, y, bulge]`, read without allocating (files hold
 /// millions of vertices).
 struct JsonVertex(RawVertex);
@@ -76,18 +125,19 @@ pub fn read_loops_fast_in_pieces(bytes: &[u8], piece_bytes: usize) -> Option<Vec
 /// the fuzz target compare them).
 #[doc(hidden)]
 pub fn read_loops_generic(text: &str) -> Result<Vec<RawPolyline>, ParseError> {
-    let file: ShapeFile = serde_json::from_str(text).map_err(parse_error)?;
-    Ok(file
-        .loops
-        .into_iter()
-        .enumerate()
-        .map(|(li, lp)| RawPolyline {
-            vertices: lp.into_iter().map(|v| v.0).collect(),
-            closed: true,
-            source: li,
-            layer: 0,
-        })
-        .collect())
+    let file: ShapeFile = serde_json::from_str(text).map_err(|e| {
+        let mut err = parse_error(e);
+        // A drawing where one shape is expected: say so, not "missing loops".
+        if let Ok(AnyFile { loops: None, shapes: Some(shapes) }) = serde_json::from_str::<AnyFile>(text) {
+            err.message = format!(
+                "a drawing of {} shape(s) (`shapes`), not one shape (`loops`): read it as a drawing \
+                 (Drawing2d, mx_drawing, or the command line's --shape K)",
+                shapes.len()
+            );
+        }
+        err
+    })?;
+    Ok(polylines(file.loops))
 }
 
 /// A serde error as a [`ParseError`] at its line and column.

@@ -149,7 +149,7 @@ pub(super) fn scan_loops(bytes: &[u8], piece_bytes: usize) -> Option<Vec<RawPoly
         loops
             .into_iter()
             .enumerate()
-            .map(|(source, vertices)| RawPolyline { vertices, closed: true, source, layer: 0 })
+            .map(|(source, vertices)| RawPolyline { vertices, closed: true, source, layer: 0, colour: 0, handle: 0 })
             .collect(),
     )
 }

@@ -108,6 +108,13 @@ pub struct RawPolyline {
     /// Its layer: an index into [`RawDrawing::layers`] (0 in formats
     /// without layers).
     pub layer: u32,
+    /// Its colour as an AutoCAD colour index 1–255 (DXF group 62), with
+    /// "by layer" and "by block" resolved (7, white/black, where nothing
+    /// says; 0 in formats without colours).
+    pub colour: i16,
+    /// Its DXF handle (group 5, hexadecimal), or that of the block
+    /// reference that placed it; 0 where there is none.
+    pub handle: u64,
 }
 
 /// A circular arc as read from a file: centre, radius and angles in degrees,
@@ -126,6 +133,13 @@ pub struct RawArc {
     pub source: usize,
     /// Its layer: an index into [`RawDrawing::layers`].
     pub layer: u32,
+    /// Its colour as an AutoCAD colour index 1–255 (DXF group 62), with
+    /// "by layer" and "by block" resolved (7, white/black, where nothing
+    /// says; 0 in formats without colours).
+    pub colour: i16,
+    /// Its DXF handle (group 5, hexadecimal), or that of the block
+    /// reference that placed it; 0 where there is none.
+    pub handle: u64,
 }
 
 /// A line segment as read from a file.
@@ -139,6 +153,13 @@ pub struct RawLine {
     pub source: usize,
     /// Its layer: an index into [`RawDrawing::layers`].
     pub layer: u32,
+    /// Its colour as an AutoCAD colour index 1–255 (DXF group 62), with
+    /// "by layer" and "by block" resolved (7, white/black, where nothing
+    /// says; 0 in formats without colours).
+    pub colour: i16,
+    /// Its DXF handle (group 5, hexadecimal), or that of the block
+    /// reference that placed it; 0 where there is none.
+    pub handle: u64,
 }
 
 /// A full circle as read from a file.
@@ -152,6 +173,13 @@ pub struct RawCircle {
     pub source: usize,
     /// Its layer: an index into [`RawDrawing::layers`].
     pub layer: u32,
+    /// Its colour as an AutoCAD colour index 1–255 (DXF group 62), with
+    /// "by layer" and "by block" resolved (7, white/black, where nothing
+    /// says; 0 in formats without colours).
+    pub colour: i16,
+    /// Its DXF handle (group 5, hexadecimal), or that of the block
+    /// reference that placed it; 0 where there is none.
+    pub handle: u64,
 }
 
 /// Everything geometric a drawing file held, before chaining into loops.
@@ -184,6 +212,13 @@ pub struct RawSkipped {
     pub entity: String,
     /// Its layer: an index into [`RawDrawing::layers`].
     pub layer: u32,
+    /// Its colour as an AutoCAD colour index 1–255 (DXF group 62), with
+    /// "by layer" and "by block" resolved (7, white/black, where nothing
+    /// says; 0 in formats without colours).
+    pub colour: i16,
+    /// Its DXF handle (group 5, hexadecimal), or that of the block
+    /// reference that placed it; 0 where there is none.
+    pub handle: u64,
     /// Its insertion or first point (groups 10 and 20) where it has one.
     pub position: Option<[f64; 2]>,
     /// 1-based source line.

@@ -27,7 +27,7 @@ pub(crate) mod validate;
 pub use crate::kernel::element::{Arc, Element, Segment};
 pub use build::chain::chain_loops;
 pub use build::import::sniff;
-pub use build::profiles::{profiles, unit_name, Drawing2d, DrawingOptions, Ignored, IgnoredKind};
+pub use build::profiles::{profiles, unit_name, Drawing2d, DrawingOptions, Ignored, IgnoredKind, Touching};
 pub use build::samples;
 pub use draw::{draw_joints, push_loop_path, shape_document, shape_path};
 pub use index::box_tree::BoxTree;

@@ -210,3 +210,22 @@ pub fn demo_shape() -> Vec<Vec<Vertex>> {
         medax::shape::Shape2d::from_json_str(&text, &medax::shape::ShapeOptions::default()).expect("demo shape valid");
     s.loops().iter().map(|l| l.vertices().to_vec()).collect()
 }
+
+/// The DXF files under `root`, recursively, sorted (case-insensitive
+/// extension).
+pub fn dxf_files(root: &std::path::Path) -> Vec<std::path::PathBuf> {
+    let mut files = Vec::new();
+    let mut dirs = vec![root.to_path_buf()];
+    while let Some(dir) = dirs.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap().flatten() {
+            let p = entry.path();
+            if p.is_dir() {
+                dirs.push(p);
+            } else if p.extension().is_some_and(|e| e.eq_ignore_ascii_case("dxf")) {
+                files.push(p);
+            }
+        }
+    }
+    files.sort();
+    files
+}

@@ -256,6 +256,8 @@ pub fn check_strided(s: &Shape2d, axis: &MedialAxis2d, probes: usize, seed: u64,
     assert_eq!(corners, convex, "one corner node per convex vertex");
     for (v, n) in axis.nodes.iter().enumerate() {
         match n.kind {
+            // A disk's axis is its centre alone: a leaf of degree 0.
+            NodeKind::Leaf if axis.nodes.len() == 1 => assert_eq!(deg[v], 0, "{n:?}"),
             NodeKind::Corner | NodeKind::Leaf => assert_eq!(deg[v], 1, "{n:?}"),
             NodeKind::Branch => assert!(deg[v] >= 3, "{n:?}"),
             NodeKind::Joint => assert_eq!(deg[v], 2, "{n:?}"),
@@ -271,6 +273,13 @@ pub fn check_strided(s: &Shape2d, axis: &MedialAxis2d, probes: usize, seed: u64,
     for pl in &lines {
         for w in pl.windows(2).map(|w| (w[0], w[1])).chain((pl.len() == 1).then(|| (pl[0], pl[0]))) {
             pieces.push((w, Extent::Segment(w.0.center, w.1.center)));
+        }
+    }
+    // A lone node (a disk's centre) is a piece of its own.
+    if axis.edges.is_empty() {
+        for n in &axis.nodes {
+            let d = Disk { center: n.point, radius: n.radius };
+            pieces.push(((d, d), Extent::Segment(d.center, d.center)));
         }
     }
     let axis_grid = Grid::with_extents(pieces, s.bbox());

@@ -29,6 +29,52 @@ pub(crate) struct Insert {
     pub mirror: bool,
     pub source: usize,
     pub layer: u32,
+    /// Group 62 as written, resolved for top-level INSERTs.
+    pub colour: i16,
+    pub handle: u64,
+}
+
+/// The colour of entities that name none, or name "by block" outside a
+/// block: 7 (white on dark screens, black on paper).
+pub(crate) const DEFAULT_COLOUR: i16 = 7;
+
+/// How colours as written (group 62) become colours 1–255.
+pub(crate) struct Colours<'a> {
+    /// Each layer's colour.
+    pub layers: &'a [i16],
+    /// The colour "by block" (0) stands for: that of the block reference.
+    pub by_block: i16,
+}
+
+impl Colours<'_> {
+    /// Colour `c` as written, of an entity on `layer`.
+    pub fn of(&self, c: i16, layer: u32) -> i16 {
+        match c {
+            0 => self.by_block,
+            256 => self.layers.get(layer as usize).copied().unwrap_or(DEFAULT_COLOUR),
+            1..=255 => c,
+            _ => DEFAULT_COLOUR,
+        }
+    }
+
+    /// Resolves the colours of every entity of `d`, whose layers `of` maps.
+    pub fn resolve_all(&self, d: &mut RawDrawing, of: &impl Fn(u32) -> u32) {
+        for l in &mut d.lines {
+            l.colour = self.of(l.colour, of(l.layer));
+        }
+        for a in &mut d.arcs {
+            a.colour = self.of(a.colour, of(a.layer));
+        }
+        for c in &mut d.circles {
+            c.colour = self.of(c.colour, of(c.layer));
+        }
+        for p in &mut d.polylines {
+            p.colour = self.of(p.colour, of(p.layer));
+        }
+        for e in &mut d.skipped {
+            e.colour = self.of(e.colour, of(e.layer));
+        }
+    }
 }
 
 /// A BLOCK definition: its base point and what it holds.
@@ -103,36 +149,50 @@ struct Placing<'a> {
     blocks: &'a HashMap<String, Block>,
     /// The layer index of "0": entities on it take their INSERT's layer.
     zero: Option<u32>,
+    layer_colours: &'a [i16],
     placed: usize,
     /// The expansion limit was reached (and reported once).
     full: bool,
 }
 
+/// What a block reference hands down to what it places: the top-level
+/// INSERT's line and handle (the thing a user can pick in a CAD program),
+/// and its own layer and resolved colour.
+#[derive(Clone, Copy)]
+struct Placer {
+    source: usize,
+    handle: u64,
+    layer: u32,
+    colour: i16,
+}
+
 /// Adds to `out` the entities of the blocks `inserts` refer to, placed,
-/// each with the INSERT's line as its source; a reference to a missing
-/// block, one nested too deep, a curve that an uneven scale would turn
-/// into an ellipse and everything beyond the expansion limit are added to
-/// `out.skipped`.
-pub(crate) fn expand(out: &mut RawDrawing, inserts: &[Insert], blocks: &HashMap<String, Block>) {
+/// each with the INSERT's line and handle, layer 0 and colour "by block"
+/// taking the INSERT's; a reference to a missing block, one nested too
+/// deep, a curve that an uneven scale would turn into an ellipse and
+/// everything beyond the expansion limit are added to `out.skipped`.
+/// `inserts` have their colours resolved; `layer_colours` are the
+/// layers' colours.
+pub(crate) fn expand(out: &mut RawDrawing, inserts: &[Insert], blocks: &HashMap<String, Block>, layer_colours: &[i16]) {
     let zero = out.layers.iter().position(|l| l == "0").map(|i| i as u32);
-    let mut p = Placing { blocks, zero, placed: 0, full: false };
+    let mut p = Placing { blocks, zero, layer_colours, placed: 0, full: false };
     let mut path = Vec::new();
     for ins in inserts {
-        place(out, &mut p, ins, &Affine::IDENTITY, ins.source, ins.layer, &mut path);
+        let by = Placer { source: ins.source, handle: ins.handle, layer: ins.layer, colour: ins.colour };
+        place(out, &mut p, ins, &Affine::IDENTITY, by, &mut path);
     }
 }
 
-fn place(
-    out: &mut RawDrawing,
-    p: &mut Placing,
-    ins: &Insert,
-    outer: &Affine,
-    source: usize,
-    layer: u32,
-    path: &mut Vec<String>,
-) {
+fn place(out: &mut RawDrawing, p: &mut Placing, ins: &Insert, outer: &Affine, by: Placer, path: &mut Vec<String>) {
     let skip = |out: &mut RawDrawing, why: String| {
-        out.skipped.push(RawSkipped { entity: why, layer, position: Some(outer.apply(ins.at)), source });
+        out.skipped.push(RawSkipped {
+            entity: why,
+            layer: by.layer,
+            colour: by.colour,
+            handle: by.handle,
+            position: Some(outer.apply(ins.at)),
+            source: by.source,
+        });
     };
     if p.full {
         return;
@@ -144,6 +204,9 @@ fn place(
         return skip(out, format!("INSERT of block {} (nested too deep, or in itself)", ins.name));
     }
     path.push(ins.name.clone());
+    let zero = p.zero;
+    let of = |l: u32| if Some(l) == zero { by.layer } else { l };
+    let colours = Colours { layers: p.layer_colours, by_block: by.colour };
     for col in 0..ins.columns {
         for row in 0..ins.rows {
             if p.placed >= MAX_PLACED || p.full {
@@ -161,13 +224,13 @@ fn place(
                 return;
             }
             let a = outer.after(&Affine::of_insert(ins, block.base, col, row));
-            let zero = p.zero;
-            let of = |l: u32| if Some(l) == zero { layer } else { l };
             // A cell counts even when its block is empty: an array of
             // nothing must end too.
-            p.placed += copy(out, &block.drawing, &a, source, &of, layer).max(1);
+            p.placed += copy(out, &block.drawing, &a, by, &of, &colours).max(1);
             for inner in &block.inserts {
-                place(out, p, inner, &a, source, of(inner.layer), path);
+                let layer = of(inner.layer);
+                let inner_by = Placer { layer, colour: colours.of(inner.colour, layer), ..by };
+                place(out, p, inner, &a, inner_by, path);
             }
         }
     }
@@ -179,18 +242,21 @@ fn copy(
     out: &mut RawDrawing,
     d: &RawDrawing,
     a: &Affine,
-    source: usize,
+    by: Placer,
     of: &impl Fn(u32) -> u32,
-    layer: u32,
+    colours: &Colours,
 ) -> usize {
     let flip = a.det() < 0.0;
     let similar = a.similarity();
+    let (source, handle) = (by.source, by.handle);
     let uneven = |out: &mut RawDrawing, what: &str, at: [f64; 2]| {
         let entity = format!("{what} in a block scaled unevenly (an ellipse)");
-        out.skipped.push(RawSkipped { entity, layer, position: Some(a.apply(at)), source });
+        let (layer, colour) = (by.layer, by.colour);
+        out.skipped.push(RawSkipped { entity, layer, colour, handle, position: Some(a.apply(at)), source });
     };
     for l in &d.lines {
-        out.lines.push(RawLine { a: a.apply(l.a), b: a.apply(l.b), source, layer: of(l.layer) });
+        let (layer, colour) = (of(l.layer), colours.of(l.colour, of(l.layer)));
+        out.lines.push(RawLine { a: a.apply(l.a), b: a.apply(l.b), source, layer, colour, handle });
     }
     for pl in &d.polylines {
         if similar.is_none() && pl.vertices.iter().any(|v| v.bulge != 0.0) {
@@ -205,7 +271,8 @@ fn copy(
                 crate::io::RawVertex { x, y, bulge: if flip { -v.bulge } else { v.bulge } }
             })
             .collect();
-        out.polylines.push(RawPolyline { vertices, closed: pl.closed, source, layer: of(pl.layer) });
+        let (layer, colour) = (of(pl.layer), colours.of(pl.colour, of(pl.layer)));
+        out.polylines.push(RawPolyline { vertices, closed: pl.closed, source, layer, colour, handle });
     }
     for c in &d.circles {
         match similar {
@@ -214,6 +281,8 @@ fn copy(
                 radius: c.radius * s,
                 source,
                 layer: of(c.layer),
+                colour: colours.of(c.colour, of(c.layer)),
+                handle,
             }),
             None => uneven(out, "CIRCLE", c.center),
         }
@@ -236,12 +305,15 @@ fn copy(
             if (arc.end_deg - arc.start_deg).rem_euclid(360.0) == 0.0 { from + 360.0 } else { angle(on(arc.end_deg)) };
         // A mirror turns the arc round: counter-clockwise from the old end.
         let (start_deg, end_deg) = if flip { (to, from) } else { (from, to) };
-        out.arcs.push(RawArc { center, radius: arc.radius * s, start_deg, end_deg, source, layer: of(arc.layer) });
+        let (layer, colour) = (of(arc.layer), colours.of(arc.colour, of(arc.layer)));
+        let radius = arc.radius * s;
+        out.arcs.push(RawArc { center, radius, start_deg, end_deg, source, layer, colour, handle });
     }
     for e in &d.skipped {
         let mut e = e.clone();
         e.position = e.position.map(|q| a.apply(q));
-        (e.source, e.layer) = (source, of(e.layer));
+        e.colour = colours.of(e.colour, of(e.layer));
+        (e.source, e.layer, e.handle) = (source, of(e.layer), handle);
         out.skipped.push(e);
     }
     d.lines.len() + d.polylines.len() + d.circles.len() + d.arcs.len()

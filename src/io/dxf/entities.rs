@@ -4,7 +4,7 @@
 //! definitions kept for `blocks.rs`; other entities kept as skipped;
 //! sections other than HEADER, BLOCKS and ENTITIES skipped.
 
-use crate::io::dxf::blocks::{expand, Block, Insert};
+use crate::io::dxf::blocks::{expand, Block, Colours, Insert, DEFAULT_COLOUR};
 use crate::io::dxf::pairs::{error, integer, number, Pair};
 use crate::io::{ParseError, RawArc, RawCircle, RawDrawing, RawLine, RawPolyline, RawSkipped, RawVertex};
 use std::collections::HashMap;
@@ -30,6 +30,9 @@ struct Fields {
     end_deg: Option<f64>,
     flags: Option<i64>,
     extrusion_z: Option<f64>,
+    /// Group 62 as written (0 by block, 256 by layer, negative: layer off).
+    colour: Option<i16>,
+    handle: u64,
 }
 
 impl Fields {
@@ -50,6 +53,14 @@ impl Fields {
                     f.flags = Some(integer(entity, at, g)?);
                     continue;
                 }
+                62 => {
+                    f.colour = colour(g);
+                    continue;
+                }
+                5 => {
+                    f.handle = handle(g);
+                    continue;
+                }
                 _ => continue,
             };
             *slot = Some(number(entity, at, g)?);
@@ -61,6 +72,21 @@ impl Fields {
         self.extrusion_z.is_some_and(|z| z < 0.0)
     }
 }
+
+/// A handle (group 5, hexadecimal); 0 when it does not parse, as handles
+/// only name things in reports.
+pub(crate) fn handle(g: &Pair) -> u64 {
+    u64::from_str_radix(g.value.trim(), 16).unwrap_or(0)
+}
+
+/// A colour (group 62) as written; `None` when it does not parse, as
+/// colours only select.
+pub(crate) fn colour(g: &Pair) -> Option<i16> {
+    g.value.trim().parse::<i64>().ok().map(|c| c.clamp(-32768, 32767) as i16)
+}
+
+/// Colour 62 as written: by layer (256) where the entity does not say.
+const BY_LAYER: i16 = 256;
 
 /// Unwraps a required group or says which one is missing.
 fn required(entity: &str, at: usize, value: Option<f64>, code: i32, what: &str) -> Result<f64, ParseError> {
@@ -84,6 +110,8 @@ enum Section {
     /// Block definitions: the entities of each BLOCK are kept for the
     /// INSERTs that place them.
     Blocks,
+    /// The tables: the LAYER records give the layers' colours.
+    Tables,
     /// Any other section: skipped.
     Other,
 }
@@ -100,6 +128,8 @@ pub(crate) struct Reader {
     /// their indices.
     layers: Vec<String>,
     layer_ids: HashMap<String, u32>,
+    /// The colour of each layer (LAYER table), 1–255.
+    layer_colours: Vec<i16>,
     /// The BLOCK being defined: its name, base point, and the drawing's
     /// own entities and INSERTs while it is read.
     block: Option<(String, [f64; 2], RawDrawing, Vec<Insert>)>,
@@ -128,6 +158,8 @@ impl Reader {
                     Section::Entities
                 } else if named("BLOCKS") {
                     Section::Blocks
+                } else if named("TABLES") {
+                    Section::Tables
                 } else {
                     Section::Other
                 };
@@ -143,6 +175,15 @@ impl Reader {
         }
         match (&self.section, name.as_str()) {
             (Section::Other, _) => return Ok(()),
+            (Section::Tables, "LAYER") => {
+                let name = groups.iter().find(|g| g.code == 2).map_or("0", |g| g.value.trim());
+                let id = self.layer_id(name) as usize;
+                // A negative colour marks the layer off; it keeps its colour.
+                let c = groups.iter().find(|g| g.code == 62).and_then(colour).map(i16::unsigned_abs);
+                self.layer_colours[id] = c.map_or(DEFAULT_COLOUR, |c| c as i16);
+                return Ok(());
+            }
+            (Section::Tables, _) => return Ok(()),
             (Section::Blocks, "BLOCK") => {
                 self.flush_polyline();
                 self.end_block();
@@ -190,6 +231,8 @@ impl Reader {
                     mirror: f.mirrored(),
                     source: at,
                     layer,
+                    colour: f.colour.unwrap_or(BY_LAYER),
+                    handle: f.handle,
                 });
                 Ok(())
             }
@@ -198,7 +241,14 @@ impl Reader {
                 let f = Fields::read("POLYLINE", at, groups)?;
                 let flags = f.flags.unwrap_or(0);
                 self.polyline = Some(OpenPolyline {
-                    polyline: RawPolyline { vertices: Vec::new(), closed: flags & 1 != 0, source: at, layer },
+                    polyline: RawPolyline {
+                        vertices: Vec::new(),
+                        closed: flags & 1 != 0,
+                        source: at,
+                        layer,
+                        colour: f.colour.unwrap_or(BY_LAYER),
+                        handle: f.handle,
+                    },
                     skip: flags & POLYLINE_NOT_2D != 0,
                     mirror: f.mirrored(),
                 });
@@ -212,6 +262,8 @@ impl Reader {
                     b: [required("LINE", at, f.x2, 11, "end x")?, required("LINE", at, f.y2, 21, "end y")?],
                     source: at,
                     layer,
+                    colour: f.colour.unwrap_or(BY_LAYER),
+                    handle: f.handle,
                 };
                 self.out.lines.push(line);
                 Ok(())
@@ -225,6 +277,8 @@ impl Reader {
                     end_deg: required("ARC", at, f.end_deg, 51, "end angle")?,
                     source: at,
                     layer,
+                    colour: f.colour.unwrap_or(BY_LAYER),
+                    handle: f.handle,
                 };
                 if f.mirrored() {
                     // Mirroring reverses the direction: the old end becomes the start.
@@ -246,6 +300,8 @@ impl Reader {
                     radius: required("CIRCLE", at, f.radius, 40, "radius")?,
                     source: at,
                     layer,
+                    colour: f.colour.unwrap_or(BY_LAYER),
+                    handle: f.handle,
                 };
                 if f.mirrored() {
                     circle.center[0] = -circle.center[0];
@@ -260,7 +316,9 @@ impl Reader {
                 // only a hint, so a value that does not parse is no error.
                 let coord = |code: i32| groups.iter().find(|g| g.code == code)?.value.trim().parse::<f64>().ok();
                 let position = coord(10).zip(coord(20)).map(|(x, y)| [x, y]);
-                self.out.skipped.push(RawSkipped { entity: name, layer, position, source: at });
+                let handle = groups.iter().find(|g| g.code == 5).map_or(0, handle);
+                let colour = groups.iter().find(|g| g.code == 62).and_then(colour).unwrap_or(BY_LAYER);
+                self.out.skipped.push(RawSkipped { entity: name, layer, colour, handle, position, source: at });
                 Ok(())
             }
         }
@@ -269,12 +327,16 @@ impl Reader {
     /// The index of the entity's layer (group 8; "0", DXF's default
     /// layer, when it has none), adding the name on first sight.
     fn layer(&mut self, groups: &[Pair]) -> u32 {
-        let name = groups.iter().find(|g| g.code == 8).map_or("0", |g| g.value.trim());
+        self.layer_id(groups.iter().find(|g| g.code == 8).map_or("0", |g| g.value.trim()))
+    }
+
+    fn layer_id(&mut self, name: &str) -> u32 {
         if let Some(&id) = self.layer_ids.get(name) {
             return id;
         }
         let id = self.layers.len() as u32;
         self.layers.push(name.to_string());
+        self.layer_colours.push(DEFAULT_COLOUR);
         self.layer_ids.insert(name.to_string(), id);
         id
     }
@@ -294,7 +356,12 @@ impl Reader {
         self.flush_polyline();
         self.end_block();
         self.out.layers = std::mem::take(&mut self.layers);
-        expand(&mut self.out, &self.inserts, &self.blocks);
+        let colours = Colours { layers: &self.layer_colours, by_block: DEFAULT_COLOUR };
+        colours.resolve_all(&mut self.out, &|l| l);
+        for ins in &mut self.inserts {
+            ins.colour = colours.of(ins.colour, ins.layer);
+        }
+        expand(&mut self.out, &self.inserts, &self.blocks, &self.layer_colours);
         self.out
     }
 
@@ -330,8 +397,11 @@ impl Reader {
         // Line of the latest 10 group while its 20 has not been seen.
         let mut missing_y: Option<usize> = None;
         let (mut closed, mut mirror) = (false, false);
+        let (mut colour_62, mut handle_5) = (BY_LAYER, 0);
         for g in groups {
             match g.code {
+                5 => handle_5 = handle(g),
+                62 => colour_62 = colour(g).unwrap_or(BY_LAYER),
                 10 => {
                     if let Some(l) = missing_y {
                         return Err(error(l, format!("{E} at line {at}: vertex x (group 10) has no y (group 20)")));
@@ -367,7 +437,14 @@ impl Reader {
                 v.bulge = -v.bulge;
             }
         }
-        self.out.polylines.push(RawPolyline { vertices, closed, source: at, layer });
+        self.out.polylines.push(RawPolyline {
+            vertices,
+            closed,
+            source: at,
+            layer,
+            colour: colour_62,
+            handle: handle_5,
+        });
         Ok(())
     }
 

@@ -47,6 +47,22 @@ pub(crate) struct Origin {
     pub source: usize,
     /// Its layer, an index into [`RawDrawing::layers`].
     pub layer: u32,
+    /// Its DXF handle (or its block reference's); 0 where there is none.
+    pub handle: u64,
+}
+
+/// A loop and where its elements come from: one origin per element, or
+/// one for all.
+pub(crate) struct Traced {
+    pub l: Loop,
+    pub from: Vec<Origin>,
+}
+
+impl Traced {
+    /// The origin of element `e`.
+    pub fn origin(&self, e: usize) -> Origin {
+        self.from.get(e).or(self.from.first()).copied().unwrap_or_default()
+    }
 }
 
 /// A parsed drawing's curves: closed polylines and circles as loops,
@@ -63,14 +79,14 @@ pub(crate) struct DrawingParts {
 }
 
 /// Splits a parsed drawing into loops and loose elements, taking the
-/// curves of the layers `take` accepts.
-pub(crate) fn drawing_parts(d: &RawDrawing, take: impl Fn(u32) -> bool) -> DrawingParts {
+/// curves that `take` accepts by layer and colour.
+pub(crate) fn drawing_parts(d: &RawDrawing, take: impl Fn(u32, i16) -> bool) -> DrawingParts {
     let mut loops = Vec::new();
     let mut loose = Vec::new();
     let mut origins = Vec::new();
-    for p in d.polylines.iter().filter(|p| take(p.layer)) {
+    for p in d.polylines.iter().filter(|p| take(p.layer, p.colour)) {
         let elems = polyline_elements(p);
-        let origin = Origin { source: p.source, layer: p.layer };
+        let origin = Origin { source: p.source, layer: p.layer, handle: p.handle };
         if p.closed {
             loops.push((Loop::new(elems.iter().map(|e| Vertex { p: e.a, bulge: e.bulge }).collect()), origin));
         } else {
@@ -78,12 +94,12 @@ pub(crate) fn drawing_parts(d: &RawDrawing, take: impl Fn(u32) -> bool) -> Drawi
             loose.extend(elems);
         }
     }
-    for l in d.lines.iter().filter(|l| take(l.layer)) {
+    for l in d.lines.iter().filter(|l| take(l.layer, l.colour)) {
         loose.push(LooseElement { a: pt(l.a), b: pt(l.b), bulge: 0.0 });
-        origins.push(Origin { source: l.source, layer: l.layer });
+        origins.push(Origin { source: l.source, layer: l.layer, handle: l.handle });
     }
-    for a in d.arcs.iter().filter(|a| take(a.layer)) {
-        let origin = Origin { source: a.source, layer: a.layer };
+    for a in d.arcs.iter().filter(|a| take(a.layer, a.colour)) {
+        let origin = Origin { source: a.source, layer: a.layer, handle: a.handle };
         let c = pt(a.center);
         let (s, e) = (a.start_deg.to_radians(), a.end_deg.to_radians());
         let mut sweep = (e - s).rem_euclid(TAU);
@@ -99,8 +115,9 @@ pub(crate) fn drawing_parts(d: &RawDrawing, take: impl Fn(u32) -> bool) -> Drawi
             origins.push(origin);
         }
     }
-    for c in d.circles.iter().filter(|c| take(c.layer)) {
-        loops.push((circle_loop(pt(c.center), c.radius), Origin { source: c.source, layer: c.layer }));
+    for c in d.circles.iter().filter(|c| take(c.layer, c.colour)) {
+        let origin = Origin { source: c.source, layer: c.layer, handle: c.handle };
+        loops.push((circle_loop(pt(c.center), c.radius), origin));
     }
     let diagonal = scale_of(
         loops.iter().flat_map(|(l, _)| l.vertices.iter().map(|v| v.p)).chain(loose.iter().flat_map(|e| [e.a, e.b])),
@@ -111,7 +128,7 @@ pub(crate) fn drawing_parts(d: &RawDrawing, take: impl Fn(u32) -> bool) -> Drawi
 /// Loops from a parsed drawing: closed polylines and circles as they are,
 /// everything else chained. The largest loop becomes the outer boundary.
 fn drawing_loops(d: &RawDrawing, opts: &ShapeOptions) -> Result<Vec<Loop>, ShapeError> {
-    let parts = drawing_parts(d, |_| true);
+    let parts = drawing_parts(d, |_, _| true);
     let mut loops: Vec<Loop> = parts.loops.into_iter().map(|(l, _)| l).collect();
     loops.extend(chain_loops(&parts.loose, opts.chain_tolerance_for(parts.diagonal))?);
     Ok(outer_first(loops))
@@ -160,7 +177,14 @@ pub(crate) fn svg_drawing(paths: &[SvgSubpath]) -> Result<RawDrawing, ShapeError
         } else if !sp.closed {
             verts.push(crate::io::RawVertex { x: cur.x, y: cur.y, bulge: 0.0 });
         }
-        drawing.polylines.push(RawPolyline { vertices: verts, closed: sp.closed, source: sp.source, layer: 0 });
+        drawing.polylines.push(RawPolyline {
+            vertices: verts,
+            closed: sp.closed,
+            source: sp.source,
+            layer: 0,
+            colour: 0,
+            handle: 0,
+        });
     }
     Ok(drawing)
 }
@@ -175,7 +199,7 @@ impl Shape2d {
         Shape2d::from_raw_json(json::read_loops(text)?, opts)
     }
 
-    fn from_raw_json(raw: Vec<RawPolyline>, opts: &ShapeOptions) -> Result<Shape2d, ShapeError> {
+    pub(crate) fn from_raw_json(raw: Vec<RawPolyline>, opts: &ShapeOptions) -> Result<Shape2d, ShapeError> {
         let loops = raw.into_iter().map(|p| p.vertices.into_iter().map(Vertex::from).collect()).collect();
         Shape2d::from_bulge_loops(loops, opts)
     }

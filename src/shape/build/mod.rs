@@ -8,3 +8,4 @@ pub(crate) mod import;
 pub(crate) mod profile_graph;
 pub(crate) mod profiles;
 pub mod samples;
+pub(crate) mod touching;

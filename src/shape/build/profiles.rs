@@ -6,11 +6,13 @@
 
 use crate::io::RawDrawing;
 use crate::kernel::{BBox, FilteredKernel, Point};
-use crate::shape::build::import::{drawing_parts, Origin};
+use crate::shape::build::import::{drawing_parts, Origin, Traced};
 use crate::shape::build::profile_graph::profile_loops;
+use crate::shape::build::touching::touching_shapes;
+pub use crate::shape::build::touching::Touching;
 use crate::shape::index::box_tree::BoxTree;
 use crate::shape::model::bulge_loop::Loop;
-use crate::shape::model::error::ShapeError;
+use crate::shape::model::error::{ElementRef, ShapeError};
 use crate::shape::model::options::ShapeOptions;
 use crate::shape::shape2d::Shape2d;
 use crate::util::fast_hash::FastMap;
@@ -30,6 +32,10 @@ pub struct Drawing2d {
     /// tolerance, and were joined: the joint and the gap closed (model
     /// units), widest first.
     pub gaps: Vec<(Point, f64)>,
+    /// Shapes whose boundaries touch or cross: two parts sharing an edge,
+    /// an island touching the hole it lies in. Both are kept (each is
+    /// valid on its own); a machining plan may want them merged or apart.
+    pub touching: Vec<Touching>,
     /// The unit the drawing says its coordinates are in (DXF `$INSUNITS`),
     /// by name: "millimetre", "inch"…; `None` where it does not say, or
     /// says "unitless".
@@ -79,6 +85,12 @@ pub struct Ignored {
     pub position: Point,
     /// Why it was left out.
     pub reason: String,
+    /// The DXF handles (group 5) of the entities at fault, or of the block
+    /// references that placed them: its first entity, then for a
+    /// [`IgnoredKind::DuplicateLoop`] the entity of the copy kept, for a
+    /// [`IgnoredKind::TouchingLoop`] or an [`IgnoredKind::InvalidShape`]
+    /// whose loops meet the entity met. Empty where the file has none.
+    pub handles: Vec<u64>,
     /// For an [`IgnoredKind::InvalidShape`], the validation error.
     pub cause: Option<ShapeError>,
 }
@@ -92,7 +104,8 @@ pub enum IgnoredKind {
     OpenChain,
     /// A closed loop that encloses no area.
     FlatLoop,
-    /// A copy of a loop drawn twice (the first is kept).
+    /// A copy of a loop drawn twice (the first is kept; see
+    /// [`DrawingOptions::keep_duplicates`]).
     DuplicateLoop,
     /// A loop inside a shape's outer loop that touches or crosses another
     /// of its loops: left out, the shape kept without it.
@@ -130,6 +143,14 @@ pub struct DrawingOptions {
     /// Take the curves of these layers only (DXF group 8; "0" for entities
     /// without one); empty: every layer.
     pub layers: Vec<String>,
+    /// Take the curves of these colours only: AutoCAD colour indices
+    /// 1–255 (DXF group 62, "by layer" and "by block" resolved; 7 where
+    /// nothing says); empty: every colour.
+    pub colours: Vec<i16>,
+    /// Keep both copies of a loop drawn twice rather than merging them
+    /// into one: they then meet, and are reported as touching loops or
+    /// touching shapes, as drawn.
+    pub keep_duplicates: bool,
 }
 
 /// The things left out of a drawing, as they are found.
@@ -141,8 +162,25 @@ struct Report<'a> {
 
 impl Report<'_> {
     fn push(&mut self, kind: IgnoredKind, at: Origin, position: Point, reason: String, cause: Option<ShapeError>) {
-        let layer = self.layers.get(at.layer as usize).cloned().unwrap_or_default();
-        self.out.push(Ignored { kind, source: at.source, layer, position, reason, cause });
+        self.push_pair(kind, [at, Origin::default()], position, reason, cause);
+    }
+
+    /// An ignored thing whose first entity is `at[0]` and which meets or
+    /// copies `at[1]` (default where none).
+    fn push_pair(
+        &mut self,
+        kind: IgnoredKind,
+        at: [Origin; 2],
+        position: Point,
+        reason: String,
+        cause: Option<ShapeError>,
+    ) {
+        let layer = self.layers.get(at[0].layer as usize).cloned().unwrap_or_default();
+        let mut handles = vec![at[0].handle, at[1].handle];
+        while handles.last() == Some(&0) {
+            handles.pop();
+        }
+        self.out.push(Ignored { kind, source: at[0].source, layer, position, reason, cause, handles });
     }
 }
 
@@ -156,88 +194,107 @@ impl Report<'_> {
 pub fn profiles(d: &RawDrawing, opts: &ShapeOptions, select: &DrawingOptions) -> Drawing2d {
     let taken: Vec<bool> =
         d.layers.iter().map(|name| select.layers.is_empty() || select.layers.iter().any(|l| l == name)).collect();
-    let take = |layer: u32| taken.get(layer as usize).copied().unwrap_or(select.layers.is_empty());
+    let take = |layer: u32, colour: i16| {
+        taken.get(layer as usize).copied().unwrap_or(select.layers.is_empty())
+            && (select.colours.is_empty() || select.colours.contains(&colour))
+    };
     let mut report = Report { layers: &d.layers, out: Vec::new() };
-    for e in d.skipped.iter().filter(|e| take(e.layer)) {
-        let at = Origin { source: e.source, layer: e.layer };
+    for e in d.skipped.iter().filter(|e| take(e.layer, e.colour)) {
+        let at = Origin { source: e.source, layer: e.layer, handle: e.handle };
         let position = e.position.map_or(Point::default(), |[x, y]| Point::new(x, y));
         report.push(IgnoredKind::Entity, at, position, format!("{} is not a curve medax reads", e.entity), None);
     }
-    left_out_layers(d, &take, &mut report);
+    left_out(d, &take, &mut report);
     let parts = drawing_parts(d, take);
     let tol = opts.chain_tolerance_for(parts.diagonal);
-    let mut loops = parts.loops;
+    let mut loops: Vec<Traced> = parts.loops.into_iter().map(|(l, at)| Traced { l, from: vec![at] }).collect();
     let found = profile_loops(&parts.loose, tol);
     let mut gaps: Vec<(Point, f64)> =
         found.gaps.into_iter().filter(|&(_, d)| d > opts.tolerance_for(parts.diagonal)).collect();
     gaps.sort_by(|a, b| b.1.total_cmp(&a.1));
-    loops.extend(found.loops.into_iter().map(|(l, ids)| (l, parts.origins[ids[0]])));
+    loops.extend(
+        found.loops.into_iter().map(|(l, ids)| Traced { l, from: ids.iter().map(|&i| parts.origins[i]).collect() }),
+    );
     for (run, position) in found.open {
         let first = run.iter().map(|&i| parts.origins[i]).min_by_key(|o| o.source).unwrap_or_default();
         let reason = format!("{} entities that close no loop", run.len());
         report.push(IgnoredKind::OpenChain, first, position, reason, None);
     }
-    let (flat, loops): (Vec<_>, Vec<_>) = loops.into_iter().partition(|(l, _)| l.signed_area() == 0.0);
-    for (l, at) in flat {
-        let position = l.vertices().first().map_or(Point::default(), |v| v.p);
+    let (flat, loops): (Vec<_>, Vec<_>) = loops.into_iter().partition(|t| t.l.signed_area() == 0.0);
+    for t in flat {
+        let position = t.l.vertices().first().map_or(Point::default(), |v| v.p);
         let reason = "the loop encloses no area in sum (it crosses itself, or its entities are drawn twice)";
-        report.push(IgnoredKind::FlatLoop, at, position, reason.into(), None);
+        report.push(IgnoredKind::FlatLoop, t.origin(0), position, reason.into(), None);
     }
-    let loops = drop_duplicates(loops, tol, &mut report);
+    let loops = drop_duplicates(loops, tol, !select.keep_duplicates, &mut report);
     let mut shapes = Vec::new();
+    let mut traced = Vec::new();
     for group in nest(loops) {
-        if let Some(shape) = validate(group, opts, &mut report) {
+        if let Some((shape, from)) = validate(group, opts, &mut report) {
             shapes.push(shape);
+            traced.push(from);
         }
     }
-    Drawing2d { shapes, ignored: report.out, gaps, units: d.units.and_then(unit_name) }
+    let touching = touching_shapes(&shapes, &traced);
+    Drawing2d { shapes, ignored: report.out, gaps, touching, units: d.units.and_then(unit_name) }
 }
 
-/// One report per layer whose curves `take` leaves out, with their count.
-fn left_out_layers(d: &RawDrawing, take: &impl Fn(u32) -> bool, report: &mut Report) {
+/// One report per layer of the curves `take` leaves out (by layer or by
+/// colour), with their count.
+fn left_out(d: &RawDrawing, take: &impl Fn(u32, i16) -> bool, report: &mut Report) {
     let mut count: Vec<(usize, Origin, Point)> = vec![(0, Origin::default(), Point::default()); d.layers.len()];
-    let curves = d.lines.iter().map(|l| (l.layer, l.source, l.a));
-    let curves = curves.chain(d.arcs.iter().map(|a| (a.layer, a.source, a.center)));
-    let curves = curves.chain(d.circles.iter().map(|c| (c.layer, c.source, c.center)));
+    let at = |layer: u32, source: usize, handle: u64| Origin { source, layer, handle };
+    let curves = d.lines.iter().map(|l| (at(l.layer, l.source, l.handle), l.colour, l.a));
+    let curves = curves.chain(d.arcs.iter().map(|a| (at(a.layer, a.source, a.handle), a.colour, a.center)));
+    let curves = curves.chain(d.circles.iter().map(|c| (at(c.layer, c.source, c.handle), c.colour, c.center)));
     let curves = curves.chain(d.polylines.iter().map(|p| {
         let first = p.vertices.first().map_or([0.0, 0.0], |v| [v.x, v.y]);
-        (p.layer, p.source, first)
+        (at(p.layer, p.source, p.handle), p.colour, first)
     }));
-    for (layer, source, [x, y]) in curves.filter(|c| !take(c.0)) {
-        if let Some(c) = count.get_mut(layer as usize) {
+    for (origin, _, [x, y]) in curves.filter(|c| !take(c.0.layer, c.1)) {
+        if let Some(c) = count.get_mut(origin.layer as usize) {
             if c.0 == 0 {
-                (c.1, c.2) = (Origin { source, layer }, Point::new(x, y));
+                (c.1, c.2) = (origin, Point::new(x, y));
             }
             c.0 += 1;
         }
     }
     for (name, (n, at, position)) in d.layers.iter().zip(count) {
         if n > 0 {
-            report.push(IgnoredKind::OtherLayer, at, position, format!("{n} curve(s) on layer {name}"), None);
+            let reason = format!("{n} curve(s) on layer {name} not selected (by layer or colour)");
+            report.push(IgnoredKind::OtherLayer, at, position, reason, None);
         }
     }
 }
 
-/// The shape of a group (outer loop first), without the holes that touch
-/// or cross another of its loops (each reported, with the validation
-/// error naming both); `None` with the group reported when the outer loop
-/// itself is at fault or the error is another.
-fn validate(mut group: Vec<(Loop, Origin)>, opts: &ShapeOptions, report: &mut Report) -> Option<Shape2d> {
+/// The shape of a group (outer loop first) and its loops' origins, without
+/// the holes that touch or cross another of its loops (each reported,
+/// with the validation error and both entities); `None` with the group
+/// reported when the outer loop itself is at fault or the error is
+/// another.
+fn validate(mut group: Vec<Traced>, opts: &ShapeOptions, report: &mut Report) -> Option<(Shape2d, Vec<Traced>)> {
     loop {
-        let loops = group.iter().map(|(l, _)| l.clone()).collect();
+        let loops = group.iter().map(|t| t.l.clone()).collect();
         let e = match Shape2d::from_loops(loops, opts) {
-            Ok(s) => return Some(s),
+            Ok(s) => return Some((s, group)),
             Err(e) => e,
         };
         // The later of two loops that meet (the smaller: holes follow
         // their outer loop by decreasing area), unless that is the outer.
-        let culprit = match e {
-            ShapeError::Intersection { first, second, .. } => first.loop_index.max(second.loop_index),
-            _ => 0,
+        let (culprit, at) = match e {
+            ShapeError::Intersection { first, second, .. } => {
+                let (a, b) = if first.loop_index >= second.loop_index { (first, second) } else { (second, first) };
+                let origin = |r: ElementRef| group[r.loop_index].origin(r.element);
+                (a.loop_index, [origin(a), origin(b)])
+            }
+            _ => {
+                let r = e.element().unwrap_or_default();
+                (0, [group.get(r.loop_index).map_or(Origin::default(), |t| t.origin(r.element)), Origin::default()])
+            }
         };
-        let (l, at) = if culprit == 0 { group.swap_remove(0) } else { group.remove(culprit) };
+        let t = if culprit == 0 { group.swap_remove(0) } else { group.remove(culprit) };
         let kind = if culprit == 0 { IgnoredKind::InvalidShape } else { IgnoredKind::TouchingLoop };
-        report.push(kind, at, l.vertices()[0].p, e.to_string(), Some(e));
+        report.push_pair(kind, at, t.l.vertices()[0].p, e.to_string(), Some(e));
         if culprit == 0 {
             return None;
         }
@@ -249,17 +306,21 @@ const PROBES: usize = 3;
 
 /// `loops` sorted by decreasing enclosed area, without the copies of a
 /// loop drawn twice (the same vertices within `tol`, in either direction
-/// and from any start, and the same area), which are reported.
-fn drop_duplicates(mut loops: Vec<(Loop, Origin)>, tol: f64, report: &mut Report) -> Vec<(Loop, Origin)> {
-    loops.sort_by(|a, b| b.0.signed_area().abs().total_cmp(&a.0.signed_area().abs()));
+/// and from any start, and the same area), which are reported; with them
+/// when `merge` is false.
+fn drop_duplicates(mut loops: Vec<Traced>, tol: f64, merge: bool, report: &mut Report) -> Vec<Traced> {
+    loops.sort_by(|a, b| b.l.signed_area().abs().total_cmp(&a.l.signed_area().abs()));
+    if !merge {
+        return loops;
+    }
     // Kept loops by the cell of their box's lower corner: a copy's corner
     // lies within `tol`, in that cell or a neighbour.
     let cell = tol.max(f64::MIN_POSITIVE * 1e10);
     let key = |p: Point| ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);
     let mut cells: FastMap<(i64, i64), Vec<usize>> = FastMap::default();
-    let mut kept: Vec<(Loop, Origin, f64)> = Vec::with_capacity(loops.len());
-    for (l, at) in loops {
-        let (bb, area) = (l.bbox(), l.signed_area().abs());
+    let mut kept: Vec<(Traced, f64)> = Vec::with_capacity(loops.len());
+    for t in loops {
+        let (bb, area) = (t.l.bbox(), t.l.signed_area().abs());
         let (kx, ky) = key(bb.min);
         let first = (-1..=1)
             .flat_map(|dx| (-1..=1).map(move |dy| (kx.saturating_add(dx), ky.saturating_add(dy))))
@@ -267,22 +328,23 @@ fn drop_duplicates(mut loops: Vec<(Loop, Origin)>, tol: f64, report: &mut Report
             .flatten()
             .copied()
             .find(|&k| {
-                let (other, _, other_area) = &kept[k];
-                (other_area - area).abs() <= tol * (bb.width() + bb.height()) && same_cycle(other, &l, tol)
+                let (other, other_area) = &kept[k];
+                (other_area - area).abs() <= tol * (bb.width() + bb.height()) && same_cycle(&other.l, &t.l, tol)
             });
         match first {
             Some(k) => {
+                let other = kept[k].0.origin(0);
                 let reason =
-                    format!("drawn twice: the same loop as the one at line/byte {}, which is kept", kept[k].1.source);
-                report.push(IgnoredKind::DuplicateLoop, at, l.vertices()[0].p, reason, None);
+                    format!("drawn twice: the same loop as the one at line/byte {}, which is kept", other.source);
+                report.push_pair(IgnoredKind::DuplicateLoop, [t.origin(0), other], t.l.vertices()[0].p, reason, None);
             }
             None => {
                 cells.entry((kx, ky)).or_default().push(kept.len());
-                kept.push((l, at, area));
+                kept.push((t, area));
             }
         }
     }
-    kept.into_iter().map(|(l, at, _)| (l, at)).collect()
+    kept.into_iter().map(|(t, _)| t).collect()
 }
 
 /// True when `b` has the vertices of `a` within `tol`, in the same cyclic
@@ -302,21 +364,21 @@ fn same_cycle(a: &Loop, b: &Loop, tol: f64) -> bool {
 /// at even depth is the outer loop of a shape, one at odd depth a hole of
 /// its parent's shape. Groups are outer loop first, largest outer loop
 /// first.
-fn nest(loops: Vec<(Loop, Origin)>) -> Vec<Vec<(Loop, Origin)>> {
-    let tree = BoxTree::new(loops.iter().map(|(l, _)| l.bbox()).collect());
+fn nest(loops: Vec<Traced>) -> Vec<Vec<Traced>> {
+    let tree = BoxTree::new(loops.iter().map(|t| t.l.bbox()).collect());
     let k = FilteredKernel;
     // The group of each loop, and its depth.
     let mut group: Vec<usize> = Vec::with_capacity(loops.len());
     let mut depth: Vec<usize> = Vec::with_capacity(loops.len());
     let mut groups: Vec<Vec<usize>> = Vec::new();
-    for (i, (l, _)) in loops.iter().enumerate() {
+    for (i, Traced { l, .. }) in loops.iter().enumerate() {
         // Points of the loop away from its vertices: one of them off a
         // loop that touches it (from inside or outside) decides.
         let probes: Vec<Point> = (0..l.len().min(PROBES)).map(|e| l.element(e).point_at(0.5)).collect();
         let mut parent = None;
         for &probe in &probes {
             tree.visit_overlapping(&BBox::of_points(probe, probe), |j| {
-                if j < i && parent.is_none_or(|p| j > p) && loops[j].0.winding_number(&k, probe) != 0 {
+                if j < i && parent.is_none_or(|p| j > p) && loops[j].l.winding_number(&k, probe) != 0 {
                     parent = Some(j);
                 }
                 ControlFlow::<()>::Continue(())
@@ -335,6 +397,6 @@ fn nest(loops: Vec<(Loop, Origin)>) -> Vec<Vec<(Loop, Origin)>> {
             }
         }
     }
-    let mut slots: Vec<Option<(Loop, Origin)>> = loops.into_iter().map(Some).collect();
+    let mut slots: Vec<Option<Traced>> = loops.into_iter().map(Some).collect();
     groups.into_iter().map(|g| g.into_iter().filter_map(|i| slots[i].take()).collect()).collect()
 }

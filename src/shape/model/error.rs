@@ -9,7 +9,7 @@ use std::fmt;
 /// An element of a shape: loop `loop_index` (0 = outer boundary, 1.. = holes,
 /// in input order) and element `element` within it (element `i` runs from
 /// vertex `i` to vertex `i + 1`, cyclically).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Default)]
 pub struct ElementRef {
     /// Loop index in input order.
     pub loop_index: usize,
@@ -162,6 +162,21 @@ impl ShapeError {
             Intersection { first, .. } => Some(first.loop_index),
             HoleOutside { hole, .. } | HoleInsideHole { hole, .. } => Some(*hole),
             Parse(_) | Io { .. } | Empty | NoProfile { .. } | Unsupported { .. } | InvalidArgument { .. } => None,
+        }
+    }
+
+    /// The element the error is about (the first one of an intersection;
+    /// element 0 of a loop when it names only the loop).
+    pub fn element(&self) -> Option<ElementRef> {
+        use ShapeError::*;
+        match self {
+            NonFinite { at }
+            | OutOfRange { at, .. }
+            | NotClosed { at, .. }
+            | Degenerate { at, .. }
+            | InconsistentArc { at, .. } => Some(*at),
+            Intersection { first, .. } => Some(*first),
+            _ => self.loop_index().map(|loop_index| ElementRef { loop_index, element: 0 }),
         }
     }
 }
