@@ -24,6 +24,19 @@ pub(crate) fn orientation(p: Point, qq: Point, r: Point) -> Orientation {
     }
 }
 
+/// Exact sign of (q − p) × (s − r).
+pub(crate) fn cross_sign(p: Point, qq: Point, r: Point, s: Point) -> Orientation {
+    let dx = q(qq.x) - q(p.x);
+    let dy = q(qq.y) - q(p.y);
+    let ex = q(s.x) - q(r.x);
+    let ey = q(s.y) - q(r.y);
+    match (dx * ey).cmp(&(dy * ex)) {
+        std::cmp::Ordering::Greater => Orientation::Left,
+        std::cmp::Ordering::Less => Orientation::Right,
+        std::cmp::Ordering::Equal => Orientation::Collinear,
+    }
+}
+
 /// Exact side of `d` relative to the circle through counter-clockwise `a, b, c`.
 pub(crate) fn circle_side(a: Point, b: Point, c: Point, d: Point) -> CircleSide {
     let (dx, dy) = (q(d.x), q(d.y));

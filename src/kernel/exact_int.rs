@@ -67,6 +67,19 @@ pub(crate) fn orientation(p: Point, q: Point, r: Point) -> Orientation {
     }
 }
 
+/// Exact sign of (q − p) × (s − r): homogeneous of degree 2, so the
+/// common scaling leaves its sign alone.
+pub(crate) fn cross_sign(p: Point, q: Point, r: Point, s: Point) -> Orientation {
+    let [px, py, qx, qy, rx, ry, sx, sy] = scaled([p.x, p.y, q.x, q.y, r.x, r.y, s.x, s.y]);
+    let l = &(&qx - &px) * &(&sy - &ry);
+    let rr = &(&qy - &py) * &(&sx - &rx);
+    match (&l - &rr).signum() {
+        Ordering::Greater => Orientation::Left,
+        Ordering::Less => Orientation::Right,
+        Ordering::Equal => Orientation::Collinear,
+    }
+}
+
 /// Exact side of `d` relative to the circle through counter-clockwise `a, b, c`.
 pub(crate) fn circle_side(a: Point, b: Point, c: Point, d: Point) -> CircleSide {
     let [ax, ay, bx, by, cx, cy, dx, dy] = scaled([a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y]);
@@ -194,6 +207,10 @@ mod tests {
             assert_eq!(orient_sign(o), orientation_i128(pts[0], pts[1], pts[2]), "{pts:?} at 2^{s}");
             let c = circle_side(pt(pts[0], s), pt(pts[1], s), pt(pts[2], s), pt(pts[3], s));
             assert_eq!(side_sign(c), incircle_i128(pts), "{pts:?} at 2^{s}");
+            let x = cross_sign(pt(pts[0], s), pt(pts[1], s), pt(pts[2], s), pt(pts[3], s));
+            let [p, q, r, t] = pts;
+            let expected = ((q[0] - p[0]) * (t[1] - r[1])).cmp(&((q[1] - p[1]) * (t[0] - r[0])));
+            assert_eq!(orient_sign(x), expected, "{pts:?} at 2^{s}");
         }
     }
 
@@ -230,6 +247,7 @@ mod gmp_crosscheck {
     fn check(a: Point, b: Point, c: Point, d: Point) {
         assert_eq!(orientation(a, b, c), exact::orientation(a, b, c), "orientation {a:?} {b:?} {c:?}");
         assert_eq!(circle_side(a, b, c, d), exact::circle_side(a, b, c, d), "in-circle {a:?} {b:?} {c:?} {d:?}");
+        assert_eq!(cross_sign(a, b, c, d), exact::cross_sign(a, b, c, d), "cross {a:?} {b:?} {c:?} {d:?}");
     }
 
     /// Any finite `f64`: random bits, retried when not finite.

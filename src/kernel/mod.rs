@@ -90,6 +90,16 @@ pub trait Kernel: Send + Sync {
     /// Side of `d` relative to the circle through `a`, `b`, `c`, which must be
     /// in counter-clockwise order (for clockwise order the answer flips).
     fn circle_side(&self, a: Point, b: Point, c: Point, d: Point) -> CircleSide;
+
+    /// Orientation of the direction `r → s` relative to the direction
+    /// `p → q`: the sign of the cross product (q − p) × (s − r), `Left`
+    /// when positive. With `r = p` it is [`orientation`](Self::orientation);
+    /// with `r` the origin and `s = (−n.y, n.x)` it compares `p` and `q`
+    /// along `n` (`Left`: `q` lies further). Exact by default (as
+    /// [`FilteredKernel`] decides it).
+    fn cross_sign(&self, p: Point, q: Point, r: Point, s: Point) -> Orientation {
+        FilteredKernel.cross_sign(p, q, r, s)
+    }
 }
 
 /// Plain `f64` predicates: exact signs are *not* guaranteed near degeneracy.
@@ -106,6 +116,12 @@ pub struct FilteredKernel;
 fn orient_det(p: Point, q: Point, r: Point) -> (f64, f64) {
     let l = (p.x - r.x) * (q.y - r.y);
     let rr = (p.y - r.y) * (q.x - r.x);
+    (l - rr, l.abs() + rr.abs())
+}
+
+fn cross_det(p: Point, q: Point, r: Point, s: Point) -> (f64, f64) {
+    let l = (q.x - p.x) * (s.y - r.y);
+    let rr = (q.y - p.y) * (s.x - r.x);
     (l - rr, l.abs() + rr.abs())
 }
 
@@ -161,6 +177,10 @@ impl Kernel for FloatKernel {
     fn circle_side(&self, a: Point, b: Point, c: Point, d: Point) -> CircleSide {
         circle_side_of(incircle_det(a, b, c, d).0)
     }
+
+    fn cross_sign(&self, p: Point, q: Point, r: Point, s: Point) -> Orientation {
+        orientation_of(cross_det(p, q, r, s).0)
+    }
 }
 
 impl Kernel for FilteredKernel {
@@ -180,6 +200,16 @@ impl Kernel for FilteredKernel {
             return circle_side_of(det);
         }
         fallback::circle_side(a, b, c, d)
+    }
+
+    fn cross_sign(&self, p: Point, q: Point, r: Point, s: Point) -> Orientation {
+        // Two differences, two products, one difference: the terms of
+        // the orientation determinant, so its bound holds.
+        let (det, sum) = cross_det(p, q, r, s);
+        if det.abs() > ORIENT_ERRBOUND * sum && sum.is_finite() && sum > f64::MIN_POSITIVE * 1e20 {
+            return orientation_of(det);
+        }
+        fallback::cross_sign(p, q, r, s)
     }
 }
 

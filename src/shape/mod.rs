@@ -16,7 +16,10 @@
 //! * `shape2d.rs`: the validated [`Shape2d`] and its constructors.
 //! * `build/`: shapes from loose elements and files, generated test shapes.
 //! * `draw.rs`: SVG pictures of a shape.
+//! * `ball/`: unit balls of convex distance functions (chapter 3): the
+//!   plane's convex polygons ([`Ball2`]), gauge distances, contact features.
 
+pub(crate) mod ball;
 pub(crate) mod build;
 pub(crate) mod draw;
 pub(crate) mod index;
@@ -25,6 +28,7 @@ pub(crate) mod shape2d;
 pub(crate) mod validate;
 
 pub use crate::kernel::element::{Arc, Element, Segment};
+pub use ball::{Ball2, BallError, Feature};
 pub use build::chain::chain_loops;
 pub use build::import::sniff;
 pub use build::profiles::{profiles, unit_name, Drawing2d, DrawingOptions, Ignored, IgnoredKind, Touching};

@@ -1,0 +1,76 @@
+//! Why a ball is refused.
+
+use std::fmt;
+
+/// A polygon that is not a unit ball: each names the vertex (an index
+/// into the vertices as given) at fault.
+#[derive(Debug, Clone, PartialEq)]
+pub enum BallError {
+    /// Fewer than three vertices.
+    TooFewVertices {
+        /// How many were given.
+        count: usize,
+    },
+    /// A coordinate is NaN or infinite.
+    NonFinite {
+        /// The vertex.
+        vertex: usize,
+    },
+    /// A vertex repeats the one before it.
+    Repeated {
+        /// The vertex.
+        vertex: usize,
+    },
+    /// A vertex lies on the line through its two neighbours (the polygon
+    /// must be strictly convex: drop the vertex).
+    Collinear {
+        /// The vertex.
+        vertex: usize,
+    },
+    /// The polygon turns the other way at this vertex, or winds round more
+    /// than once: it is not convex.
+    NotConvex {
+        /// The vertex.
+        vertex: usize,
+    },
+    /// The origin is on the edge from this vertex to the next, or outside
+    /// the polygon beyond it: the ball must hold the origin strictly inside.
+    OriginNotInside {
+        /// The edge's first vertex.
+        vertex: usize,
+        /// True when the origin lies on the edge, false when beyond it.
+        on_edge: bool,
+    },
+    /// A preset's parameter is out of range (a regular k-gon with k < 3 or
+    /// k > 100 000, a non-finite rotation).
+    InvalidArgument {
+        /// What was wrong.
+        what: String,
+    },
+}
+
+impl fmt::Display for BallError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            BallError::TooFewVertices { count } => {
+                write!(f, "a ball needs at least 3 vertices, {count} given")
+            }
+            BallError::NonFinite { vertex } => write!(f, "ball vertex {vertex} has a NaN or infinite coordinate"),
+            BallError::Repeated { vertex } => write!(f, "ball vertex {vertex} repeats the vertex before it"),
+            BallError::Collinear { vertex } => {
+                write!(f, "ball vertex {vertex} lies on the line through its neighbours (drop it)")
+            }
+            BallError::NotConvex { vertex } => write!(f, "the ball is not convex at vertex {vertex}"),
+            BallError::OriginNotInside { vertex, on_edge: true } => {
+                write!(f, "the origin lies on the ball's edge from vertex {vertex}; it must be strictly inside")
+            }
+            BallError::OriginNotInside { vertex, on_edge: false } => write!(
+                f,
+                "the origin lies outside the ball, beyond its edge from vertex {vertex}; it must be strictly inside"
+            ),
+            BallError::InvalidArgument { what } => write!(f, "invalid ball: {what}"),
+        }
+    }
+}
+
+impl std::error::Error for BallError {}
