@@ -277,6 +277,12 @@ typedef enum mx_status {
    */
   MX_ERR_INCONSISTENT_ARC = 19,
   /**
+   * The polygon given is not a unit ball (too few vertices, not convex,
+   * the origin not strictly inside…); `mx_last_error_info`'s `element`
+   * names the vertex.
+   */
+  MX_ERR_INVALID_BALL = 20,
+  /**
    * A bug in medax: a panic was caught at the C boundary. Please report it
    * with the input that caused it.
    */
@@ -360,8 +366,8 @@ typedef enum mx_site_kind {
 typedef struct mx_axis mx_axis;
 
 /**
- * A convex unit ball defining the metric (Euclidean disk or a polygon /
- * polytope, thesis chapter 3). Opaque.
+ * A unit ball: a convex polygon holding the origin strictly inside,
+ * counter-clockwise. Immutable; may be shared between threads.
  */
 typedef struct mx_ball mx_ball;
 
@@ -1400,6 +1406,118 @@ enum mx_status mx_axis_edge_sample(const struct mx_axis *axis,
                                    size_t *count);
 
 /**
+ * A plane ball from `count` vertices `xy` (x0, y0, x1, y1, …, either
+ * orientation, unitless). A polygon that is not a ball (fewer than 3
+ * vertices, NaN, a repeated or collinear vertex, not convex, the origin
+ * not strictly inside) gives `MX_ERR_INVALID_BALL`, the vertex in
+ * `mx_last_error_info`'s `element`.
+ *
+ * # Safety
+ * `xy` NULL (only when `count` is 0) or `2 * count` readable doubles;
+ * `out` writable.
+ */
+enum mx_status mx_ball_from_vertices2(const double *xy, size_t count, struct mx_ball **out);
+
+/**
+ * The regular polygon of `k` vertices (3 to 100 000) on the unit circle,
+ * the first at angle `rotation` radians.
+ *
+ * # Safety
+ * `out` writable.
+ */
+enum mx_status mx_ball_regular(size_t k, double rotation, struct mx_ball **out);
+
+/**
+ * The square [−1, 1]²: the L∞ distance.
+ *
+ * # Safety
+ * `out` writable.
+ */
+enum mx_status mx_ball_square(struct mx_ball **out);
+
+/**
+ * The diamond |x| + |y| ≤ 1: the L1 distance.
+ *
+ * # Safety
+ * `out` writable.
+ */
+enum mx_status mx_ball_diamond(struct mx_ball **out);
+
+/**
+ * The equilateral triangle of circumradius 1, a vertex straight up: the
+ * simplest ball that is not symmetric.
+ *
+ * # Safety
+ * `out` writable.
+ */
+enum mx_status mx_ball_triangle(struct mx_ball **out);
+
+/**
+ * A new ball, the mirror image −B of `ball`: distances under it run the
+ * other way (δ_{−B}(p, q) = δ_B(q, p)).
+ *
+ * # Safety
+ * `ball` NULL or a live handle; `out` writable.
+ */
+enum mx_status mx_ball_mirrored(const struct mx_ball *ball, struct mx_ball **out);
+
+/**
+ * Frees a ball; NULL is fine.
+ *
+ * # Safety
+ * `ball` NULL or a live handle, not used afterwards.
+ */
+void mx_ball_free(struct mx_ball *ball);
+
+/**
+ * The ball's dimension: 2 (a polygon).
+ *
+ * # Safety
+ * `ball` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_ball_dimension(const struct mx_ball *ball, uint32_t *out);
+
+/**
+ * The number of vertices.
+ *
+ * # Safety
+ * `ball` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_ball_vertex_count(const struct mx_ball *ball, size_t *out);
+
+/**
+ * Copies the vertices, counter-clockwise, as x0, y0, x1, y1, … into `xy`
+ * of `capacity` vertices (`MX_ERR_BUFFER_TOO_SMALL` and nothing written
+ * when fewer than `mx_ball_vertex_count`).
+ *
+ * # Safety
+ * `ball` NULL or a live handle; `xy` NULL or `2 * capacity` writable doubles.
+ */
+enum mx_status mx_ball_vertices(const struct mx_ball *ball, double *xy, size_t capacity);
+
+/**
+ * δ_B(from, to): the least r with `to` in `from + r·B` (model units; not
+ * symmetric unless the ball is).
+ *
+ * # Safety
+ * `ball` NULL or a live handle; `from`, `to` NULL or two readable doubles;
+ * `out` NULL or writable.
+ */
+enum mx_status mx_ball_distance2(const struct mx_ball *ball,
+                                 const double *from,
+                                 const double *to,
+                                 double *out);
+
+/**
+ * 1 when the ball is symmetric (−B = B exactly: δ_B is then a metric),
+ * else 0.
+ *
+ * # Safety
+ * `ball` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_ball_is_symmetric(const struct mx_ball *ball, uint8_t *out);
+
+/**
  * Reads a drawing file (DXF or SVG through profile extraction; medax shape
  * JSON is one shape, drawing JSON its shapes; `MX_FORMAT_AUTO` picks by
  * extension, then content), taking what `select` selects (NULL:
@@ -1513,14 +1631,6 @@ enum mx_status mx_drawing_get_warning(const struct mx_drawing *drawing,
  * `p` must be NULL or a handle returned by medax and not yet freed.
  */
 void mx_mesh3d_free(struct mx_mesh3d *p);
-
-/**
- * Releases a `mx_ball`. NULL is a no-op.
- *
- * # Safety
- * `p` must be NULL or a handle returned by medax and not yet freed.
- */
-void mx_ball_free(struct mx_ball *p);
 
 /**
  * Length in bytes of the last error message on this thread, including the

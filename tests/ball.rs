@@ -28,8 +28,11 @@ fn bad_balls_name_the_vertex() {
     let dart = [(2.0, 0.0), (0.0, 2.0), (0.5, 0.0), (0.0, -2.0)];
     assert_eq!(err(&dart), BallError::NotConvex { vertex: 2 });
     // A pentagram turns left at every vertex but winds round twice.
-    let star: Vec<(f64, f64)> =
-        (0..5).map(|i| ((i as f64 * 4.0 * std::f64::consts::PI / 5.0).cos(), (i as f64 * 4.0 * std::f64::consts::PI / 5.0).sin())).collect();
+    let star: Vec<(f64, f64)> = (0..5)
+        .map(|i| {
+            ((i as f64 * 4.0 * std::f64::consts::PI / 5.0).cos(), (i as f64 * 4.0 * std::f64::consts::PI / 5.0).sin())
+        })
+        .collect();
     assert!(matches!(err(&star), BallError::NotConvex { .. }), "{:?}", err(&star));
     // The origin on the edge from vertex 0, then beyond the edge from vertex 1.
     assert_eq!(err(&[(-1.0, 0.0), (1.0, 0.0), (0.0, 1.0)]), BallError::OriginNotInside { vertex: 0, on_edge: true });
@@ -39,6 +42,10 @@ fn bad_balls_name_the_vertex() {
     let cw = Ball2::new(&pts(&[(1.0, 1.0), (1.0, -1.0), (-1.0, -1.0), (-1.0, 1.0)])).unwrap();
     assert_eq!(cw.gauge(p(0.3, -0.7)), Ball2::square().gauge(p(0.3, -0.7)));
     assert!(Ball2::regular(2, 0.0).is_err() && Ball2::regular(5, f64::INFINITY).is_err());
+    // Too thin for f64 distances: the origin 1e-13 of the size from the
+    // edge from vertex 0; a subnormal coordinate.
+    assert_eq!(err(&[(-1.0, -1e-13), (1.0, -1e-13), (0.0, 1.0)]), BallError::IllConditioned { vertex: 0 });
+    assert_eq!(err(&[(1.0, 0.0), (0.0, 1.0), (-1.0, -1e-310)]), BallError::IllConditioned { vertex: 2 });
     for e in [err(&star), err(&dart), BallError::InvalidArgument { what: "x".into() }] {
         assert!(!e.to_string().is_empty());
     }
@@ -63,7 +70,8 @@ fn presets_are_the_distances_they_claim() {
             assert!(g >= e * (1.0 - 1e-12) && g <= e * slack * (1.0 + 1e-12), "k {k}: {g} vs {e}");
         }
     }
-    let hexagon = Ball2::new(&pts(&[(2.0, 0.0), (1.0, 1.5), (-1.0, 1.5), (-2.0, 0.0), (-1.0, -1.5), (1.0, -1.5)])).unwrap();
+    let hexagon =
+        Ball2::new(&pts(&[(2.0, 0.0), (1.0, 1.5), (-1.0, 1.5), (-2.0, 0.0), (-1.0, -1.5), (1.0, -1.5)])).unwrap();
     assert!(square.is_symmetric() && diamond.is_symmetric() && hexagon.is_symmetric());
     assert!(!Ball2::triangle().is_symmetric() && !Ball2::regular(5, 0.0).unwrap().is_symmetric());
     assert_eq!(Ball2::triangle().len(), 3);
@@ -77,7 +85,8 @@ fn the_gauge_is_a_convex_gauge_and_the_mirror_swaps_direction() {
         // by keeping only left turns would be work; use a regular polygon
         // stretched by a random linear map instead (still convex).
         let k = rng.gen_range(3..12);
-        let (a, b, c, d) = (rng.gen_range(0.5..2.0), rng.gen_range(-0.5..0.5), rng.gen_range(-0.5..0.5), rng.gen_range(0.5..2.0));
+        let (a, b, c, d) =
+            (rng.gen_range(0.5..2.0), rng.gen_range(-0.5..0.5), rng.gen_range(-0.5..0.5), rng.gen_range(0.5..2.0));
         let shift = p(rng.gen_range(-0.2..0.2), rng.gen_range(-0.2..0.2));
         let verts: Vec<Point> = Ball2::regular(k, rng.gen_range(0.0..1.0))
             .unwrap()
@@ -100,7 +109,8 @@ fn the_gauge_is_a_convex_gauge_and_the_mirror_swaps_direction() {
             // Inside the placed ball exactly when the distance is at most r.
             let r = ball.distance(x, y);
             let placed = ball.placed(x, r * 1.000001);
-            let inside = (0..placed.len()).all(|i| (placed[(i + 1) % placed.len()] - placed[i]).cross(y - placed[i]) >= 0.0);
+            let inside =
+                (0..placed.len()).all(|i| (placed[(i + 1) % placed.len()] - placed[i]).cross(y - placed[i]) >= 0.0);
             assert!(inside, "{x:?} {y:?}");
         }
     }
@@ -109,7 +119,8 @@ fn the_gauge_is_a_convex_gauge_and_the_mirror_swaps_direction() {
 #[test]
 fn distance_to_a_segment_matches_dense_sampling() {
     let mut rng = rand::rngs::SmallRng::seed_from_u64(8);
-    for ball in [Ball2::square(), Ball2::triangle(), Ball2::regular(7, 0.2).unwrap(), Ball2::regular(64, 0.0).unwrap()] {
+    for ball in [Ball2::square(), Ball2::triangle(), Ball2::regular(7, 0.2).unwrap(), Ball2::regular(64, 0.0).unwrap()]
+    {
         for _ in 0..300 {
             let mut q = || p(rng.gen_range(-4.0..4.0), rng.gen_range(-4.0..4.0));
             let (c, a, b) = (q(), q(), q());

@@ -280,9 +280,9 @@ pub(crate) unsafe fn options_default<O: Options>(out: *mut O) -> mx_status {
     })
 }
 
-// Handles whose capabilities arrive with later issues: 3D meshes and unit
-// balls (the metric). They exist now so that the ABI and ownership rules
-// are fixed from the start; only `_free` is available.
+// A handle whose capabilities arrive with a later issue: 3D meshes. It
+// exists now so that the ABI and ownership rules are fixed from the start;
+// only `_free` is available. (`mx_ball` lives in `ball.rs`.)
 
 /// A triangulated solid (3D medial axis, thesis chapter 3). Opaque.
 pub struct mx_mesh3d {
@@ -294,33 +294,12 @@ impl Handle for mx_mesh3d {
     type Ownership = Boxed;
 }
 
-/// A convex unit ball defining the metric (Euclidean disk or a polygon /
-/// polytope, thesis chapter 3). Opaque.
-pub struct mx_ball {
-    _private: (),
-}
-
-impl Handle for mx_ball {
-    const ARG: &'static str = "p";
-    type Ownership = Boxed;
-}
-
 /// Releases a `mx_mesh3d`. NULL is a no-op.
 ///
 /// # Safety
 /// `p` must be NULL or a handle returned by medax and not yet freed.
 #[no_mangle]
 pub unsafe extern "C" fn mx_mesh3d_free(p: *mut mx_mesh3d) {
-    // SAFETY: forwarded contract.
-    unsafe { free(p) }
-}
-
-/// Releases a `mx_ball`. NULL is a no-op.
-///
-/// # Safety
-/// `p` must be NULL or a handle returned by medax and not yet freed.
-#[no_mangle]
-pub unsafe extern "C" fn mx_ball_free(p: *mut mx_ball) {
     // SAFETY: forwarded contract.
     unsafe { free(p) }
 }

@@ -2,7 +2,7 @@
 //! caller on the same thread.
 
 use super::status::mx_status;
-use crate::shape::ShapeError;
+use crate::shape::{BallError, ShapeError};
 use std::cell::RefCell;
 use std::ffi::{c_char, CString};
 
@@ -60,6 +60,15 @@ pub(crate) struct FfiError {
 impl FfiError {
     pub fn new(status: mx_status, message: impl Into<String>) -> FfiError {
         FfiError { info: mx_error_info::none(status), message: message.into() }
+    }
+}
+
+impl From<BallError> for FfiError {
+    fn from(e: BallError) -> FfiError {
+        let mut info = mx_error_info::none(mx_status::MX_ERR_INVALID_BALL);
+        let vertex = e.vertex().map_or(-1, |v| v as i64);
+        info.element = vertex;
+        FfiError { info, message: e.to_string() }
     }
 }
 

@@ -13,6 +13,7 @@
 #![allow(non_camel_case_types, reason = "C names: the `mx_` prefix and snake_case, as in include/medax.h")]
 
 mod axis;
+mod ball;
 mod boundary;
 mod drawing;
 mod drawing_report;
@@ -27,6 +28,7 @@ mod version;
 mod voronoi;
 
 pub use axis::*;
+pub use ball::*;
 pub use drawing::*;
 pub use drawing_report::*;
 pub use handles::*;

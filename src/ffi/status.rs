@@ -51,6 +51,10 @@ pub enum mx_status {
     MX_ERR_HOLE_INSIDE_HOLE = 18,
     /// An arc's end points are not equidistant from its centre.
     MX_ERR_INCONSISTENT_ARC = 19,
+    /// The polygon given is not a unit ball (too few vertices, not convex,
+    /// the origin not strictly inside…); `mx_last_error_info`'s `element`
+    /// names the vertex.
+    MX_ERR_INVALID_BALL = 20,
     /// A bug in medax: a panic was caught at the C boundary. Please report it
     /// with the input that caused it.
     MX_ERR_PANIC = 99,
@@ -102,6 +106,7 @@ impl mx_status {
             MX_ERR_HOLE_OUTSIDE => c"a hole is outside the outer loop",
             MX_ERR_HOLE_INSIDE_HOLE => c"a hole is inside another hole",
             MX_ERR_INCONSISTENT_ARC => c"arc end points are not on one circle",
+            MX_ERR_INVALID_BALL => c"the polygon is not a unit ball",
             MX_ERR_PANIC => c"internal error (panic caught); please report",
         }
     }

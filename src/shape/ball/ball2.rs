@@ -44,6 +44,10 @@ impl Ball2 {
         if let Some(vertex) = vertices.iter().position(|v| !v.x.is_finite() || !v.y.is_finite()) {
             return Err(BallError::NonFinite { vertex });
         }
+        let out_of_scale = |c: f64| c.abs() > 1e100 || (c != 0.0 && c.abs() < 1e-100);
+        if let Some(vertex) = vertices.iter().position(|v| out_of_scale(v.x) || out_of_scale(v.y)) {
+            return Err(BallError::IllConditioned { vertex });
+        }
         let at = |i: usize| vertices[i % n];
         if let Some(vertex) = (0..n).find(|&i| at(i) == at(i + n - 1)) {
             return Err(BallError::Repeated { vertex });
@@ -91,13 +95,21 @@ impl Ball2 {
                 }
             }
         }
-        let facets = (0..n)
-            .map(|i| {
-                let (a, b) = (vertices[i], vertices[(i + 1) % n]);
-                let outward = Point::new(b.y - a.y, a.x - b.x);
-                outward * (1.0 / outward.dot(a))
-            })
-            .collect();
+        // Distances divide by the origin's distance to each edge's line:
+        // a ball that thin gives no useful digits.
+        let size = vertices.iter().map(|v| v.norm()).fold(0.0, f64::max);
+        let mut facets = Vec::with_capacity(n);
+        for i in 0..n {
+            let (a, b) = (vertices[i], vertices[(i + 1) % n]);
+            let outward = Point::new(b.y - a.y, a.x - b.x);
+            let height = outward.dot(a) / outward.norm();
+            // NaN (an overflow) counts as too thin.
+            if height.is_nan() || height <= 1e-12 * size {
+                let vertex = if ccw { i } else { (2 * n - 2 - i) % n };
+                return Err(BallError::IllConditioned { vertex });
+            }
+            facets.push(outward * (1.0 / outward.dot(a)));
+        }
         Ok(Ball2 { vertices, facets })
     }
 
@@ -111,7 +123,9 @@ impl Ball2 {
     pub fn regular(k: usize, rotation: f64) -> Result<Ball2, BallError> {
         if !(3..=MAX_REGULAR).contains(&k) || !rotation.is_finite() {
             return Err(BallError::InvalidArgument {
-                what: format!("a regular polygon needs 3 to {MAX_REGULAR} vertices and a finite rotation ({k}, {rotation})"),
+                what: format!(
+                    "a regular polygon needs 3 to {MAX_REGULAR} vertices and a finite rotation ({k}, {rotation})"
+                ),
             });
         }
         let vertices: Vec<Point> = (0..k)
@@ -181,7 +195,8 @@ impl Ball2 {
     /// quasi-metric).
     pub fn is_symmetric(&self) -> bool {
         let n = self.len();
-        n % 2 == 0 && (0..n).all(|i| self.vertices[(i + n / 2) % n] == Point::new(-self.vertices[i].x, -self.vertices[i].y))
+        n % 2 == 0
+            && (0..n).all(|i| self.vertices[(i + n / 2) % n] == Point::new(-self.vertices[i].x, -self.vertices[i].y))
     }
 
     /// The vertices of the ball `c + r·B` (model units), counter-clockwise.

@@ -41,12 +41,35 @@ pub enum BallError {
         /// True when the origin lies on the edge, false when beyond it.
         on_edge: bool,
     },
+    /// The ball is too thin for `f64` distances (the origin within 1e-12
+    /// of the ball's size from the edge that starts at this vertex), or
+    /// this vertex's coordinates are outside ±1e100 or, unless zero,
+    /// below 1e-100 in magnitude.
+    IllConditioned {
+        /// The vertex.
+        vertex: usize,
+    },
     /// A preset's parameter is out of range (a regular k-gon with k < 3 or
     /// k > 100 000, a non-finite rotation).
     InvalidArgument {
         /// What was wrong.
         what: String,
     },
+}
+
+impl BallError {
+    /// The vertex at fault, where the error names one.
+    pub fn vertex(&self) -> Option<usize> {
+        match *self {
+            BallError::NonFinite { vertex }
+            | BallError::Repeated { vertex }
+            | BallError::Collinear { vertex }
+            | BallError::NotConvex { vertex }
+            | BallError::OriginNotInside { vertex, .. }
+            | BallError::IllConditioned { vertex } => Some(vertex),
+            BallError::TooFewVertices { .. } | BallError::InvalidArgument { .. } => None,
+        }
+    }
 }
 
 impl fmt::Display for BallError {
@@ -67,6 +90,11 @@ impl fmt::Display for BallError {
             BallError::OriginNotInside { vertex, on_edge: false } => write!(
                 f,
                 "the origin lies outside the ball, beyond its edge from vertex {vertex}; it must be strictly inside"
+            ),
+            BallError::IllConditioned { vertex } => write!(
+                f,
+                "the ball is too thin or out of scale at vertex {vertex}: the origin lies within 1e-12 of the \
+                 ball's size from its edge there, or a coordinate is beyond 1e100 or below 1e-100"
             ),
             BallError::InvalidArgument { what } => write!(f, "invalid ball: {what}"),
         }

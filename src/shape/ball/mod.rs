@@ -4,6 +4,23 @@
 //! linear where the Euclidean distance is round. The Euclidean disk is the
 //! limit of regular k-gons (Theorem 2).
 //!
+//! ```
+//! use medax::kernel::Point;
+//! use medax::shape::{Ball2, Feature};
+//!
+//! let square = Ball2::square(); // L∞; also diamond() (L1), triangle(), regular(k, rotation)
+//! assert_eq!(square.distance(Point::new(1.0, 1.0), Point::new(4.0, -1.0)), 3.0);
+//! // Not symmetric: the triangle (a vertex up) goes up twice as cheaply as down.
+//! let tri = Ball2::triangle();
+//! assert_eq!(tri.distance(Point::new(0.0, 0.0), Point::new(0.0, 3.0)), 3.0);
+//! assert!((tri.distance(Point::new(0.0, 0.0), Point::new(0.0, -3.0)) - 6.0).abs() < 1e-12);
+//! // The square's bottom edge lies on a horizontal floor (decided exactly).
+//! assert_eq!(square.touching_edge(Point::new(0.0, 0.0), Point::new(1.0, 0.0)), Feature::Edge(3));
+//! // A polygon that is not a ball is refused with the vertex at fault.
+//! let dart = [(2.0, 0.0), (0.0, 2.0), (0.5, 0.0), (0.0, -2.0)].map(|(x, y)| Point::new(x, y));
+//! assert!(Ball2::new(&dart).unwrap_err().to_string().contains("vertex 2"));
+//! ```
+//!
 //! * `error.rs`: why a ball is refused ([`BallError`]).
 //! * `ball2.rs`: the validated plane ball [`Ball2`], its presets and its
 //!   mirror image.

@@ -1,0 +1,183 @@
+//! `mx_ball`: the unit ball that defines a distance (thesis chapter 3).
+//! Plane balls (convex polygons) today; the same handle will hold space
+//! balls (convex polytopes), told apart by `mx_ball_dimension`.
+
+use super::boundary::{fill, slice};
+use super::handles::{arg, create, free, query, Handle};
+use super::last_error::FfiError;
+use super::status::mx_status;
+use crate::kernel::Point;
+use crate::shape::Ball2;
+
+/// A unit ball: a convex polygon holding the origin strictly inside,
+/// counter-clockwise. Immutable; may be shared between threads.
+pub struct mx_ball {
+    inner: Ball2,
+}
+
+impl Handle for mx_ball {
+    const ARG: &'static str = "ball";
+    type Ownership = super::handles::Boxed;
+}
+
+/// A plane ball from `count` vertices `xy` (x0, y0, x1, y1, …, either
+/// orientation, unitless). A polygon that is not a ball (fewer than 3
+/// vertices, NaN, a repeated or collinear vertex, not convex, the origin
+/// not strictly inside) gives `MX_ERR_INVALID_BALL`, the vertex in
+/// `mx_last_error_info`'s `element`.
+///
+/// # Safety
+/// `xy` NULL (only when `count` is 0) or `2 * count` readable doubles;
+/// `out` writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_ball_from_vertices2(xy: *const f64, count: usize, out: *mut *mut mx_ball) -> mx_status {
+    // SAFETY: caller contract.
+    unsafe {
+        create(out, || {
+            let xy = slice(xy, count.saturating_mul(2), "xy")?;
+            let vertices: Vec<Point> = xy.chunks_exact(2).map(|c| Point::new(c[0], c[1])).collect();
+            Ok(mx_ball { inner: Ball2::new(&vertices)? })
+        })
+    }
+}
+
+/// The regular polygon of `k` vertices (3 to 100 000) on the unit circle,
+/// the first at angle `rotation` radians.
+///
+/// # Safety
+/// `out` writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_ball_regular(k: usize, rotation: f64, out: *mut *mut mx_ball) -> mx_status {
+    // SAFETY: caller contract.
+    unsafe { create(out, || Ok(mx_ball { inner: Ball2::regular(k, rotation)? })) }
+}
+
+/// The square [−1, 1]²: the L∞ distance.
+///
+/// # Safety
+/// `out` writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_ball_square(out: *mut *mut mx_ball) -> mx_status {
+    // SAFETY: caller contract.
+    unsafe { create(out, || Ok(mx_ball { inner: Ball2::square() })) }
+}
+
+/// The diamond |x| + |y| ≤ 1: the L1 distance.
+///
+/// # Safety
+/// `out` writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_ball_diamond(out: *mut *mut mx_ball) -> mx_status {
+    // SAFETY: caller contract.
+    unsafe { create(out, || Ok(mx_ball { inner: Ball2::diamond() })) }
+}
+
+/// The equilateral triangle of circumradius 1, a vertex straight up: the
+/// simplest ball that is not symmetric.
+///
+/// # Safety
+/// `out` writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_ball_triangle(out: *mut *mut mx_ball) -> mx_status {
+    // SAFETY: caller contract.
+    unsafe { create(out, || Ok(mx_ball { inner: Ball2::triangle() })) }
+}
+
+/// A new ball, the mirror image −B of `ball`: distances under it run the
+/// other way (δ_{−B}(p, q) = δ_B(q, p)).
+///
+/// # Safety
+/// `ball` NULL or a live handle; `out` writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_ball_mirrored(ball: *const mx_ball, out: *mut *mut mx_ball) -> mx_status {
+    // SAFETY: caller contract.
+    unsafe { create(out, || Ok(mx_ball { inner: arg(ball)?.inner.mirrored() })) }
+}
+
+/// Frees a ball; NULL is fine.
+///
+/// # Safety
+/// `ball` NULL or a live handle, not used afterwards.
+#[no_mangle]
+pub unsafe extern "C" fn mx_ball_free(ball: *mut mx_ball) {
+    // SAFETY: forwarded contract.
+    unsafe { free(ball) }
+}
+
+/// The ball's dimension: 2 (a polygon).
+///
+/// # Safety
+/// `ball` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_ball_dimension(ball: *const mx_ball, out: *mut u32) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { query(ball, out, |_| Ok(2)) }
+}
+
+/// The number of vertices.
+///
+/// # Safety
+/// `ball` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_ball_vertex_count(ball: *const mx_ball, out: *mut usize) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { query(ball, out, |b| Ok(b.inner.len())) }
+}
+
+/// Copies the vertices, counter-clockwise, as x0, y0, x1, y1, … into `xy`
+/// of `capacity` vertices (`MX_ERR_BUFFER_TOO_SMALL` and nothing written
+/// when fewer than `mx_ball_vertex_count`).
+///
+/// # Safety
+/// `ball` NULL or a live handle; `xy` NULL or `2 * capacity` writable doubles.
+#[no_mangle]
+pub unsafe extern "C" fn mx_ball_vertices(ball: *const mx_ball, xy: *mut f64, capacity: usize) -> mx_status {
+    super::boundary::guard(|| {
+        // SAFETY: caller contract.
+        let b = unsafe { arg(ball)? };
+        let n = b.inner.len();
+        let coords = b.inner.vertices().iter().flat_map(|v| [v.x, v.y]);
+        // SAFETY: caller contract: 2 * capacity doubles.
+        unsafe {
+            fill(xy, "xy", capacity.saturating_mul(2), 2 * n, coords, || {
+                format!("the ball has {n} vertices, the buffer room for {capacity}")
+            })
+        }
+    })
+}
+
+/// δ_B(from, to): the least r with `to` in `from + r·B` (model units; not
+/// symmetric unless the ball is).
+///
+/// # Safety
+/// `ball` NULL or a live handle; `from`, `to` NULL or two readable doubles;
+/// `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_ball_distance2(
+    ball: *const mx_ball,
+    from: *const f64,
+    to: *const f64,
+    out: *mut f64,
+) -> mx_status {
+    // SAFETY: caller contract.
+    unsafe {
+        query(ball, out, |b| {
+            let (from, to) = (slice(from, 2, "from")?, slice(to, 2, "to")?);
+            if from.iter().chain(to).any(|v| !v.is_finite()) {
+                return Err(FfiError::new(mx_status::MX_ERR_NON_FINITE, "a point has a NaN or infinite coordinate"));
+            }
+            Ok(b.inner.distance(Point::new(from[0], from[1]), Point::new(to[0], to[1])))
+        })
+    }
+}
+
+/// 1 when the ball is symmetric (−B = B exactly: δ_B is then a metric),
+/// else 0.
+///
+/// # Safety
+/// `ball` NULL or a live handle; `out` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_ball_is_symmetric(ball: *const mx_ball, out: *mut u8) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { query(ball, out, |b| Ok(u8::from(b.inner.is_symmetric()))) }
+}
