@@ -98,10 +98,29 @@ void from_vertices_and_bad_balls() {
     mx_ball_free(nullptr);
 }
 
+void parsed() {
+    mt::begin_case("parse");
+    mx_ball* b = nullptr;
+    MT_CHECK_OK(mx_ball_parse("ngon:6:30", &b));
+    size_t n = 0;
+    MT_CHECK_OK(mx_ball_vertex_count(b, &n));
+    MT_CHECK_EQ(n, size_t{6});
+    mx_ball_free(b);
+    MT_CHECK_OK(mx_ball_parse("{\"vertices\": [[0, 1], [-1, -1], [1, -1]]}", &b));
+    MT_CHECK_NEAR(distance(b, 0, 0, 0, 2), 2.0, 1e-15);
+    mx_ball_free(b);
+    mx_ball* untouched = reinterpret_cast<mx_ball*>(0x1);
+    MT_CHECK_STATUS(mx_ball_parse("{\"vertices\": [[0, 1]", &untouched), MX_ERR_PARSE);
+    MT_CHECK_STATUS(mx_ball_parse("circle", &untouched), MX_ERR_INVALID_BALL);
+    MT_CHECK_STATUS(mx_ball_parse(nullptr, &untouched), MX_ERR_NULL_ARGUMENT);
+    MT_CHECK(untouched == reinterpret_cast<mx_ball*>(0x1));
+}
+
 }  // namespace
 
 int main() {
     presets();
     from_vertices_and_bad_balls();
+    parsed();
     return mt::finish("c_api_ball");
 }

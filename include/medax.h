@@ -1419,6 +1419,18 @@ enum mx_status mx_axis_edge_sample(const struct mx_axis *axis,
 enum mx_status mx_ball_from_vertices2(const double *xy, size_t count, struct mx_ball **out);
 
 /**
+ * The ball a NUL-terminated UTF-8 description names: `square`,
+ * `diamond`, `triangle`, `ngon:K[:DEGREES]`, or ball JSON `{"vertices":
+ * [[x, y], ...]}` (as the command line's `--ball`). JSON that does not
+ * parse gives `MX_ERR_PARSE` with its line and column, a description that
+ * names no ball `MX_ERR_INVALID_BALL`.
+ *
+ * # Safety
+ * `text` NULL or NUL-terminated; `out` writable.
+ */
+enum mx_status mx_ball_parse(const char *text, struct mx_ball **out);
+
+/**
  * The regular polygon of `k` vertices (3 to 100 000) on the unit circle,
  * the first at angle `rotation` radians.
  *

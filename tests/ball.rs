@@ -163,3 +163,29 @@ fn contact_features_are_exact() {
     assert_eq!(Ball2::triangle().touching_edge(p(1.0, 5.0), p(0.0, 5.0)), Feature::Vertex(0));
     assert_eq!(Ball2::triangle().mirrored().touching_edge(p(1.0, 5.0), p(0.0, 5.0)), Feature::Edge(1));
 }
+
+#[test]
+fn balls_by_name_and_from_json() {
+    assert_eq!(Ball2::parse(" Square ").unwrap(), Ball2::square());
+    assert_eq!(Ball2::parse("diamond").unwrap(), Ball2::diamond());
+    assert_eq!(Ball2::parse("tri").unwrap(), Ball2::triangle());
+    assert_eq!(Ball2::parse("ngon:12").unwrap(), Ball2::regular(12, 0.0).unwrap());
+    assert_eq!(Ball2::parse("ngon:8:22.5").unwrap(), Ball2::regular(8, 22.5f64.to_radians()).unwrap());
+    // Clockwise as given: stored reversed (the same ball, another start).
+    let json = Ball2::parse(r#"{"vertices": [[1, 1], [1, -1], [-1, -1], [-1, 1]]}"#).unwrap();
+    assert_eq!(json.vertices()[0], p(-1.0, 1.0));
+    for x in [p(0.3, -2.0), p(-1.5, 0.25), p(7.0, 7.5)] {
+        assert_eq!(json.gauge(x), Ball2::square().gauge(x));
+    }
+    for bad in ["circle", "ngon:", "ngon:x", "ngon:5:1:2", "ngon:2"] {
+        let e = Ball2::parse(bad).unwrap_err();
+        assert!(matches!(e, BallError::InvalidArgument { .. }), "{bad}: {e:?}");
+    }
+    assert!(Ball2::parse("ngon:5").is_ok());
+    assert!(matches!(Ball2::parse(r#"{"vertices": [[1, 1]"#), Err(BallError::Parse(_))));
+    assert!(matches!(Ball2::parse(r#"{"corners": []}"#), Err(BallError::Parse(_))));
+    assert_eq!(
+        Ball2::parse(r#"{"vertices": [[2, 0], [0, 2], [0.5, 0], [0, -2]]}"#),
+        Err(BallError::NotConvex { vertex: 2 })
+    );
+}

@@ -2,12 +2,13 @@
 //! Plane balls (convex polygons) today; the same handle will hold space
 //! balls (convex polytopes), told apart by `mx_ball_dimension`.
 
-use super::boundary::{fill, slice};
+use super::boundary::{c_str, fill, slice};
 use super::handles::{arg, create, free, query, Handle};
 use super::last_error::FfiError;
 use super::status::mx_status;
 use crate::kernel::Point;
 use crate::shape::Ball2;
+use std::ffi::c_char;
 
 /// A unit ball: a convex polygon holding the origin strictly inside,
 /// counter-clockwise. Immutable; may be shared between threads.
@@ -37,6 +38,25 @@ pub unsafe extern "C" fn mx_ball_from_vertices2(xy: *const f64, count: usize, ou
             let xy = slice(xy, count.saturating_mul(2), "xy")?;
             let vertices: Vec<Point> = xy.chunks_exact(2).map(|c| Point::new(c[0], c[1])).collect();
             Ok(mx_ball { inner: Ball2::new(&vertices)? })
+        })
+    }
+}
+
+/// The ball a NUL-terminated UTF-8 description names: `square`,
+/// `diamond`, `triangle`, `ngon:K[:DEGREES]`, or ball JSON `{"vertices":
+/// [[x, y], ...]}` (as the command line's `--ball`). JSON that does not
+/// parse gives `MX_ERR_PARSE` with its line and column, a description that
+/// names no ball `MX_ERR_INVALID_BALL`.
+///
+/// # Safety
+/// `text` NULL or NUL-terminated; `out` writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_ball_parse(text: *const c_char, out: *mut *mut mx_ball) -> mx_status {
+    // SAFETY: caller contract.
+    unsafe {
+        create(out, || {
+            let text = c_str(text, "text")?;
+            Ok(mx_ball { inner: Ball2::parse(text)? })
         })
     }
 }

@@ -65,7 +65,15 @@ impl FfiError {
 
 impl From<BallError> for FfiError {
     fn from(e: BallError) -> FfiError {
-        let mut info = mx_error_info::none(mx_status::MX_ERR_INVALID_BALL);
+        let status = match e {
+            BallError::Parse(_) => mx_status::MX_ERR_PARSE,
+            _ => mx_status::MX_ERR_INVALID_BALL,
+        };
+        let mut info = mx_error_info::none(status);
+        if let BallError::Parse(p) = &e {
+            info.line = p.line as i64;
+            info.column = p.column as i64;
+        }
         let vertex = e.vertex().map_or(-1, |v| v as i64);
         info.element = vertex;
         FfiError { info, message: e.to_string() }

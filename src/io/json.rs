@@ -187,6 +187,19 @@ pub fn read_sites(text: &str) -> Result<RawSites, ParseError> {
     })
 }
 
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct BallFile {
+    vertices: Vec<[f64; 2]>,
+}
+
+/// Reads a unit ball file, `{"vertices": [[x, y], ...]}` (either
+/// orientation; unitless): the vertices as given, not yet validated.
+pub fn read_ball(text: &str) -> Result<Vec<[f64; 2]>, ParseError> {
+    let file: BallFile = serde_json::from_str(text).map_err(parse_error)?;
+    Ok(file.vertices)
+}
+
 /// Writes loops as shape JSON, one loop per line, with shortest round-trip
 /// number formatting (reading the output back gives bit-identical values).
 pub fn write_loops(loops: &[Vec<RawVertex>]) -> String {

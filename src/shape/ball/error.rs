@@ -1,5 +1,6 @@
 //! Why a ball is refused.
 
+use crate::io::ParseError;
 use std::fmt;
 
 /// A polygon that is not a unit ball: each names the vertex (an index
@@ -49,6 +50,9 @@ pub enum BallError {
         /// The vertex.
         vertex: usize,
     },
+    /// A ball file that does not parse, or a ball description that names
+    /// no ball.
+    Parse(ParseError),
     /// A preset's parameter is out of range (a regular k-gon with k < 3 or
     /// k > 100 000, a non-finite rotation).
     InvalidArgument {
@@ -67,7 +71,7 @@ impl BallError {
             | BallError::NotConvex { vertex }
             | BallError::OriginNotInside { vertex, .. }
             | BallError::IllConditioned { vertex } => Some(vertex),
-            BallError::TooFewVertices { .. } | BallError::InvalidArgument { .. } => None,
+            BallError::TooFewVertices { .. } | BallError::InvalidArgument { .. } | BallError::Parse(_) => None,
         }
     }
 }
@@ -97,6 +101,7 @@ impl fmt::Display for BallError {
                  ball's size from its edge there, or a coordinate is beyond 1e100 or below 1e-100"
             ),
             BallError::InvalidArgument { what } => write!(f, "invalid ball: {what}"),
+            BallError::Parse(e) => write!(f, "{e}"),
         }
     }
 }

@@ -24,6 +24,7 @@
 //! * `error.rs`: why a ball is refused ([`BallError`]).
 //! * `ball2.rs`: the validated plane ball [`Ball2`], its presets and its
 //!   mirror image.
+//! * `spec.rs`: balls by name (`square`, `ngon:K`…) or from ball JSON.
 //! * `gauge.rs`: distances under a ball (to points and segments) and which
 //!   feature of a ball touches a line or a point (the contact classes of
 //!   3.1.2).
@@ -31,6 +32,7 @@
 mod ball2;
 mod error;
 mod gauge;
+mod spec;
 
 pub use ball2::Ball2;
 pub use error::BallError;
