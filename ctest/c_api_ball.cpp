@@ -89,7 +89,7 @@ void from_vertices_and_bad_balls() {
     MT_CHECK_EQ(info.element, int64_t{2});
     MT_CHECK_STATUS(mx_ball_from_vertices2(cw, 2, &untouched), MX_ERR_INVALID_BALL);
     MT_CHECK_STATUS(mx_ball_from_vertices2(nullptr, 3, &untouched), MX_ERR_NULL_ARGUMENT);
-    MT_CHECK_STATUS(mx_ball_regular(2, 0.0, &untouched), MX_ERR_INVALID_BALL);
+    MT_CHECK_STATUS(mx_ball_regular(2, 0.0, &untouched), MX_ERR_INVALID_ARGUMENT);
     MT_CHECK(untouched == reinterpret_cast<mx_ball*>(0x1));
     size_t n = 0;
     MT_CHECK_STATUS(mx_ball_vertex_count(nullptr, &n), MX_ERR_NULL_ARGUMENT);
@@ -111,7 +111,7 @@ void parsed() {
     mx_ball_free(b);
     mx_ball* untouched = reinterpret_cast<mx_ball*>(0x1);
     MT_CHECK_STATUS(mx_ball_parse("{\"vertices\": [[0, 1]", &untouched), MX_ERR_PARSE);
-    MT_CHECK_STATUS(mx_ball_parse("circle", &untouched), MX_ERR_INVALID_BALL);
+    MT_CHECK_STATUS(mx_ball_parse("circle", &untouched), MX_ERR_INVALID_ARGUMENT);
     MT_CHECK_STATUS(mx_ball_parse(nullptr, &untouched), MX_ERR_NULL_ARGUMENT);
     MT_CHECK(untouched == reinterpret_cast<mx_ball*>(0x1));
 }

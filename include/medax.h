@@ -536,6 +536,44 @@ typedef struct mx_axis_edge {
 } mx_axis_edge;
 
 /**
+ * What to take out of a drawing. Initialise with
+ * `mx_drawing_select_default` (which sets `struct_size` and selects
+ * everything), then change fields.
+ */
+typedef struct mx_drawing_select {
+  /**
+   * `sizeof(mx_drawing_select)` as the caller was compiled; lets later
+   * versions add fields without breaking old callers.
+   */
+  size_t struct_size;
+  /**
+   * Take the curves of these layers only (DXF group 8, UTF-8,
+   * NUL-terminated): `layer_count` of them; NULL when 0.
+   */
+  const char *const *layers;
+  /**
+   * How many `layers` (0: every layer).
+   */
+  size_t layer_count;
+  /**
+   * Take the curves of these colours only: AutoCAD colour indices
+   * 1-255 ("by layer" and "by block" resolved; 7 where nothing says);
+   * NULL when `colour_count` is 0.
+   */
+  const int16_t *colours;
+  /**
+   * How many `colours` (0: every colour).
+   */
+  size_t colour_count;
+  /**
+   * Nonzero: keep both copies of a loop drawn twice (they then meet
+   * and are reported); 0: merge them into one, reported as
+   * `MX_IGNORED_DUPLICATE_LOOP`.
+   */
+  uint8_t keep_duplicates;
+} mx_drawing_select;
+
+/**
  * Tolerances for building shapes. Initialise with `mx_shape_options_default`
  * (which sets `struct_size`), then change fields. Lengths in model units.
  */
@@ -580,37 +618,6 @@ typedef struct mx_shape_options {
    */
   size_t threads;
 } mx_shape_options;
-
-/**
- * What to take out of a drawing; every field may be zero (all of it).
- */
-typedef struct mx_drawing_select {
-  /**
-   * Take the curves of these layers only (DXF group 8, UTF-8,
-   * NUL-terminated): `layer_count` of them; NULL when 0.
-   */
-  const char *const *layers;
-  /**
-   * How many `layers` (0: every layer).
-   */
-  size_t layer_count;
-  /**
-   * Take the curves of these colours only: AutoCAD colour indices
-   * 1-255 ("by layer" and "by block" resolved; 7 where nothing says);
-   * NULL when `colour_count` is 0.
-   */
-  const int16_t *colours;
-  /**
-   * How many `colours` (0: every colour).
-   */
-  size_t colour_count;
-  /**
-   * Nonzero: keep both copies of a loop drawn twice (they then meet
-   * and are reported); 0: merge them into one, reported as
-   * `MX_IGNORED_DUPLICATE_LOOP`.
-   */
-  uint8_t keep_duplicates;
-} mx_drawing_select;
 
 /**
  * One thing of a drawing in no shape.
@@ -1423,7 +1430,8 @@ enum mx_status mx_ball_from_vertices2(const double *xy, size_t count, struct mx_
  * `diamond`, `triangle`, `ngon:K[:DEGREES]`, or ball JSON `{"vertices":
  * [[x, y], ...]}` (as the command line's `--ball`). JSON that does not
  * parse gives `MX_ERR_PARSE` with its line and column, a description that
- * names no ball `MX_ERR_INVALID_BALL`.
+ * names no ball `MX_ERR_INVALID_ARGUMENT`, a polygon that is no ball
+ * `MX_ERR_INVALID_BALL`.
  *
  * # Safety
  * `text` NULL or NUL-terminated; `out` writable.
@@ -1432,7 +1440,8 @@ enum mx_status mx_ball_parse(const char *text, struct mx_ball **out);
 
 /**
  * The regular polygon of `k` vertices (3 to 100 000) on the unit circle,
- * the first at angle `rotation` radians.
+ * the first at angle `rotation` radians (`MX_ERR_INVALID_ARGUMENT`
+ * otherwise).
  *
  * # Safety
  * `out` writable.
@@ -1528,6 +1537,14 @@ enum mx_status mx_ball_distance2(const struct mx_ball *ball,
  * `ball` NULL or a live handle; `out` NULL or writable.
  */
 enum mx_status mx_ball_is_symmetric(const struct mx_ball *ball, uint8_t *out);
+
+/**
+ * Fills `out` with the selection of everything (and its `struct_size`).
+ *
+ * # Safety
+ * `out` must be NULL or point to a writable `mx_drawing_select`.
+ */
+enum mx_status mx_drawing_select_default(struct mx_drawing_select *out);
 
 /**
  * Reads a drawing file (DXF or SVG through profile extraction; medax shape

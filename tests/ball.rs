@@ -158,6 +158,12 @@ fn contact_features_are_exact() {
     assert_eq!(square.towards(c, p(2.25, 1.5)), Feature::Edge(0));
     assert_eq!(square.towards(c, p(-2.0, 0.5)), Feature::Edge(2));
     assert_eq!(square.towards(c, p(0.25 - 0.125, 0.5 - 0.125)), Feature::Vertex(3));
+    // The ray towards a vertex at subnormal scale, where (p − c)·v rounds
+    // to 0 in floating point.
+    let odd = Ball2::new(&pts(&[(-1.0, 0.0), (0.5, 0.5), (0.0, -1.0)])).unwrap();
+    assert_eq!(odd.vertices()[1], p(0.5, 0.5));
+    let tiny_p = p(f64::from_bits(1), f64::from_bits(1));
+    assert_eq!(odd.towards(p(0.0, 0.0), tiny_p), Feature::Vertex(1));
     // The triangle's vertex points up: a horizontal ceiling edge (interior
     // below, so drawn right to left) touches it there.
     assert_eq!(Ball2::triangle().touching_edge(p(1.0, 5.0), p(0.0, 5.0)), Feature::Vertex(0));

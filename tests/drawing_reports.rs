@@ -174,3 +174,16 @@ fn drawing_json_reads_back_as_the_same_shapes() {
     assert_eq!(back.ignored.len(), 1);
     assert_eq!((back.ignored[0].kind, back.ignored[0].source), (IgnoredKind::InvalidShape, 0));
 }
+
+#[test]
+fn selecting_by_layer_or_colour_needs_a_format_that_has_them() {
+    let svg = r#"<svg><rect x="0" y="0" width="4" height="2"/></svg>"#;
+    let opts = ShapeOptions::default();
+    assert_eq!(Drawing2d::from_str_as(svg, Format::Svg, &opts, &DrawingOptions::default()).unwrap().shapes.len(), 1);
+    for select in [colours(&[1]), DrawingOptions { layers: vec!["0".into()], ..DrawingOptions::default() }] {
+        let e = Drawing2d::from_str_as(svg, Format::Svg, &opts, &select).unwrap_err();
+        assert!(e.to_string().contains("no layers or colours"), "{e}");
+        let json = r#"{"loops": [[[0, 0], [4, 0], [4, 2], [0, 2]]]}"#;
+        assert!(Drawing2d::from_str_as(json, Format::Json, &opts, &select).is_err());
+    }
+}

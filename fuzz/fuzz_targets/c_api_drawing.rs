@@ -14,6 +14,7 @@ fuzz_target!(|input: (u8, Vec<String>, Vec<i16>, &[u8])| {
     let names: Vec<CString> = layers.iter().filter_map(|l| CString::new(l.as_str()).ok()).collect();
     let pointers: Vec<*const std::ffi::c_char> = names.iter().map(|n| n.as_ptr()).collect();
     let select = mx_drawing_select {
+        struct_size: std::mem::size_of::<mx_drawing_select>(),
         layers: pointers.as_ptr(),
         layer_count: pointers.len(),
         colours: colours.as_ptr(),

@@ -2,12 +2,12 @@
 
 use super::{write_file, write_streamed, RunArgs};
 use medax::io::Format;
-use medax::kernel::FilteredKernel;
+use medax::kernel::{BBox, FilteredKernel};
 use medax::plane::read_sites;
 use medax::plane::AxisOptions;
 use medax::plane::Sites;
 use medax::plane::{voronoi, VoronoiOptions};
-use medax::shape::{Drawing2d, DrawingOptions, Shape2d, ShapeOptions, Vertex};
+use medax::shape::{BoxTree, Drawing2d, DrawingOptions, Shape2d, ShapeOptions, Vertex};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -57,6 +57,9 @@ fn load(args: &VoronoiArgs) -> Result<(Sites, Option<Vec<Vertex>>), ExitCode> {
             ExitCode::from(3)
         })?;
         match read_sites(&text) {
+            Ok(_) if !args.layers.is_empty() || !args.colours.is_empty() => {
+                return Err(fail(&"--layer and --colour select the curves of a drawing, not sites"));
+            }
             Ok(read) => return Ok(read),
             // Not a sites file: perhaps a shape or drawing.
             Err(e) if text.contains("\"loops\"") || text.contains("\"shapes\"") => sites_error = Some(e),
@@ -84,14 +87,25 @@ fn load(args: &VoronoiArgs) -> Result<(Sites, Option<Vec<Vertex>>), ExitCode> {
 }
 
 /// The shapes not inside another shape's outer loop: islands in holes
-/// would overlap the part around them as region sites.
+/// would overlap the part around them as region sites. Candidates by a box
+/// tree: a drawing may hold thousands of parts.
 fn parts(shapes: &[Shape2d]) -> Vec<&Shape2d> {
     let k = FilteredKernel;
-    let inside = |s: &Shape2d, o: &Shape2d| {
-        let p = s.outer().vertices()[0].p;
-        !std::ptr::eq(s, o) && o.bbox().contains(p) && o.outer().winding_number(&k, p) != 0
+    let tree = BoxTree::new(shapes.iter().map(|s| s.bbox()).collect());
+    let inside = |i: usize| {
+        let p = shapes[i].outer().vertices()[0].p;
+        let mut found = false;
+        tree.visit_overlapping(&BBox::of_points(p, p), |j| {
+            found = j != i && shapes[j].outer().winding_number(&k, p) != 0;
+            if found {
+                std::ops::ControlFlow::Break(())
+            } else {
+                std::ops::ControlFlow::Continue(())
+            }
+        });
+        found
     };
-    shapes.iter().filter(|s| !shapes.iter().any(|o| inside(s, o))).collect()
+    (0..shapes.len()).filter(|&i| !inside(i)).map(|i| &shapes[i]).collect()
 }
 
 pub fn run(args: &VoronoiArgs) -> Result<(), ExitCode> {

@@ -46,7 +46,8 @@ pub unsafe extern "C" fn mx_ball_from_vertices2(xy: *const f64, count: usize, ou
 /// `diamond`, `triangle`, `ngon:K[:DEGREES]`, or ball JSON `{"vertices":
 /// [[x, y], ...]}` (as the command line's `--ball`). JSON that does not
 /// parse gives `MX_ERR_PARSE` with its line and column, a description that
-/// names no ball `MX_ERR_INVALID_BALL`.
+/// names no ball `MX_ERR_INVALID_ARGUMENT`, a polygon that is no ball
+/// `MX_ERR_INVALID_BALL`.
 ///
 /// # Safety
 /// `text` NULL or NUL-terminated; `out` writable.
@@ -62,7 +63,8 @@ pub unsafe extern "C" fn mx_ball_parse(text: *const c_char, out: *mut *mut mx_ba
 }
 
 /// The regular polygon of `k` vertices (3 to 100 000) on the unit circle,
-/// the first at angle `rotation` radians.
+/// the first at angle `rotation` radians (`MX_ERR_INVALID_ARGUMENT`
+/// otherwise).
 ///
 /// # Safety
 /// `out` writable.

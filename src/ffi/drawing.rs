@@ -2,7 +2,7 @@
 //! grouped by containment) and what was left out of them.
 
 use super::boundary::{c_str, guard, in_pool, nth, slice};
-use super::handles::{arg, create, free, query, Handle};
+use super::handles::{arg, create, free, impl_options, options_default, query, Handle, Options};
 use super::last_error::FfiError;
 use super::shape2d::{format_of, mx_shape2d, mx_shape_options, options};
 use super::status::mx_status;
@@ -35,10 +35,15 @@ fn c_string(s: &str) -> CString {
     CString::new(s.replace('\0', " ")).unwrap_or_default()
 }
 
-/// What to take out of a drawing; every field may be zero (all of it).
+/// What to take out of a drawing. Initialise with
+/// `mx_drawing_select_default` (which sets `struct_size` and selects
+/// everything), then change fields.
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct mx_drawing_select {
+    /// `sizeof(mx_drawing_select)` as the caller was compiled; lets later
+    /// versions add fields without breaking old callers.
+    pub struct_size: usize,
     /// Take the curves of these layers only (DXF group 8, UTF-8,
     /// NUL-terminated): `layer_count` of them; NULL when 0.
     pub layers: *const *const c_char,
@@ -56,17 +61,36 @@ pub struct mx_drawing_select {
     pub keep_duplicates: u8,
 }
 
+// Everything selected.
+impl_options!(mx_drawing_select, v1: 41 bytes up to keep_duplicates: u8, defaults: mx_drawing_select {
+    struct_size: size_of::<Self>(),
+    layers: std::ptr::null(),
+    layer_count: 0,
+    colours: std::ptr::null(),
+    colour_count: 0,
+    keep_duplicates: 0,
+});
+
+/// Fills `out` with the selection of everything (and its `struct_size`).
+///
+/// # Safety
+/// `out` must be NULL or point to a writable `mx_drawing_select`.
+#[no_mangle]
+pub unsafe extern "C" fn mx_drawing_select_default(out: *mut mx_drawing_select) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { options_default(out) }
+}
+
 /// The selection `select` points to (NULL: everything).
 ///
 /// # Safety
 /// `select` NULL or valid, its arrays valid for their counts.
 unsafe fn selection(select: *const mx_drawing_select) -> Result<DrawingOptions, FfiError> {
     let mut out = DrawingOptions::default();
-    if select.is_null() {
-        return Ok(out);
-    }
     // SAFETY: caller contract.
-    let s = unsafe { &*select };
+    let Some(s) = (unsafe { mx_drawing_select::read(select)? }) else {
+        return Ok(out);
+    };
     // SAFETY: caller contract.
     for &name in unsafe { slice(s.layers, s.layer_count, "select.layers")? } {
         // SAFETY: caller contract.

@@ -67,6 +67,7 @@ impl From<BallError> for FfiError {
     fn from(e: BallError) -> FfiError {
         let status = match e {
             BallError::Parse(_) => mx_status::MX_ERR_PARSE,
+            BallError::InvalidArgument { .. } => mx_status::MX_ERR_INVALID_ARGUMENT,
             _ => mx_status::MX_ERR_INVALID_BALL,
         };
         let mut info = mx_error_info::none(status);

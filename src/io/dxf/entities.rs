@@ -180,7 +180,7 @@ impl Reader {
                 let id = self.layer_id(name) as usize;
                 // A negative colour marks the layer off; it keeps its colour.
                 let c = groups.iter().find(|g| g.code == 62).and_then(colour).map(i16::unsigned_abs);
-                self.layer_colours[id] = c.map_or(DEFAULT_COLOUR, |c| c as i16);
+                self.layer_colours[id] = c.filter(|c| (1..=255).contains(c)).map_or(DEFAULT_COLOUR, |c| c as i16);
                 return Ok(());
             }
             (Section::Tables, _) => return Ok(()),

@@ -22,9 +22,9 @@ pub struct Ball2 {
     facets: Vec<Point>,
 }
 
-/// Regular polygons with more vertices than this are refused: beyond it
-/// consecutive vertices round to collinear, and the Euclidean kernel is
-/// the better tool.
+/// Regular polygons with more vertices than this are refused: the ball
+/// is then within 5·10^-10 of the circle, where the Euclidean kernel is
+/// the better tool, and every distance query costs a pass over k facets.
 const MAX_REGULAR: usize = 100_000;
 
 impl Ball2 {

@@ -83,8 +83,10 @@ impl Ball2 {
         let side = |i: usize| k.cross_sign(origin, self.vertices()[i % n], c, p);
         for i in 0..n {
             let v = self.vertices()[i];
-            // On the ray through vertex i (not the opposite ray).
-            if side(i) == Orientation::Collinear && (p - c).dot(v) > 0.0 {
+            // On the ray through vertex i, not the opposite one: (p − c)·v > 0,
+            // as the cross product of p − c with v turned a quarter.
+            let ahead = k.cross_sign(c, p, origin, Point::new(-v.y, v.x)) == Orientation::Left;
+            if side(i) == Orientation::Collinear && ahead {
                 return Feature::Vertex(i);
             }
             // Strictly between the rays through vertices i and i + 1.
@@ -92,8 +94,8 @@ impl Ball2 {
                 return Feature::Edge(i);
             }
         }
-        // Only rounding in the dot product above could get here: the rays
-        // through the vertices split the plane into the edges' cones.
+        // Unreachable for p ≠ c: the rays through the vertices split the
+        // plane into the edges' cones, decided exactly.
         Feature::Vertex(0)
     }
 

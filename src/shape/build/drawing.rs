@@ -30,7 +30,8 @@ impl Drawing2d {
     /// # Errors
     ///
     /// The file cannot be read or parsed, or (shape JSON only) its shape
-    /// does not validate; an SVG elliptical arc.
+    /// does not validate; an SVG elliptical arc; a selection by layer or
+    /// colour for JSON or SVG, which have neither.
     pub fn from_file(
         path: impl AsRef<std::path::Path>,
         opts: &ShapeOptions,
@@ -40,6 +41,7 @@ impl Drawing2d {
         let bytes = read_bytes(path)?;
         let hint = Format::from_path(path);
         if hint == Some(Format::Json) || (hint.is_none() && looks_json(&bytes)) {
+            no_selection(Format::Json, select)?;
             if let Some(raw) = json::read_loops_fast(&bytes) {
                 return Ok(Drawing2d::of(Shape2d::from_raw_json(raw, opts)?));
             }
@@ -57,6 +59,7 @@ impl Drawing2d {
         select: &DrawingOptions,
     ) -> Result<Drawing2d, ShapeError> {
         opts.check()?;
+        no_selection(format, select)?;
         let raw = match format {
             Format::Json => return json_drawing(text, opts),
             Format::Dxf => dxf::read_dxf(text)?,
@@ -113,6 +116,17 @@ impl Drawing2d {
             serde_json::Value::from(warnings)
         )
     }
+}
+
+/// Refuses a selection by layer or colour for a format without them
+/// (medax JSON, SVG), which would otherwise leave nothing, unreported.
+fn no_selection(format: Format, select: &DrawingOptions) -> Result<(), ShapeError> {
+    if format == Format::Dxf || (select.layers.is_empty() && select.colours.is_empty()) {
+        return Ok(());
+    }
+    Err(ShapeError::InvalidArgument {
+        what: format!("{} has no layers or colours to select: select by layer or colour in DXF only", format.name()),
+    })
 }
 
 /// Shape JSON as one shape (errors as for [`Shape2d::from_json_str`]), or

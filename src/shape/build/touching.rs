@@ -1,6 +1,8 @@
 //! Shapes of a drawing that touch: two parts sharing an edge, an island
 //! touching the hole it lies in. Each shape validates on its own, so only
-//! pairs of shapes are searched, and of each only the loops near the other.
+//! elements of two different shapes are paired, and of each shape only the
+//! loops near the other: loops and elements are found through box trees,
+//! so a plate of 10^5 holes with an island in each stays near-linear.
 
 use crate::kernel::Point;
 use crate::shape::build::import::Traced;
@@ -8,7 +10,6 @@ use crate::shape::index::box_tree::BoxTree;
 use crate::shape::model::bulge_loop::Loop;
 use crate::shape::model::error::ElementRef;
 use crate::shape::shape2d::Shape2d;
-use crate::shape::validate::first_meeting;
 use crate::shape::validate::intersect::element_pair_approach;
 use std::ops::ControlFlow;
 
@@ -29,6 +30,9 @@ pub struct Touching {
     pub handles: [u64; 2],
 }
 
+/// Shapes with more loops than this get a box tree over their loops.
+const LOOPS_SCANNED: usize = 16;
+
 /// One report per pair of shapes that meet (within the smaller of their
 /// validation tolerances), naming the two entities found to meet.
 /// `traced[i]` are the loops of `shapes[i]` as given to validation, with
@@ -36,35 +40,51 @@ pub struct Touching {
 pub(crate) fn touching_shapes(shapes: &[Shape2d], traced: &[Vec<Traced>]) -> Vec<Touching> {
     let tol = |i: usize| shapes[i].tolerance();
     let tree = BoxTree::new(shapes.iter().enumerate().map(|(i, s)| s.bbox().inflate(tol(i))).collect());
+    let loop_trees: Vec<Option<BoxTree>> = traced
+        .iter()
+        .map(|t| (t.len() > LOOPS_SCANNED).then(|| BoxTree::new(t.iter().map(|l| l.l.bbox()).collect())))
+        .collect();
+    // The loops of shape `i` whose boxes meet `b`.
+    let near = |i: usize, b: &crate::kernel::BBox| -> Vec<usize> {
+        match &loop_trees[i] {
+            Some(t) => {
+                let mut out = Vec::new();
+                t.visit_overlapping(b, |k| {
+                    out.push(k);
+                    ControlFlow::<()>::Continue(())
+                });
+                out.sort_unstable();
+                out
+            }
+            None => (0..traced[i].len()).filter(|&k| traced[i][k].l.bbox().overlaps(b)).collect(),
+        }
+    };
     let mut out = Vec::new();
     for (i, s) in shapes.iter().enumerate() {
-        let mut near = Vec::new();
+        let mut others = Vec::new();
         tree.visit_overlapping(&s.bbox().inflate(tol(i)), |j| {
             if j > i {
-                near.push(j);
+                others.push(j);
             }
             ControlFlow::<()>::Continue(())
         });
-        near.sort_unstable();
-        for j in near {
+        others.sort_unstable();
+        for j in others {
             let t = tol(i).min(tol(j));
-            // Loops of each shape that come near the other's box.
-            let (bi, bj) = (s.bbox().inflate(t), shapes[j].bbox().inflate(t));
-            let of_i: Vec<&Traced> = traced[i].iter().filter(|l| l.l.bbox().overlaps(&bj)).collect();
-            let of_j: Vec<&Traced> = traced[j].iter().filter(|l| l.l.bbox().overlaps(&bi)).collect();
+            let (of_i, of_j) = (near(i, &shapes[j].bbox().inflate(t)), near(j, &s.bbox().inflate(t)));
             if of_i.is_empty() || of_j.is_empty() {
                 continue;
             }
-            let loops: Vec<Loop> = of_i.iter().chain(&of_j).map(|l| l.l.clone()).collect();
+            let loops: Vec<Loop> = of_i
+                .iter()
+                .map(|&k| traced[i][k].l.clone())
+                .chain(of_j.iter().map(|&k| traced[j][k].l.clone()))
+                .collect();
             let Some((a, b, position)) = meeting(&loops, of_i.len(), t) else {
                 continue;
             };
-            // Within one shape nothing meets: one element is of each.
-            let (a, b) = if a.loop_index < b.loop_index { (a, b) } else { (b, a) };
-            if a.loop_index >= of_i.len() || b.loop_index < of_i.len() {
-                continue;
-            }
-            let (oa, ob) = (of_i[a.loop_index].origin(a.element), of_j[b.loop_index - of_i.len()].origin(b.element));
+            let oa = traced[i][of_i[a.loop_index]].origin(a.element);
+            let ob = traced[j][of_j[b.loop_index - of_i.len()]].origin(b.element);
             out.push(Touching {
                 shapes: [i, j],
                 position,
@@ -76,25 +96,25 @@ pub(crate) fn touching_shapes(shapes: &[Shape2d], traced: &[Vec<Traced>]) -> Vec
     out
 }
 
-/// Below this many element pairs, every pair is tested: a sweep costs
-/// more to set up than it saves (most drawings hold small parts).
-const PAIRS_TESTED_ONE_BY_ONE: usize = 4096;
-
 /// Where an element of `loops[..split]` meets one of `loops[split..]`
-/// (within `tol`), or where any two elements meet, as validation finds it.
+/// (within `tol`): the pairs whose boxes overlap, found through a box tree
+/// over the second group's elements, tested as validation tests them.
 fn meeting(loops: &[Loop], split: usize, tol: f64) -> Option<(ElementRef, ElementRef, Point)> {
-    let count = |ls: &[Loop]| ls.iter().map(Loop::len).sum::<usize>();
-    if count(&loops[..split]).saturating_mul(count(&loops[split..])) > PAIRS_TESTED_ONE_BY_ONE {
-        return first_meeting(loops, tol);
-    }
     let refs = |from: usize, to: usize| {
         (from..to).flat_map(|l| (0..loops[l].len()).map(move |element| ElementRef { loop_index: l, element }))
     };
     let bbox = |r: ElementRef| loops[r.loop_index].element(r.element).bbox().inflate(tol);
+    let second: Vec<ElementRef> = refs(split, loops.len()).collect();
+    let tree = BoxTree::new(second.iter().map(|&r| bbox(r)).collect());
     refs(0, split).find_map(|a| {
-        let ba = bbox(a);
-        refs(split, loops.len())
-            .filter(|&b| ba.overlaps(&bbox(b)))
-            .find_map(|b| element_pair_approach(loops, a, b, tol).map(|p| (a, b, p)))
+        let mut found = None;
+        tree.visit_overlapping(&bbox(a), |k| match element_pair_approach(loops, a, second[k], tol) {
+            Some(p) => {
+                found = Some((a, second[k], p));
+                ControlFlow::Break(())
+            }
+            None => ControlFlow::Continue(()),
+        });
+        found
     })
 }

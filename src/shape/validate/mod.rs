@@ -282,20 +282,6 @@ fn check_intersections(loops: &[Loop], index: &ElementIndex, tol: f64) -> Result
 
 type Pair = (ElementRef, ElementRef, Point);
 
-/// The first pair of elements of `loops` found to cross or come within
-/// `tol` (model units), consecutive elements of a loop excepted at their
-/// shared vertex, searched as validation searches: for loops that each
-/// validate on their own, where two of them meet.
-pub(crate) fn first_meeting(loops: &[Loop], tol: f64) -> Option<Pair> {
-    let offsets = per_element::offsets(loops);
-    let boxes = per_element::map_elements(loops, &offsets, |l, i| loops[l].element(i).bbox());
-    let index = ElementIndex::with_boxes(boxes, offsets);
-    match check_intersections(loops, &index, tol) {
-        Err(ShapeError::Intersection { first, second, position }) => Some((first, second, position)),
-        _ => None,
-    }
-}
-
 /// Estimates the box tree's work from a sample of about 1000 evenly spaced
 /// elements (box overlaps only, no geometry), so that boundaries where boxes
 /// overlap heavily go straight to the sweep.
