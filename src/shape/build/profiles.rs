@@ -16,6 +16,7 @@ use crate::shape::model::error::{ElementRef, ShapeError};
 use crate::shape::model::options::ShapeOptions;
 use crate::shape::shape2d::Shape2d;
 use crate::util::fast_hash::FastMap;
+use rayon::prelude::*;
 use std::ops::ControlFlow;
 
 /// The shapes a drawing holds and what was left out of them.
@@ -227,10 +228,21 @@ pub fn profiles(d: &RawDrawing, opts: &ShapeOptions, select: &DrawingOptions) ->
         report.push(IgnoredKind::FlatLoop, t.origin(0), position, reason.into(), None);
     }
     let loops = drop_duplicates(loops, tol, !select.keep_duplicates, &mut report);
+    // Shapes validate independently; in parallel, a drawing of thousands
+    // of small parts does not pay the thread pool's hand-off per shape.
+    let layers = report.layers;
+    let checked: Vec<_> = nest(loops)
+        .into_par_iter()
+        .map(|group| {
+            let mut local = Report { layers, out: Vec::new() };
+            (validate(group, opts, &mut local), local.out)
+        })
+        .collect();
     let mut shapes = Vec::new();
     let mut traced = Vec::new();
-    for group in nest(loops) {
-        if let Some((shape, from)) = validate(group, opts, &mut report) {
+    for (valid, ignored) in checked {
+        report.out.extend(ignored);
+        if let Some((shape, from)) = valid {
             shapes.push(shape);
             traced.push(from);
         }
