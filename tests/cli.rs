@@ -369,3 +369,21 @@ fn a_drawing_of_two_parts_gives_two_shapes_and_says_what_it_ignored() {
     assert_eq!(out.status.code(), Some(1));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn ball_describes_and_draws_a_unit_ball() {
+    let dir = scratch("ball");
+    let svg = dir.join("tri.svg");
+    let out = medax().args(["ball", "triangle", "--svg"]).arg(&svg).output().unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(stdout.contains("3 vertices") && stdout.contains("not symmetric"), "{stdout}");
+    assert!(std::fs::read_to_string(&svg).unwrap().matches("<path").count() == 2, "the ball and its mirror");
+    let file = dir.join("square.json");
+    std::fs::write(&file, r#"{"vertices": [[1, 1], [-1, 1], [-1, -1], [1, -1]]}"#).unwrap();
+    let out = medax().arg("ball").arg(&file).output().unwrap();
+    assert!(out.status.success() && String::from_utf8_lossy(&out.stdout).contains("symmetric: a metric"));
+    let out = medax().args(["ball", r#"{"vertices": [[2, 0], [0, 2], [0.5, 0], [0, -2]]}"#]).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("vertex 2"));
+}

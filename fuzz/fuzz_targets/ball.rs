@@ -1,4 +1,4 @@
-//! Any polygon as a unit ball: a ball or a typed error naming a vertex in
+//! Any text through `Ball2::parse`, and any polygon as a unit ball: a ball or a typed error naming a vertex in
 //! range, never a panic. A ball accepted holds its invariants: every vertex
 //! at gauge 1, the gauge non-negative and below 1 strictly inside, the
 //! features found in range.
@@ -8,8 +8,10 @@ use libfuzzer_sys::fuzz_target;
 use medax::kernel::Point;
 use medax::shape::{Ball2, Feature};
 
-fuzz_target!(|input: (Vec<(f64, f64)>, (f64, f64), (f64, f64))| {
-    let (xy, (px, py), (qx, qy)) = input;
+fuzz_target!(|input: (Vec<(f64, f64)>, (f64, f64), (f64, f64), String)| {
+    let (xy, (px, py), (qx, qy), text) = input;
+    // Names and ball JSON: a ball or an error, never a panic.
+    let _ = Ball2::parse(&text);
     let vertices: Vec<Point> = xy.iter().map(|&(x, y)| Point::new(x, y)).collect();
     let ball = match Ball2::new(&vertices) {
         Ok(b) => b,

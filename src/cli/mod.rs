@@ -17,6 +17,7 @@ fn put(text: &str) {
 }
 
 mod axis;
+mod ball;
 mod demo;
 mod info;
 mod offset;
@@ -239,6 +240,8 @@ enum Command {
     Voronoi(voronoi::VoronoiArgs),
     /// Trimmed offsets at distances, pocketing rings or V-carve paths (arcs stay arcs).
     Offset(offset::OffsetArgs),
+    /// Describe and draw a unit ball of a polygonal distance (thesis chapter 3).
+    Ball(ball::BallArgs),
     /// Run the demo: validate and draw the embedded demo shape (the default).
     Demo {
         /// Output SVG file.
@@ -289,6 +292,7 @@ pub fn run() -> ExitCode {
         Command::Axis(args) => axis::run(&args),
         Command::Voronoi(args) => voronoi::run(&args),
         Command::Offset(args) => offset::run(&args),
+        Command::Ball(args) => ball::run(&args),
         Command::Draw { shape, output, width } => match shape.load() {
             Ok(s) => write_file(&output, &s.to_svg(width)).map(|_| out!("wrote {}", output.display())),
             Err(e) => Err(fail(&shape.shape, &e)),
