@@ -187,3 +187,21 @@ fn selecting_by_layer_or_colour_needs_a_format_that_has_them() {
         assert!(Drawing2d::from_str_as(json, Format::Json, &opts, &select).is_err());
     }
 }
+
+#[test]
+fn a_sheet_of_parts_sharing_edges_keeps_every_part() {
+    // A 4 x 4 grid of squares, each its own closed polyline, every inner
+    // edge drawn by both neighbours: no part is taken for another's hole.
+    let mut d = Dxf::default();
+    for i in 0..4 {
+        for j in 0..4 {
+            let (x, y) = (10.0 * i as f64, 10.0 * j as f64);
+            d.entities += &rect(0x100 + 4 * i + j, "0", 256, x, y, x + 10.0, y + 10.0);
+        }
+    }
+    let r = d.read(&DrawingOptions::default());
+    assert_eq!(r.shapes.len(), 16, "{:?}", r.ignored);
+    assert!(r.ignored.is_empty(), "{:?}", r.ignored);
+    // 24 shared edges and 18 corners where diagonal neighbours meet.
+    assert_eq!(r.touching.len(), 24 + 18);
+}

@@ -128,24 +128,27 @@ pub unsafe extern "C" fn mx_drawing_from_file(
     // SAFETY: caller contract.
     unsafe {
         create(out, || {
-            let (path, (opts, threads)) = (c_str(path, "path")?, self::options(options)?);
-            let (format, select) = (format_of(format)?, selection(select)?);
-            let inner = in_pool(threads, || -> Result<Drawing2d, FfiError> {
-                Ok(match format {
-                    None => Drawing2d::from_file(path, &opts, &select)?,
-                    Some(f) => {
-                        let bytes = std::fs::read(path).map_err(|e| {
-                            FfiError::from(crate::shape::ShapeError::Io { path: path.into(), message: e.to_string() })
-                        })?;
-                        Drawing2d::from_str_as(&String::from_utf8_lossy(&bytes), f, &opts, &select)?
-                    }
-                })
-            })??;
-            Ok(mx_drawing::new(inner))
+            let (path, options, select) = (c_str(path, "path")?, self::options(options)?, selection(select)?);
+            let format = format_of(format)?.or_else(|| crate::io::Format::from_path(path.as_ref()));
+            let bytes = std::fs::read(path).map_err(|e| {
+                FfiError::from(crate::shape::ShapeError::Io { path: path.into(), message: e.to_string() })
+            })?;
+            read(&bytes, format, options, &select)
         })
     }
 }
 
+/// A drawing from a file's bytes: the work of both constructors, after
+/// their arguments were checked.
+fn read(
+    bytes: &[u8],
+    format: Option<crate::io::Format>,
+    (opts, threads): (crate::shape::ShapeOptions, usize),
+    select: &DrawingOptions,
+) -> Result<mx_drawing, FfiError> {
+    let inner = in_pool(threads, || Drawing2d::from_bytes(bytes, format, &opts, select))??;
+    Ok(mx_drawing::new(inner))
+}
 /// Reads a drawing from `len` bytes in memory (a file's content: UTF-8,
 /// other bytes replaced; `MX_FORMAT_AUTO` guesses from the content), as
 /// `mx_drawing_from_file` does.
@@ -165,12 +168,8 @@ pub unsafe extern "C" fn mx_drawing_from_memory(
     // SAFETY: caller contract.
     unsafe {
         create(out, || {
-            let (bytes, (opts, threads)) = (slice(data, len, "data")?, self::options(options)?);
-            let (format, select) = (format_of(format)?, selection(select)?);
-            let text = String::from_utf8_lossy(bytes);
-            let format = format.unwrap_or_else(|| crate::shape::sniff(&text));
-            let inner = in_pool(threads, || Drawing2d::from_str_as(&text, format, &opts, &select))??;
-            Ok(mx_drawing::new(inner))
+            let (bytes, options, select) = (slice(data, len, "data")?, self::options(options)?, selection(select)?);
+            read(bytes, format_of(format)?, options, &select)
         })
     }
 }

@@ -57,22 +57,23 @@ impl Colours<'_> {
         }
     }
 
-    /// Resolves the colours of every entity of `d`, whose layers `of` maps.
-    pub fn resolve_all(&self, d: &mut RawDrawing, of: &impl Fn(u32) -> u32) {
+    /// Resolves the colours of every entity of `d` (the drawing's own:
+    /// block copies are resolved as they are placed).
+    pub fn resolve_all(&self, d: &mut RawDrawing) {
         for l in &mut d.lines {
-            l.colour = self.of(l.colour, of(l.layer));
+            l.colour = self.of(l.colour, l.layer);
         }
         for a in &mut d.arcs {
-            a.colour = self.of(a.colour, of(a.layer));
+            a.colour = self.of(a.colour, a.layer);
         }
         for c in &mut d.circles {
-            c.colour = self.of(c.colour, of(c.layer));
+            c.colour = self.of(c.colour, c.layer);
         }
         for p in &mut d.polylines {
-            p.colour = self.of(p.colour, of(p.layer));
+            p.colour = self.of(p.colour, p.layer);
         }
         for e in &mut d.skipped {
-            e.colour = self.of(e.colour, of(e.layer));
+            e.colour = self.of(e.colour, e.layer);
         }
     }
 }

@@ -357,7 +357,7 @@ impl Reader {
         self.end_block();
         self.out.layers = std::mem::take(&mut self.layers);
         let colours = Colours { layers: &self.layer_colours, by_block: DEFAULT_COLOUR };
-        colours.resolve_all(&mut self.out, &|l| l);
+        colours.resolve_all(&mut self.out);
         for ins in &mut self.inserts {
             ins.colour = colours.of(ins.colour, ins.layer);
         }

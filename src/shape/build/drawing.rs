@@ -38,15 +38,30 @@ impl Drawing2d {
         select: &DrawingOptions,
     ) -> Result<Drawing2d, ShapeError> {
         let path = path.as_ref();
-        let bytes = read_bytes(path)?;
-        let hint = Format::from_path(path);
-        if hint == Some(Format::Json) || (hint.is_none() && looks_json(&bytes)) {
+        Drawing2d::from_bytes(&read_bytes(path)?, Format::from_path(path), opts, select)
+    }
+
+    /// Reads a drawing from a file's bytes (as [`from_file`](Self::from_file)
+    /// does), in `format` or, when `None`, the format the content shows.
+    /// Bytes that are not UTF-8 are replaced (DXF comments in other code
+    /// pages).
+    ///
+    /// # Errors
+    ///
+    /// As [`from_file`](Self::from_file), without the I/O.
+    pub fn from_bytes(
+        bytes: &[u8],
+        format: Option<Format>,
+        opts: &ShapeOptions,
+        select: &DrawingOptions,
+    ) -> Result<Drawing2d, ShapeError> {
+        if format == Some(Format::Json) || (format.is_none() && looks_json(bytes)) {
             no_selection(Format::Json, select)?;
-            if let Some(raw) = json::read_loops_fast(&bytes) {
+            if let Some(raw) = json::read_loops_fast(bytes) {
                 return Ok(Drawing2d::of(Shape2d::from_raw_json(raw, opts)?));
             }
         }
-        let (text, format) = decode(&bytes, hint);
+        let (text, format) = decode(bytes, format);
         Drawing2d::from_str_as(&text, format, opts, select)
     }
 

@@ -231,7 +231,7 @@ pub fn profiles(d: &RawDrawing, opts: &ShapeOptions, select: &DrawingOptions) ->
     // Shapes validate independently; in parallel, a drawing of thousands
     // of small parts does not pay the thread pool's hand-off per shape.
     let layers = report.layers;
-    let checked: Vec<_> = nest(loops)
+    let checked: Vec<_> = nest(loops, tol)
         .into_par_iter()
         .map(|group| {
             let mut local = Report { layers, out: Vec::new() };
@@ -372,11 +372,14 @@ fn same_cycle(a: &Loop, b: &Loop, tol: f64) -> bool {
 }
 
 /// Groups loops (with their sources, by decreasing area) into shapes: each
-/// loop's parent is the smallest larger loop around a point of it; a loop
+/// loop's parent is the smallest larger loop around a point of it, taken
+/// just inside the loop (off its boundary by more than the chaining
+/// tolerance `tol`, so that a neighbour sharing an edge is not taken for
+/// a loop around it); a loop
 /// at even depth is the outer loop of a shape, one at odd depth a hole of
 /// its parent's shape. Groups are outer loop first, largest outer loop
 /// first.
-fn nest(loops: Vec<Traced>) -> Vec<Vec<Traced>> {
+fn nest(loops: Vec<Traced>, tol: f64) -> Vec<Vec<Traced>> {
     let tree = BoxTree::new(loops.iter().map(|t| t.l.bbox()).collect());
     let k = FilteredKernel;
     // The group of each loop, and its depth.
@@ -386,7 +389,18 @@ fn nest(loops: Vec<Traced>) -> Vec<Vec<Traced>> {
     for (i, Traced { l, .. }) in loops.iter().enumerate() {
         // Points of the loop away from its vertices: one of them off a
         // loop that touches it (from inside or outside) decides.
-        let probes: Vec<Point> = (0..l.len().min(PROBES)).map(|e| l.element(e).point_at(0.5)).collect();
+        // An arc's tangent at its midpoint is parallel to its chord: the
+        // chord's left normal points inside a counter-clockwise loop.
+        let inward = if l.signed_area() > 0.0 { 1.0 } else { -1.0 };
+        let probes: Vec<Point> = (0..l.len().min(PROBES))
+            .map(|e| {
+                let el = l.element(e);
+                let chord = el.end() - el.start();
+                let length = chord.norm();
+                let depth = (1e-4 * length).max(4.0 * tol).min(0.25 * length);
+                el.point_at(0.5) + Point::new(-chord.y, chord.x) * (inward * depth / length.max(f64::MIN_POSITIVE))
+            })
+            .collect();
         let mut parent = None;
         for &probe in &probes {
             tree.visit_overlapping(&BBox::of_points(probe, probe), |j| {
