@@ -17,15 +17,22 @@ fn main() {
     for &rho in &rhos {
         let layer = offsets.layer(rho).expect("layer");
         let mut worst: f64 = 0.0;
+        let mut at = String::new();
         let mut points = 0usize;
         for l in &layer.loops {
             let n = l.vertices.len();
             for i in 0..n {
                 let (a, b) = (l.vertices[i], l.vertices[(i + 1) % n]);
                 let e = Element::from_bulge(a.p, b.p, a.bulge);
-                for p in [a.p, e.point_at(0.5)] {
-                    let d = finder.nearest(p).map_or(f64::INFINITY, |(_, d)| d);
-                    worst = worst.max((d - rho).abs());
+                for p in (0..16).map(|k| e.point_at(k as f64 / 16.0)) {
+                    let (er, d) = finder.nearest(p).map_or((None, f64::INFINITY), |(er, d)| (Some(er), d));
+                    if (d - rho).abs() > worst {
+                        worst = (d - rho).abs();
+                        at = format!(
+                            "offset element {i} {:?} -> {:?} bulge {}, point {p:?}, nearest {er:?}",
+                            a.p, b.p, a.bulge
+                        );
+                    }
                     points += 1;
                 }
             }
@@ -37,5 +44,8 @@ fn main() {
             worst,
             worst / diag
         );
+        if std::env::var_os("MEDAX_PROBE_DETAIL").is_some() {
+            println!("  worst at {at}");
+        }
     }
 }

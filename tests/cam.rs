@@ -304,3 +304,56 @@ fn vcarve_options_are_checked() {
     assert!(vc.flat.is_empty() && !vc.paths.is_empty());
     let _ = v(0.0, 0.0, 0.0);
 }
+
+/// Pocket rings and the V-carve flat and paths of smooth biarc curves (with
+/// and without holes; one where disks hug stretches of nearly concentric
+/// arcs) lie at their distances from the wall at points along every arc,
+/// not only at their ends.
+#[test]
+fn pockets_and_vcarve_of_smooth_curves_lie_at_their_distances() {
+    let blob = {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/offset_gross_blob_1030.json");
+        Shape2d::from_json_str(&std::fs::read_to_string(path).unwrap(), &medax::shape::ShapeOptions::default()).unwrap()
+    };
+    let cases = [
+        ("fourier 800", shape(medax::shape::samples::fourier_biarcs(800, 71))),
+        ("fourier 800 with 3 holes", shape(medax::shape::samples::fourier_with_holes(800, 3, 72))),
+        ("blob 1030", blob),
+    ];
+    for (name, s) in cases {
+        let diag = s.bbox().diagonal();
+        let wall = Loops::of_shape(&s);
+        let off = Offsets::new(&s, &OffsetOptions::default()).unwrap();
+        let m = off.max_inner_distance();
+        let p = pocket(&off, &PocketOptions::new(0.01 * m, 0.15 * m)).unwrap();
+        let mut seen = 0;
+        for g in &p.rings {
+            for l in &g.loops {
+                for (q, _) in loop_samples(&l.vertices, 5) {
+                    let d = wall.dist(q);
+                    assert!((d - g.distance).abs() <= 1e-9 * diag, "{name}: ring at {} has {q:?} at {d}", g.distance);
+                    seen += 1;
+                }
+            }
+        }
+        assert!(p.rings.len() >= 6 && seen > 5000, "{name}: {} rings, {seen} points", p.rings.len());
+        let axis = medial_axis(&s, &AxisOptions::default()).unwrap();
+        let slope = 30f64.to_radians().tan();
+        let max_depth = 0.5 * m / slope;
+        let vc = vcarve(&s, &axis, &VCarveOptions { angle_deg: 60.0, max_depth, tolerance: 1e-4 * diag }).unwrap();
+        assert!(!vc.flat.is_empty(), "{name}");
+        for lp in &vc.flat.loops {
+            for (q, _) in loop_samples(&lp.vertices, 5) {
+                let d = wall.dist(q);
+                assert!((d - vc.flat_radius()).abs() <= 1e-9 * diag, "{name}: flat ring point {q:?} at {d}");
+            }
+        }
+        for path in &vc.paths {
+            for &[x, y, depth] in &path.points {
+                let d = wall.dist(Point::new(x, y));
+                let allow = if depth >= max_depth * (1.0 - 1e-12) { 1e-4 * diag } else { 1e-9 * diag };
+                assert!((d - depth * slope).abs() <= allow, "{name}: V-carve depth {depth} at distance {d}");
+            }
+        }
+    }
+}

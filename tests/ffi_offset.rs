@@ -3,6 +3,9 @@
 //! out as documented, typed statuses for NULL and bad values with the
 //! out-params left alone, cancellation, `_free(NULL)`.
 
+mod common;
+
+use common::offset_oracle::{loop_samples, Loops};
 use medax::cam::{pocket, vcarve, PocketOptions, PocketOrder, UncutKind, VCarveOptions};
 use medax::ffi::*;
 use medax::plane::{medial_axis, AxisOptions, OffsetLayer, OffsetOptions, Offsets};
@@ -436,4 +439,42 @@ fn vcarves_refuse_bad_options_by_name() {
         mx_vcarve_free(null_mut());
         mx_axis_free(axis);
     }
+}
+
+/// The C offsets of a smooth curve where disks hug stretches of nearly
+/// concentric arcs, read back as a C caller would and checked at points
+/// along every element against the oracle's distance to the boundary
+/// (the loop there once swung round a whole circle).
+#[test]
+fn c_offsets_of_a_smooth_curve_lie_at_their_distance() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/offset_gross_blob_1030.json");
+    let rust = Shape2d::from_json_str(&std::fs::read_to_string(path).unwrap(), &ShapeOptions::default()).unwrap();
+    let xyb: Vec<f64> = rust.loops().iter().flat_map(|l| triples(l.vertices())).collect();
+    let lens: Vec<usize> = rust.loops().iter().map(|l| l.len()).collect();
+    let mut shape = null_mut();
+    let st = unsafe { mx_shape2d_from_bulges(xyb.as_ptr(), xyb.len(), lens.as_ptr(), lens.len(), null(), &mut shape) };
+    assert_eq!(st, mx_status::MX_OK, "{}", last_message());
+    let mut offsets = null_mut();
+    assert_eq!(unsafe { mx_offsets_compute(shape, &offset_options(), &mut offsets) }, mx_status::MX_OK);
+    let wall = Loops::of_shape(&rust);
+    let diag = rust.bbox().diagonal();
+    for d in [0.0223, 0.186041, 0.5] {
+        let mut layer = null_mut();
+        assert_eq!(unsafe { mx_offsets_layer(offsets, d, &mut layer) }, mx_status::MX_OK);
+        let mut all = mx_bulge_loops { xyb: null(), xyb_len: 0, lengths: null(), count: 0 };
+        assert_eq!(unsafe { mx_offset_layer_loops(layer, &mut all) }, mx_status::MX_OK);
+        let loops = unsafe { loops_of(&all) };
+        assert!(!loops.is_empty());
+        for l in loops {
+            let vs: Vec<Vertex> =
+                l.chunks_exact(3).map(|c| Vertex { p: medax::kernel::Point::new(c[0], c[1]), bulge: c[2] }).collect();
+            for (q, _) in loop_samples(&vs, 5) {
+                let dist = wall.dist(q);
+                assert!((dist - d).abs() <= 1e-9 * diag, "offset {d}: point {q:?} at distance {dist}");
+            }
+        }
+        unsafe { mx_offset_layer_free(layer) };
+    }
+    unsafe { mx_offsets_free(offsets) };
+    unsafe { mx_shape2d_free(shape) };
 }

@@ -280,7 +280,7 @@ fn check_parts(
     // Every point of every loop at distance |ρ| from the boundary.
     let mut near = Vec::new();
     for (i, vs) in loops.iter().enumerate() {
-        for (q, t) in oracle::loop_samples(vs, 3) {
+        for (q, t) in oracle::loop_samples(vs, 5) {
             seen.on_loops += 1;
             let d = c.truth.dist(q);
             if (d - rho.abs()).abs() > tol {
@@ -992,5 +992,62 @@ fn large_random_holes_where_cavalier_counts_differently() {
     for rho in [0.31439189964164105, 0.3700912519403571, 0.397940928089715] {
         let layer = c.layer(rho);
         check_layer(&c, &layer, rho, 20000, 90, false);
+    }
+}
+
+// ---------------------------------------------------------------- smooth curves
+
+/// The loops of a shape file in tests/data.
+fn data_loops(file: &str) -> Vec<Vec<Vertex>> {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data").join(file);
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let s = Shape2d::from_json_str(&text, &medax::shape::ShapeOptions::default()).expect("a valid shape file");
+    s.loops().iter().map(|l| l.vertices().to_vec()).collect()
+}
+
+/// Two smooth curves of biarcs where a disk hugs stretches of nearly
+/// concentric arcs: the offset followed one arc's circle past its end (off
+/// by 2·10^-6 of the diagonal), or swung round a whole circle and cut
+/// back across the pocket (17 % of the diagonal), at these distances.
+#[test]
+fn smooth_curves_where_disks_hug_nearly_concentric_arcs() {
+    let c = Case::new("blob 2000", data_loops("offset_arc_merge_blob_2000.json"), 0.0);
+    check_all(&c, &[0.02, 0.1, 0.3, 0.6], 2000);
+    let c = Case::new("blob 1030", data_loops("offset_gross_blob_1030.json"), 0.0);
+    let layers = check_all(&c, &[0.186041, 0.0223], 2000);
+    // The true offset's area at 0.186041 (the wrong loop enclosed 2.380).
+    assert!((layers[0].area() - 2.07796).abs() < 1e-4, "area {}", layers[0].area());
+}
+
+/// Distances from 1 % of the largest inscribed radius to 95 %.
+const SMOOTH_FRACTIONS: [f64; 6] = [0.01, 0.03, 0.1, 0.3, 0.6, 0.95];
+
+/// Smooth random curves of 10^3 biarcs (lobed, with holes, within 10^-3
+/// of a circle), several seeds: the family the tests never saw when a
+/// hugged stretch's one element stood for all of them in the offsets.
+#[test]
+fn smooth_biarc_curves_with_and_without_holes() {
+    for seed in 0..3 {
+        let n = 600 + 400 * seed as usize;
+        check_fractions(
+            &format!("fourier {n} seed {seed}"),
+            samples::fourier_biarcs(n, 40 + seed),
+            &SMOOTH_FRACTIONS,
+            400,
+        );
+        check_fractions(
+            &format!("fourier {n} with 3 holes seed {seed}"),
+            samples::fourier_with_holes(n, 3, 50 + seed),
+            &SMOOTH_FRACTIONS,
+            400,
+        );
+    }
+    for (n, seed) in [(1000, 508), (2000, 60)] {
+        check_fractions(
+            &format!("within 1e-3 of a circle, {n} seed {seed}"),
+            samples::fourier_curve(n, seed, 1e-3),
+            &SMOOTH_FRACTIONS,
+            400,
+        );
     }
 }

@@ -169,3 +169,37 @@ fn vcarve_json_and_dxf_carry_depths_exactly() {
     let want: Vec<Vec<RawVertex>> = v.flat.loops.iter().map(|l| raw(&l.vertices)).collect();
     assert_eq!(drawing.polylines.iter().map(|p| p.vertices.clone()).collect::<Vec<_>>(), want);
 }
+
+/// The DXF of a smooth curve's offsets (where disks hug stretches of
+/// nearly concentric arcs), read back, lies at each distance from the
+/// boundary at points along every arc: what a CAM reader takes for G2/G3
+/// (bulge → centre) is the offset itself. Distances by brute force over
+/// the boundary's elements.
+#[test]
+fn dxf_offsets_of_a_smooth_curve_lie_at_their_distances() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/offset_arc_merge_blob_2000.json");
+    let shape = Shape2d::from_json_str(&std::fs::read_to_string(path).unwrap(), &ShapeOptions::default()).unwrap();
+    let offsets = Offsets::new(&shape, &OffsetOptions::default()).unwrap();
+    let distances = [0.02, 0.1];
+    let layers = offsets.layers(&distances).unwrap();
+    let drawing = read_dxf(&offsets_to_dxf(&layers)).unwrap();
+    assert_eq!(drawing.polylines.len(), 2);
+    let boundary: Vec<medax::shape::Element> = shape.loops().iter().flat_map(|l| l.elements()).collect();
+    let diag = shape.bbox().diagonal();
+    for (poly, d) in drawing.polylines.iter().zip(distances) {
+        let vs = &poly.vertices;
+        for (i, a) in vs.iter().enumerate().step_by(7) {
+            let b = &vs[(i + 1) % vs.len()];
+            let e = medax::shape::Element::from_bulge(
+                medax::kernel::Point::new(a.x, a.y),
+                medax::kernel::Point::new(b.x, b.y),
+                a.bulge,
+            );
+            for k in 0..8 {
+                let q = e.point_at(k as f64 / 8.0);
+                let dist = boundary.iter().map(|x| x.closest_point(q).0).fold(f64::INFINITY, f64::min);
+                assert!((dist - d).abs() <= 1e-9 * diag, "offset {d}, element {i}: {q:?} at {dist}");
+            }
+        }
+    }
+}

@@ -101,13 +101,19 @@ impl EdgeProfile {
             Some((out, c)) if out <= Tolerance::offset_piece_slack() => c,
             _ => self.bisect(j, rho),
         };
-        let u = [self.param_near(0, c, a.u[0], b.u[0]), self.param_near(1, c, a.u[1], b.u[1])];
+        let u = [self.param_within(0, c, a.u[0], b.u[0]), self.param_within(1, c, a.u[1], b.u[1])];
         (c, u)
     }
 
-    /// The parameter of centre `c` on side `k`, next to the range `u0..u1`.
-    fn param_near(&self, k: usize, c: Point, u0: f64, u1: f64) -> f64 {
-        self.prims[k].unwrap(self.prims[k].param_of(c), 0.5 * (u0 + u1))
+    /// The parameter of centre `c` on side `k`, clamped to the piece's
+    /// range `u0..u1`: the footpoints move monotonically along a piece, so
+    /// the true parameter lies in it, while the direction from an arc's
+    /// centre to a disk's nearly concentric with it (a disk hugging a
+    /// stretch of nearly concentric arcs) is rounding and may point to the
+    /// far side of the circle.
+    fn param_within(&self, k: usize, c: Point, u0: f64, u1: f64) -> f64 {
+        let u = self.prims[k].unwrap(self.prims[k].param_of(c), 0.5 * (u0 + u1));
+        u.clamp(u0.min(u1), u0.max(u1))
     }
 
     /// The disk of radius `rho` on the piece from break `j`, by bisection
@@ -183,6 +189,14 @@ fn extrema(prims: &[OffsetPrim; 2], k: usize, edge: &AxisEdge) -> Vec<Break> {
         let Some((c, r)) = bisector_point(&p.site, &q.site, u) else { continue };
         let (q0, q1) = edge.params[1 - k];
         let uq = q.unwrap(q.param_of(c), 0.5 * (q0 + q1));
+        // The other footpoint must lie on this edge's range too: where both
+        // sites are nearly concentric with the edge's disks, the driver's
+        // candidate can fall in range while the bisector point it gives
+        // touches the other site on the far side of its circle (a point of
+        // the same conic, but not of this edge).
+        if !q.within(uq, q0, q1, Tolerance::offset_piece_slack()) {
+            continue;
+        }
         let mut us = [0.0; 2];
         us[k] = u;
         us[1 - k] = uq;

@@ -11,7 +11,7 @@
 //! exceeds ρ (Ω^ρ retracts onto it), found by union–find.
 
 use crate::kernel::Point;
-use crate::plane::axis::{own_end_pair, MedialAxis2d, Primitive};
+use crate::plane::axis::{own_end_pair, AxisEdge, MedialAxis2d, Primitive};
 use crate::plane::offset::layer::{OffsetError, OffsetLayer, OffsetLoop, OffsetRegion};
 use crate::plane::offset::prim::OffsetPrim;
 use crate::plane::offset::profile::EdgeProfile;
@@ -77,6 +77,83 @@ pub(crate) struct BandLoop {
     pub component: usize,
 }
 
+/// The axis's edges with the footpoint parameters of every element side
+/// inside the element's own range, and at the element's end where the
+/// side cycle turns onto another primitive (at its start where it turns
+/// onto it from another).
+///
+/// A disk that hugs a stretch of nearly concentric arcs (a tip or the
+/// inside of a nearly circular curve: centres 10^-4 apart where the disk
+/// is known to 10^-7) touches each of them within the tolerance, and the
+/// axis may name one element for the whole stretch, or give a parameter
+/// from the direction of its centre, which is rounding there. Emitted as
+/// is, the offset would follow that element's circle past its end. The
+/// footpoint can never leave its element, and where the footpoint passes
+/// from one primitive to the next at a node, the node's disk touches the
+/// boundary between the two footpoints (a joint, a leaf arc, a stretch it
+/// hugs, emitted whole as the side cycle's gaps), so the element's end is
+/// a footpoint of that disk. Where the parameters are well conditioned
+/// this changes them by rounding only. Reflex vertices keep theirs: a
+/// fan's direction from a disk's centre is well conditioned whenever the
+/// disk is larger than the tolerance.
+fn element_params(shape: &Shape2d, axis: &MedialAxis2d, sides: &SideCycle) -> Vec<AxisEdge> {
+    let mut edges = axis.edges.clone();
+    for e in &mut edges {
+        for k in 0..2 {
+            if let Some(range) = element_range(shape, e.sites[k]) {
+                let (u0, u1) = e.params[k];
+                e.params[k] = (range.clamp(u0), range.clamp(u1));
+            }
+        }
+    }
+    for h in 0..2 * axis.edges.len() {
+        let hn = sides.next[h] as usize;
+        let (p, q) = (axis.edges[h / 2].sites[h % 2], axis.edges[hn / 2].sites[hn % 2]);
+        if p == q {
+            continue;
+        }
+        // Half-edge 2e + 1 runs from `from` to `to` on side 1, 2e the other
+        // way on side 0: `.1` is where side 1 ends, `.0` where side 0 ends.
+        if let Some(range) = element_range(shape, p) {
+            let slot = &mut edges[h / 2].params[h % 2];
+            *(if h % 2 == 1 { &mut slot.1 } else { &mut slot.0 }) = range.end;
+        }
+        if let Some(range) = element_range(shape, q) {
+            let slot = &mut edges[hn / 2].params[hn % 2];
+            *(if hn % 2 == 1 { &mut slot.0 } else { &mut slot.1 }) = range.start;
+        }
+    }
+    edges
+}
+
+/// The footpoint parameters of an element from its start to its end
+/// vertex, the end unwrapped from the start by the arc's sweep.
+#[derive(Debug, Clone, Copy)]
+struct ElementRange {
+    prim: OffsetPrim,
+    start: f64,
+    end: f64,
+}
+
+impl ElementRange {
+    /// `u` (an angle taken next to the range) moved into the range.
+    fn clamp(&self, u: f64) -> f64 {
+        let u = self.prim.unwrap(u, 0.5 * (self.start + self.end));
+        u.clamp(self.start.min(self.end), self.start.max(self.end))
+    }
+}
+
+/// The range of element primitive `p`; `None` for a vertex primitive.
+fn element_range(shape: &Shape2d, p: Primitive) -> Option<ElementRange> {
+    let Primitive::Element { .. } = p else { return None };
+    let lp = &shape.loops()[p.loop_index()];
+    let prim = OffsetPrim::new(shape, p);
+    let at = |i: usize| prim.param_of(lp.vertices()[i % lp.len()].p);
+    let start = at(p.index());
+    let end = if prim.sigma == 0.0 { at(p.index() + 1) } else { start + prim.sigma * prim.bound };
+    Some(ElementRange { prim, start, end })
+}
+
 /// Whether a piece of edge with end radii `r0`, `r1` (monotonic between)
 /// reaches into the open band (`lo`, `hi`).
 fn in_band(r0: f64, r1: f64, lo: f64, hi: f64) -> bool {
@@ -86,8 +163,12 @@ fn in_band(r0: f64, r1: f64, lo: f64, hi: f64) -> bool {
 impl Trimmer {
     /// The trimmer of `axis`, the medial axis of `shape`.
     pub(crate) fn new(shape: &Shape2d, axis: &MedialAxis2d) -> Trimmer {
-        let profiles: Vec<EdgeProfile> = axis
-            .edges
+        let sides = SideCycle::new(shape, axis);
+        let edges = match &sides {
+            Ok(t) => element_params(shape, axis, t),
+            Err(_) => axis.edges.clone(),
+        };
+        let profiles: Vec<EdgeProfile> = edges
             .iter()
             .map(|e| {
                 let prims = [OffsetPrim::new(shape, e.sites[0]), OffsetPrim::new(shape, e.sites[1])];
@@ -103,7 +184,6 @@ impl Trimmer {
             total += (p.breaks.len() - 1) as u32;
         }
         sub_base.push(total);
-        let sides = SideCycle::new(shape, axis);
         let mut arcs = HashMap::new();
         if let Ok(t) = &sides {
             for h in 0..2 * axis.edges.len() {
