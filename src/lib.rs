@@ -38,6 +38,7 @@ pub mod ffi;
 pub mod io;
 pub mod kernel;
 pub mod plane;
+pub mod polymetric;
 pub mod shape;
 pub(crate) mod util;
 

@@ -57,4 +57,23 @@ fn usage_offsets_runs() {
     assert_written(&report.written);
     let gcode = std::fs::read_to_string(&report.written[2]).unwrap();
     assert!(gcode.contains("G3") || gcode.contains("G2"), "the rings round arcs, so there are arc moves");
+    // Every G2/G3 centre (start + I, J) is as far from the arc's start as
+    // from its end: the centre of the element's own circle (to the 10^-4 the
+    // file is written with).
+    let word = |line: &str, key: char| -> Option<f64> {
+        line.split_whitespace().find(|w| w.starts_with(key)).and_then(|w| w[1..].parse().ok())
+    };
+    let (mut at, mut arcs) = ((0.0, 0.0), 0);
+    for line in gcode.lines() {
+        let (Some(x), Some(y)) = (word(line, 'X'), word(line, 'Y')) else { continue };
+        if line.starts_with("G2") || line.starts_with("G3") {
+            let (i, j) = (word(line, 'I').unwrap(), word(line, 'J').unwrap());
+            let c = (at.0 + i, at.1 + j);
+            let (r0, r1) = ((at.0 - c.0).hypot(at.1 - c.1), (x - c.0).hypot(y - c.1));
+            assert!((r0 - r1).abs() <= 3e-4, "{line}: radius {r0} at the start, {r1} at the end");
+            arcs += 1;
+        }
+        at = (x, y);
+    }
+    assert!(arcs > 0);
 }

@@ -41,6 +41,60 @@ impl BigInt {
         }
     }
 
+    /// The integer `v`.
+    pub(crate) fn from_i64(v: i64) -> Self {
+        Self::from_shifted(v < 0, v.unsigned_abs(), 0)
+    }
+
+    /// `m · 2^(e − e0)` for the finite `v = ±m · 2^e` (`e ≥ e0` for every
+    /// nonzero `v` given, so the result is an integer): the value of `v`
+    /// in units of `2^e0`, exact. Zero and non-finite values give zero.
+    pub(crate) fn from_f64_in_units(v: f64, e0: i32) -> Self {
+        let (negative, m, e) = decompose(v);
+        if m == 0 {
+            return BigInt::default();
+        }
+        let tz = m.trailing_zeros();
+        let (m, e) = (m >> tz, e + tz as i32);
+        debug_assert!(e >= e0, "{v} is finer than 2^{e0}");
+        Self::from_shifted(negative, m, (e - e0).max(0) as u32)
+    }
+
+    /// True for zero.
+    pub(crate) fn is_zero(&self) -> bool {
+        self.mag.is_empty()
+    }
+
+    /// The value as `(mantissa, exponent)` with `value ≈ mantissa · 2^exponent`
+    /// and `|mantissa|` in [2^63, 2^64) (the top 64 bits, truncated; relative
+    /// error below 2^-63), or `(0.0, 0)` for zero. Never overflows: the
+    /// exponent is kept apart.
+    pub(crate) fn approx(&self) -> (f64, i64) {
+        let Some(&top) = self.mag.last() else {
+            return (0.0, 0);
+        };
+        let len = self.mag.len();
+        let lz = top.leading_zeros();
+        let next = if len >= 2 { self.mag[len - 2] } else { 0 };
+        let hi = if lz == 0 { top } else { (top << lz) | (next >> (64 - lz)) };
+        let m = hi as f64 * if self.negative { -1.0 } else { 1.0 };
+        (m, 64 * (len as i64 - 1) - lz as i64)
+    }
+
+    /// `num / den · 2^shift` rounded to `f64` (relative error ~2^-62 before
+    /// the final rounding; ±inf or 0 only where the value leaves `f64`'s range).
+    pub(crate) fn ratio_f64(num: &BigInt, den: &BigInt, shift: i64) -> f64 {
+        let (mn, en) = num.approx();
+        let (md, ed) = den.approx();
+        if md == 0.0 {
+            return f64::NAN;
+        }
+        let e = (en - ed + shift).clamp(-4000, 4000) as i32;
+        // Two steps so that neither power of two overflows on its own.
+        let half = e / 2;
+        (mn / md) * 2f64.powi(half) * 2f64.powi(e - half)
+    }
+
     fn normalized(negative: bool, mut mag: Vec<u64>) -> Self {
         while mag.last() == Some(&0) {
             mag.pop();
@@ -48,6 +102,31 @@ impl BigInt {
         let negative = negative && !mag.is_empty();
         BigInt { negative, mag }
     }
+}
+
+/// `(negative, significand, exponent)` with `v = ±significand · 2^exponent`;
+/// non-finite input counts as zero (callers validate finiteness first).
+pub(crate) fn decompose(v: f64) -> (bool, u64, i32) {
+    if !v.is_finite() {
+        return (false, 0, 0);
+    }
+    let bits = v.to_bits();
+    let negative = bits >> 63 == 1;
+    let biased = ((bits >> 52) & 0x7ff) as i32;
+    let fraction = bits & ((1u64 << 52) - 1);
+    if biased == 0 {
+        // Subnormal (or zero): no implicit leading bit, fixed exponent.
+        (negative, fraction, -1074)
+    } else {
+        (negative, fraction | (1u64 << 52), biased - 1075)
+    }
+}
+
+/// The exponent of the least significant bit of the finite nonzero `v`
+/// after its trailing zeros are dropped (`v = odd · 2^e`); `None` for zero.
+pub(crate) fn lowest_bit_exponent(v: f64) -> Option<i32> {
+    let (_, m, e) = decompose(v);
+    (m != 0).then(|| e + m.trailing_zeros() as i32)
 }
 
 fn cmp_mag(a: &[u64], b: &[u64]) -> Ordering {

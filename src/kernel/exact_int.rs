@@ -21,28 +21,9 @@
 //! instead and this module is built only for its tests, which cross-check
 //! the two.
 
-use super::bigint::BigInt;
+use super::bigint::{decompose, BigInt};
 use super::{CircleSide, Orientation, Point};
 use std::cmp::Ordering;
-
-/// `(negative, significand, exponent)` with `v = ±significand · 2^exponent`.
-/// Non-finite input has no exact value; callers validate finiteness first,
-/// and zero keeps this total instead of panicking (as the GMP version does).
-fn decompose(v: f64) -> (bool, u64, i32) {
-    if !v.is_finite() {
-        return (false, 0, 0);
-    }
-    let bits = v.to_bits();
-    let negative = bits >> 63 == 1;
-    let biased = ((bits >> 52) & 0x7ff) as i32;
-    let fraction = bits & ((1u64 << 52) - 1);
-    if biased == 0 {
-        // Subnormal (or zero): no implicit leading bit, fixed exponent.
-        (negative, fraction, -1074)
-    } else {
-        (negative, fraction | (1u64 << 52), biased - 1075)
-    }
-}
 
 /// The coordinates as integers, all scaled by the same power of two.
 fn scaled<const N: usize>(values: [f64; N]) -> [BigInt; N] {

@@ -26,8 +26,8 @@
 pub mod apollonius;
 pub mod axis_kernel;
 mod bbox;
-// With `gmp` the pure-Rust evaluation is only built for the cross-check tests.
-#[cfg(any(test, not(feature = "gmp")))]
+// Always built: the exact lines of the polygon-ball axis use it with or
+// without `gmp` (the predicates' fallback only without it).
 mod bigint;
 pub mod bisector;
 mod circle_arc;
@@ -39,6 +39,7 @@ pub mod element;
 mod exact;
 #[cfg(any(test, not(feature = "gmp")))]
 mod exact_int;
+pub(crate) mod exact_line;
 pub mod fan;
 pub mod growing_disk;
 mod point;
@@ -47,6 +48,7 @@ pub mod tolerance;
 
 pub use axis_kernel::{AxisKernel, CarrierSide, Contact};
 pub use bbox::BBox;
+pub(crate) use bigint::BigInt;
 pub use circle_arc::{CircleArc, Crossing};
 pub use disk::Disk;
 pub use point::Point;

@@ -1,0 +1,324 @@
+//! The medial axis under polygon balls (thesis 3.1–3.2) against an
+//! independent oracle that uses none of the algorithm's predicates: brute
+//! force gauge distances to every edge (`Ball2::distance_to_segment`),
+//! point-in-polygon by crossings, and completeness probes grown by
+//! bisection on those distances.
+
+use medax::kernel::Point;
+use medax::polymetric::{medial_axis_with_ball, BallAxis, BallNodeKind};
+use medax::shape::{samples, Ball2, Shape2d, ShapeOptions, Vertex};
+use rand::{Rng, SeedableRng};
+
+fn shape_of(loops: Vec<Vec<(f64, f64)>>) -> Shape2d {
+    let loops = loops
+        .into_iter()
+        .map(|l| l.into_iter().map(|(x, y)| Vertex { p: Point::new(x, y), bulge: 0.0 }).collect())
+        .collect();
+    Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).expect("valid shape")
+}
+
+fn edges_of(shape: &Shape2d) -> Vec<(Point, Point)> {
+    let mut out = Vec::new();
+    for l in shape.loops() {
+        let v = l.vertices();
+        for i in 0..v.len() {
+            out.push((v[i].p, v[(i + 1) % v.len()].p));
+        }
+    }
+    out
+}
+
+/// δ_B from `c` to the boundary, by brute force.
+fn distance(ball: &Ball2, edges: &[(Point, Point)], c: Point) -> f64 {
+    edges.iter().map(|&(a, b)| ball.distance_to_segment(c, a, b)).fold(f64::INFINITY, f64::min)
+}
+
+fn inside(edges: &[(Point, Point)], c: Point) -> bool {
+    let mut w = false;
+    for &(a, b) in edges {
+        if (a.y > c.y) != (b.y > c.y) && c.x < a.x + (c.y - a.y) / (b.y - a.y) * (b.x - a.x) {
+            w = !w;
+        }
+    }
+    w
+}
+
+/// The number of separate pieces in which the ball `c + r·B` meets the
+/// boundary (each loop walked in order; touching within `tol`).
+fn contact_components(shape: &Shape2d, ball: &Ball2, c: Point, r: f64, tol: f64) -> usize {
+    let v = ball.vertices();
+    let k = v.len();
+    // Facet a_i: a_i·x = 1 on ball edge i.
+    let facets: Vec<Point> = (0..k)
+        .map(|i| {
+            let (p, q) = (v[i], v[(i + 1) % k]);
+            let d = q - p;
+            Point::new(d.y, -d.x) * (1.0 / (d.y * p.x - d.x * p.y))
+        })
+        .collect();
+    let mut total = 0;
+    for l in shape.loops() {
+        let vs = l.vertices();
+        let m = vs.len();
+        // Per edge: (touches, touches at start, touches at end).
+        let hits: Vec<(bool, bool, bool)> = (0..m)
+            .map(|i| {
+                let (a, b) = (vs[i].p, vs[(i + 1) % m].p);
+                let (mut s0, mut s1) = (0.0f64, 1.0f64);
+                let len = (b - a).norm();
+                for f in &facets {
+                    // f·(a − c) + s·f·(b − a) ≤ r + tol·|f|
+                    let base = f.dot(a - c) - r - tol * f.norm();
+                    let rate = f.dot(b - a);
+                    if rate.abs() < 1e-300 {
+                        if base > 0.0 {
+                            return (false, false, false);
+                        }
+                    } else if rate > 0.0 {
+                        s1 = s1.min(-base / rate);
+                    } else {
+                        s0 = s0.max(-base / rate);
+                    }
+                }
+                let slack = tol / len.max(1e-300);
+                (s0 <= s1 + slack, s0 <= slack, s1 >= 1.0 - slack)
+            })
+            .collect();
+        if hits.iter().all(|h| h.0) {
+            total += 1;
+            continue;
+        }
+        // Pieces: runs of touching edges joined where an edge's contact
+        // reaches its end and the next one's reaches its start.
+        for i in 0..m {
+            let prev = hits[(i + m - 1) % m];
+            if hits[i].0 && !(prev.0 && prev.2 && hits[i].1) {
+                total += 1;
+            }
+        }
+    }
+    total
+}
+
+/// Soundness: every node and points along every edge are centres of balls
+/// inside the shape that touch its boundary, with the radius the axis says.
+fn check_sound(shape: &Shape2d, ball: &Ball2, axis: &BallAxis) {
+    let edges = edges_of(shape);
+    let tol = 1e-9 * shape.bbox().diagonal();
+    for e in &axis.edges {
+        let (a, b) = (&axis.nodes[e.from], &axis.nodes[e.to]);
+        for s in [0.0, 0.25, 0.5, 0.75, 1.0] {
+            let c = a.at + (b.at - a.at) * s;
+            let r = a.r + (b.r - a.r) * s;
+            let d = distance(ball, &edges, c);
+            assert!((d - r).abs() <= tol, "edge {}→{} at {s}: radius {r} but distance {d} at {c:?}", e.from, e.to);
+            if s > 0.0 && s < 1.0 {
+                assert!(inside(&edges, c), "edge {}→{} leaves the shape at {c:?}", e.from, e.to);
+                let pieces = contact_components(shape, ball, c, r, tol);
+                assert!(pieces >= 2, "edge {}→{} at {s}: the ball at {c:?} touches the boundary once", e.from, e.to);
+            }
+        }
+    }
+}
+
+fn dist_to_segment(p: Point, a: Point, b: Point) -> f64 {
+    let d = b - a;
+    let t = if d.norm2() > 0.0 { ((p - a).dot(d) / d.norm2()).clamp(0.0, 1.0) } else { 0.0 };
+    (a + d * t).dist(p)
+}
+
+/// Completeness: from random boundary points, the ball touching there with
+/// the ball vertex that supports the edge's outward normal, grown until it
+/// touches elsewhere, is a maximal* ball; its centre lies on the axis.
+fn check_complete(shape: &Shape2d, ball: &Ball2, axis: &BallAxis, probes: usize, seed: u64) {
+    let edges = edges_of(shape);
+    let diag = shape.bbox().diagonal();
+    let mut rng = rand::rngs::SmallRng::seed_from_u64(seed);
+    let verts = ball.vertices();
+    for _ in 0..probes {
+        let (a, b) = edges[rng.gen_range(0..edges.len())];
+        let y = a + (b - a) * rng.gen_range(0.05..0.95);
+        let n = Point::new((b - a).y, -(b - a).x);
+        // The supporting vertex (the middle of the supporting edge where
+        // the edge lies along a ball edge).
+        let top = verts.iter().map(|p| p.dot(n)).fold(f64::NEG_INFINITY, f64::max);
+        let sup: Vec<Point> = verts.iter().copied().filter(|p| p.dot(n) >= top - 1e-12 * n.norm()).collect();
+        let v = sup.iter().fold(Point::new(0.0, 0.0), |s, p| s + *p) * (1.0 / sup.len() as f64);
+        // Centres y − t·v; the ball of radius t touches y. Grown while it
+        // stays empty: δ(c(t)) = t. Bisection on the first t where δ < t.
+        let ok = |t: f64| distance(ball, &edges, y - v * t) >= t * (1.0 - 1e-12) - 1e-13 * diag;
+        let (mut lo, mut hi) = (0.0, diag);
+        while !ok(hi) || hi == diag {
+            if !ok(hi) {
+                break;
+            }
+            hi *= 2.0;
+        }
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if ok(mid) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        let c = y - v * lo;
+        // Only a ball touching the boundary in two separate places is
+        // maximal* (outside general position a corner can hold a ball that
+        // meets two edges in one connected piece).
+        if contact_components(shape, ball, c, lo, 1e-9 * diag) < 2 {
+            continue;
+        }
+        let near = axis
+            .edges
+            .iter()
+            .map(|e| dist_to_segment(c, axis.nodes[e.from].at, axis.nodes[e.to].at))
+            .fold(f64::INFINITY, f64::min);
+        assert!(near <= 1e-7 * diag, "probe from {y:?}: maximal* ball centre {c:?} (r {lo}) is {near} off the axis");
+    }
+}
+
+fn check(shape: &Shape2d, ball: &Ball2, probes: usize) -> BallAxis {
+    let axis = medial_axis_with_ball(shape, ball).unwrap_or_else(|e| panic!("{e}"));
+    check_sound(shape, ball, &axis);
+    check_complete(shape, ball, &axis, probes, 7);
+    axis
+}
+
+#[test]
+fn square_under_the_triangle_has_a_pseudo_branching() {
+    let s = shape_of(vec![vec![(0.0, 0.0), (4.0, 0.0), (4.0, 4.0), (0.0, 4.0)]]);
+    // Turned a little off the square's edges (general position): the
+    // corner at the origin is pruned.
+    let axis = check(&s, &Ball2::regular(3, 0.1).unwrap(), 200);
+    assert!(axis.nodes.iter().any(|n| n.kind == BallNodeKind::PseudoBranch), "{axis:?}");
+}
+
+#[test]
+fn star_polygons_under_several_balls() {
+    for seed in 0..6 {
+        let loops = samples::star_polygon(40, seed);
+        let s = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()).unwrap();
+        for ball in
+            [Ball2::triangle(), Ball2::square(), Ball2::regular(12, 0.1).unwrap(), Ball2::regular(7, 0.3).unwrap()]
+        {
+            check(&s, &ball, 100);
+        }
+    }
+}
+
+/// Rectilinear input under the square ball is as far from general position
+/// as input gets: every edge lies along a ball edge, reflex vertices line up
+/// with ball edges. The axis must still be a valid one-dimensional graph.
+#[test]
+fn rectilinear_shapes_under_the_square() {
+    let sq = Ball2::square();
+    let rect = shape_of(vec![vec![(0.0, 0.0), (6.0, 0.0), (6.0, 2.0), (0.0, 2.0)]]);
+    let a = check(&rect, &sq, 200);
+    // The square fits every corner (Definition 3.2.1 prunes all four): the
+    // axis is the middle segment, between the balls [0,2]² and [4,6]×[0,2].
+    assert_eq!(a.edges.len(), 1, "{a:?}");
+    let ends = [a.nodes[0].at, a.nodes[1].at];
+    assert!(ends.contains(&Point::new(1.0, 1.0)) && ends.contains(&Point::new(5.0, 1.0)), "{a:?}");
+    // An L, a comb with collinear tooth tips and floors, a plate with square holes.
+    let l = shape_of(vec![vec![(0.0, 0.0), (4.0, 0.0), (4.0, 1.0), (1.0, 1.0), (1.0, 4.0), (0.0, 4.0)]]);
+    check(&l, &sq, 200);
+    let mut comb = vec![(0.0, 0.0), (9.0, 0.0), (9.0, 4.0)];
+    for t in (0..4).rev() {
+        let x = 2.0 * t as f64 + 1.0;
+        comb.extend([(x + 1.0, 4.0), (x + 1.0, 2.0), (x, 2.0), (x, 4.0)]);
+    }
+    comb.push((0.0, 4.0));
+    check(&shape_of(vec![comb]), &sq, 300);
+    let mut plate = vec![vec![(0.0, 0.0), (10.0, 0.0), (10.0, 10.0), (0.0, 10.0)]];
+    for (x, y) in [(2.0, 2.0), (6.0, 2.0), (2.0, 6.0), (6.0, 6.0)] {
+        plate.push(vec![(x, y), (x, y + 2.0), (x + 2.0, y + 2.0), (x + 2.0, y)]);
+    }
+    check(&shape_of(plate), &sq, 300);
+    check(&shape_of(vec![vec![(0.0, 0.0), (3.0, 0.0), (3.0, 3.0), (0.0, 3.0)]]), &Ball2::diamond(), 100);
+}
+
+/// Random polygons with holes under random balls (not symmetric).
+#[test]
+fn random_balls_and_holes() {
+    let mut rng = rand::rngs::SmallRng::seed_from_u64(11);
+    for seed in 0..8u64 {
+        // A random convex-ish ball: sorted random angles, random radii.
+        let k = rng.gen_range(3..9);
+        let mut angles: Vec<f64> =
+            (0..k).map(|i| (i as f64 + rng.gen_range(0.1..0.9)) * std::f64::consts::TAU / k as f64).collect();
+        angles.sort_by(f64::total_cmp);
+        let pts: Vec<Point> = angles.iter().map(|a| Point::new(a.cos(), a.sin()) * rng.gen_range(0.6..1.4)).collect();
+        let Ok(ball) = Ball2::new(&pts) else { continue };
+        let mut loops = samples::star_polygon(30, seed);
+        for (cx, cy) in [(0.0, 0.0), (0.2, 0.1)] {
+            let r = 0.05;
+            let hole: Vec<Vertex> = (0..5)
+                .map(|i| {
+                    let a = -(i as f64) * std::f64::consts::TAU / 5.0 + seed as f64;
+                    Vertex { p: Point::new(cx + r * a.cos() - 0.1, cy + r * a.sin()), bulge: 0.0 }
+                })
+                .collect();
+            loops.push(hole);
+        }
+        let Ok(s) = Shape2d::from_bulge_loops(loops, &ShapeOptions::default()) else { continue };
+        check(&s, &ball, 100);
+    }
+}
+
+/// Translating or scaling the shape, or turning shape and ball together by
+/// a quarter turn (exact in `f64`), moves the axis with it: the same
+/// graph, nodes moved, radii scaled.
+#[test]
+fn metamorphic_translate_scale_and_quarter_turn() {
+    let loops = samples::star_polygon(60, 3);
+    let base = Shape2d::from_bulge_loops(loops.clone(), &ShapeOptions::default()).unwrap();
+    let ball = Ball2::new(&[Point::new(1.0, 0.0), Point::new(0.0, 1.25), Point::new(-0.75, -0.5)]).unwrap();
+    let a = check(&base, &ball, 50);
+    let map = |f: &dyn Fn(Point) -> Point| {
+        let moved: Vec<Vec<Vertex>> =
+            loops.iter().map(|l| l.iter().map(|v| Vertex { p: f(v.p), bulge: 0.0 }).collect()).collect();
+        Shape2d::from_bulge_loops(moved, &ShapeOptions::default()).unwrap()
+    };
+    let same = |b: &BallAxis, f: &dyn Fn(Point) -> Point, scale: f64, what: &str| {
+        assert_eq!((b.nodes.len(), b.edges.len()), (a.nodes.len(), a.edges.len()), "{what}");
+        let diag = base.bbox().diagonal() * scale;
+        for n in &a.nodes {
+            let want = f(n.at);
+            let hit =
+                b.nodes.iter().any(|m| m.at.dist(want) <= 1e-9 * diag && (m.r - n.r * scale).abs() <= 1e-9 * diag);
+            assert!(hit, "{what}: node {:?} r {} has no image", n.at, n.r);
+        }
+    };
+    let shift = |p: Point| Point::new(p.x + 3.25, p.y - 1.5);
+    same(&check(&map(&shift), &ball, 50), &shift, 1.0, "translated");
+    let grow = |p: Point| p * 4.0;
+    same(&check(&map(&grow), &ball, 50), &grow, 4.0, "scaled by 4");
+    let quarter = |p: Point| Point::new(-p.y, p.x);
+    let turned_ball = Ball2::new(&ball.vertices().iter().map(|&v| quarter(v)).collect::<Vec<_>>()).unwrap();
+    same(&check(&map(&quarter), &turned_ball, 50), &quarter, 1.0, "turned with its ball");
+}
+
+/// Thesis 3.2 (Table 3.1): the axis of a polygon of n edges and r reflex
+/// vertices under a k-gon has between n and n + r·k edges.
+#[test]
+fn axis_size_lies_between_n_and_n_plus_rk() {
+    for seed in 0..4 {
+        let loops = samples::star_polygon(200, 20 + seed);
+        let s = Shape2d::from_bulge_loops(loops.clone(), &ShapeOptions::default()).unwrap();
+        let n = loops[0].len();
+        let pts: Vec<Point> = loops[0].iter().map(|v| v.p).collect();
+        let reflex = (0..n)
+            .filter(|&i| {
+                let (p, q, r) = (pts[(i + n - 1) % n], pts[i], pts[(i + 1) % n]);
+                (q - p).cross(r - q) < 0.0
+            })
+            .count();
+        for k in [3usize, 5, 12] {
+            let ball = Ball2::regular(k, 0.05 * seed as f64 + 0.01).unwrap();
+            let axis = medial_axis_with_ball(&s, &ball).unwrap();
+            let m = axis.edges.len();
+            assert!(m >= n && m <= n + reflex * k, "seed {seed}, k {k}: {m} edges, n {n}, r {reflex}");
+        }
+    }
+}
