@@ -134,9 +134,25 @@ impl Problem<'_> {
         let rn = radius_num(&re, &p);
         let corner = rn.is_zero();
         let slack = 1e-7 * self.diag + 1e-9 * r;
-        let query = BBox::of_points(at, at).inflate(r * self.reach * (1.0 + 1e-9) + slack);
+        // The ball at + r·B lies in at + r·(the ball's box); every contact
+        // of a tied class lies on it.
+        let e = self.extent;
+        let grow = 1e-9 * r * self.reach + slack;
+        let query =
+            BBox::of_points(at + Point::new(r * e[0], r * e[2]), at + Point::new(r * e[1], r * e[3])).inflate(grow);
         let mut tied: Vec<Tied> = Vec::new();
         for c in self.classes_near(&query) {
+            // The f64 filter first: a class whose radius at the node or
+            // validity misses by more than the slack is not tied (near the
+            // middle of a large shape the box holds many edges, and each
+            // exact class costs a dozen big-integer products).
+            // Rounding of `at` moves the class's radius by its gradient
+            // (|n|/h) times that rounding.
+            let ac = self.approx(c);
+            let off = 1e-12 * (at.x.abs() + at.y.abs() + r) * (1.0 + ac.n.norm() / ac.h.abs());
+            if c != reference && ((ac.radius(at) - r).abs() > slack + off || ac.validity(at) < -(slack + off)) {
+                continue;
+            }
             let ex = if c == reference { re.clone() } else { self.exact(c) };
             if &radius_num(&ex, &p) * &re.h != &rn * &ex.h || !valid_at(&ex, &p) {
                 continue;

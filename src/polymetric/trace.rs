@@ -150,7 +150,13 @@ impl Problem<'_> {
             }
             self.classes_of_edge(e as u32).filter_map(|c| walk.contact_time(&self.approx(c))).reduce(f64::min)
         };
-        let found = self.tree.min_by_bound(|b| walk.box_bound(self.reach, &self.extent, b), key);
+        let found = self.tree.min_by_bound(
+            // A contact later than the validity end found exactly would be
+            // dropped below: boxes beyond it are never opened (most rays
+            // end at a joint, long before the next contact).
+            |b| walk.box_bound(self.reach, &self.extent, b).filter(|&t| t <= t_first + 2.0 * walk.eps),
+            key,
+        );
         if let Some((_, t)) = found {
             let limit = t + 2.0 * walk.eps;
             if t <= t_first + 2.0 * walk.eps {

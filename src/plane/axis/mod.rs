@@ -91,6 +91,34 @@ impl Primitive {
         }
     }
 
+    /// An element's footpoint parameters at its start and its end vertex
+    /// (in the parametrisation of [`crate::kernel::bisector::footpoint`]:
+    /// a segment's length from its start, an arc's angle around its centre,
+    /// the end unwrapped from the start by the signed sweep); `None` for a
+    /// vertex. An element side's footpoint never leaves this range.
+    pub fn element_params(&self, shape: &Shape2d) -> Option<(f64, f64)> {
+        let Primitive::Element { .. } = self else { return None };
+        Some(match shape.loops()[self.loop_index()].element(self.index()) {
+            Element::Segment(s) => (0.0, s.a.dist(s.b)),
+            Element::Arc(a) => {
+                let start = crate::kernel::direction::angle_of(a.a - a.center);
+                (start, start + a.sweep())
+            }
+        })
+    }
+
+    /// `u` moved into [`element_params`](Self::element_params) (an arc's
+    /// angle first taken within half a turn of the range's middle); a
+    /// vertex's parameter as it is.
+    pub fn clamp_param(&self, shape: &Shape2d, u: f64) -> f64 {
+        let Some((start, end)) = self.element_params(shape) else { return u };
+        let u = match shape.loops()[self.loop_index()].element(self.index()) {
+            Element::Segment(_) => u,
+            Element::Arc(_) => crate::kernel::construct::unwrap_near(u, 0.5 * (start + end)),
+        };
+        u.clamp(start.min(end), start.max(end))
+    }
+
     /// What a disk touching this primitive sees: a sided line, a circle with
     /// its kind of tangency, or a point.
     pub fn site(&self, shape: &Shape2d) -> Site {

@@ -100,10 +100,8 @@ fn element_params(shape: &Shape2d, axis: &MedialAxis2d, sides: &SideCycle) -> Ve
     let mut edges = axis.edges.clone();
     for e in &mut edges {
         for k in 0..2 {
-            if let Some(range) = element_range(shape, e.sites[k]) {
-                let (u0, u1) = e.params[k];
-                e.params[k] = (range.clamp(u0), range.clamp(u1));
-            }
+            let (p, (u0, u1)) = (e.sites[k], e.params[k]);
+            e.params[k] = (p.clamp_param(shape, u0), p.clamp_param(shape, u1));
         }
     }
     for h in 0..2 * axis.edges.len() {
@@ -114,44 +112,16 @@ fn element_params(shape: &Shape2d, axis: &MedialAxis2d, sides: &SideCycle) -> Ve
         }
         // Half-edge 2e + 1 runs from `from` to `to` on side 1, 2e the other
         // way on side 0: `.1` is where side 1 ends, `.0` where side 0 ends.
-        if let Some(range) = element_range(shape, p) {
+        if let Some((_, end)) = p.element_params(shape) {
             let slot = &mut edges[h / 2].params[h % 2];
-            *(if h % 2 == 1 { &mut slot.1 } else { &mut slot.0 }) = range.end;
+            *(if h % 2 == 1 { &mut slot.1 } else { &mut slot.0 }) = end;
         }
-        if let Some(range) = element_range(shape, q) {
+        if let Some((start, _)) = q.element_params(shape) {
             let slot = &mut edges[hn / 2].params[hn % 2];
-            *(if hn % 2 == 1 { &mut slot.0 } else { &mut slot.1 }) = range.start;
+            *(if hn % 2 == 1 { &mut slot.0 } else { &mut slot.1 }) = start;
         }
     }
     edges
-}
-
-/// The footpoint parameters of an element from its start to its end
-/// vertex, the end unwrapped from the start by the arc's sweep.
-#[derive(Debug, Clone, Copy)]
-struct ElementRange {
-    prim: OffsetPrim,
-    start: f64,
-    end: f64,
-}
-
-impl ElementRange {
-    /// `u` (an angle taken next to the range) moved into the range.
-    fn clamp(&self, u: f64) -> f64 {
-        let u = self.prim.unwrap(u, 0.5 * (self.start + self.end));
-        u.clamp(self.start.min(self.end), self.start.max(self.end))
-    }
-}
-
-/// The range of element primitive `p`; `None` for a vertex primitive.
-fn element_range(shape: &Shape2d, p: Primitive) -> Option<ElementRange> {
-    let Primitive::Element { .. } = p else { return None };
-    let lp = &shape.loops()[p.loop_index()];
-    let prim = OffsetPrim::new(shape, p);
-    let at = |i: usize| prim.param_of(lp.vertices()[i % lp.len()].p);
-    let start = at(p.index());
-    let end = if prim.sigma == 0.0 { at(p.index() + 1) } else { start + prim.sigma * prim.bound };
-    Some(ElementRange { prim, start, end })
 }
 
 /// Whether a piece of edge with end radii `r0`, `r1` (monotonic between)

@@ -190,11 +190,16 @@ fn straight_edge(
     sites: [Primitive; 2],
 ) -> LocalEdge {
     let (c0, c1) = (cuts[from.1], cuts[to.1]);
+    // The disks hug every element of the chain, so the direction from an
+    // arc's centre to theirs can be rounding (a leaf's disk is concentric
+    // with one of them) and point to the far side of the circle; the
+    // segment between the nodes is the geometry, the parameters only say
+    // which part of the element the sides touch, so they are kept on it.
     let params = |p: Primitive| {
         let site = p.site(shape);
         let u0 = footpoint_param(&site, c0.center, c0.radius);
-        let u1 = footpoint_param(&site, c1.center, c1.radius);
-        (u0, near(&site, u1, u0))
+        let u1 = near(&site, footpoint_param(&site, c1.center, c1.radius), u0);
+        (p.clamp_param(shape, u0), p.clamp_param(shape, u1))
     };
     LocalEdge { from: from.0, to: to.0, sites, params: sites.map(params), straight: true }
 }
