@@ -145,12 +145,10 @@ impl OffsetPrim {
         };
         x > margin && x < 1.0 - margin
     }
-}
 
-impl OffsetPrim {
     /// Whether `u` lies in the parameter range from `u0` to `u1` (angles
     /// taken next to the range) or outside it by at most `slack` of the
-    /// range, or of 1 where the range is empty.
+    /// the range (of 1 where the range is shorter than 1).
     pub fn within(&self, u: f64, u0: f64, u1: f64, slack: f64) -> bool {
         let u = self.unwrap(u, 0.5 * (u0 + u1));
         let (lo, hi) = (u0.min(u1), u0.max(u1));
