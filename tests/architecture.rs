@@ -109,6 +109,9 @@ fn allowed(top: &str) -> Option<&'static [&'static str]> {
         "kernel" => &["kernel", "io", "util"],
         "shape" => &["shape", "kernel", "io", "util"],
         "plane" => &["plane", "shape", "kernel", "io", "util"],
+        // Chapter 3 beside chapter 2, not on it: it shares the shapes, the
+        // ball and the kernel, never the Euclidean algorithms.
+        "polymetric" => &["polymetric", "shape", "kernel", "io", "util"],
         "cam" => &["cam", "plane", "shape", "kernel", "io", "util"],
         _ => return None,
     })

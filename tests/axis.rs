@@ -128,6 +128,39 @@ fn nearly_circular_curves() {
 }
 
 #[test]
+fn edges_name_elements_their_disks_touch_where_disks_hug_a_stretch() {
+    // A disk that hugs a stretch of nearly concentric arcs touches each of
+    // them within the tolerance; the stretch is one contact, and the edge
+    // names one element of it, whose footpoint on its circle can lie past
+    // its end (`AxisEdge::params`). The element itself, not only its
+    // circle, must touch the disks at both ends of the edge. (What that
+    // did to the offsets, issue 46, tests/offset.rs checks along arcs.)
+    for (n, seed, spread) in [(2_000, 1, 1e-3), (2_000, 2, 1e-3), (5_000, 4, 1e-4), (4_000, 3, 1e-2)] {
+        let s = shape(samples::fourier_curve(n, seed, spread));
+        let a = axis_of(&s);
+        let diag = s.bbox().diagonal();
+        let mut sides = 0;
+        for e in &a.edges {
+            for p in e.sites {
+                let medax::plane::Primitive::Element { .. } = p else { continue };
+                let el = s.loops()[p.loop_index()].element(p.index());
+                sides += 1;
+                for node in [&a.nodes[e.from], &a.nodes[e.to]] {
+                    let miss = (el.closest_point(node.point).0 - node.radius).abs();
+                    assert!(
+                        miss < 1e-8 * diag,
+                        "n {n} seed {seed}: {p:?} misses the disk at {:?} by {:.1e} of the diagonal",
+                        node.point,
+                        miss / diag
+                    );
+                }
+            }
+        }
+        assert!(sides > n, "n {n} seed {seed}: {sides} element sides");
+    }
+}
+
+#[test]
 fn the_slow_tier_families_at_small_sizes() {
     // Each family of tests/scale_sweep.rs at a few thousand elements, so
     // that a generator or axis change that breaks one shows up here first.

@@ -387,3 +387,68 @@ fn ball_describes_and_draws_a_unit_ball() {
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("vertex 2"));
 }
+
+#[test]
+fn axis_and_offsets_under_a_ball() {
+    let dir = scratch("ball_axis");
+    let shape = dir.join("l.json");
+    // An L: under the square its axis is straight, under the triangle its
+    // corners are pruned (pseudo-branchings).
+    std::fs::write(&shape, r#"{"loops": [[[0, 0, 0], [4, 0, 0], [4, 1, 0], [1, 1, 0], [1, 4, 0], [0, 4, 0]]]}"#)
+        .unwrap();
+    let (json, svg) = (dir.join("axis.json"), dir.join("axis.svg"));
+    let out = medax()
+        .arg("axis")
+        .arg(&shape)
+        .args(["--ball", "triangle", "--json"])
+        .arg(&json)
+        .arg("--svg")
+        .arg(&svg)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(stdout.contains("3-gon ball") && stdout.contains("pseudo-branch"), "{stdout}");
+    let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(doc["ball"]["vertices"].as_array().unwrap().len(), 3);
+    let edges = doc["edges"].as_array().unwrap();
+    assert!(!edges.is_empty());
+    for e in edges {
+        assert_eq!(e["kind"], "line");
+        assert!(e["jump"].is_boolean());
+        assert_eq!(e["samples"].as_array().unwrap().len(), 2);
+        for s in e["sites"].as_array().unwrap() {
+            assert!(["VE", "EV", "EE"].contains(&s["class"].as_str().unwrap()), "{s}");
+        }
+    }
+    let kinds: Vec<&str> = doc["nodes"].as_array().unwrap().iter().map(|n| n["kind"].as_str().unwrap()).collect();
+    assert!(kinds.contains(&"pseudo_branch"), "{kinds:?}");
+    assert!(std::fs::read_to_string(&svg).unwrap().contains("jump edges"));
+    let (oj, os) = (dir.join("off.json"), dir.join("off.svg"));
+    let out = medax()
+        .arg("offset")
+        .arg(&shape)
+        .args(["--ball", "square", "--distance", "0.25,0.45", "--json"])
+        .arg(&oj)
+        .arg("--svg")
+        .arg(&os)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&oj).unwrap()).unwrap();
+    // Under the square the tool is the square [−d, d]²: at 0.25 the L's
+    // arms become 3.5 × 0.5 each, overlapping in 0.5 × 0.5: area 3.25.
+    let area = doc["offsets"][0]["area"].as_f64().unwrap();
+    assert!((area - 3.25).abs() < 1e-12, "area {area}");
+    assert!(os.exists());
+    // Arcs, outer offsets and a bad ball are refused with a message.
+    let out = medax().arg("offset").arg(&shape).args(["--ball", "square", "--distance=-0.2"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let out = medax().arg("axis").arg(&shape).args(["--ball", r#"{"vertices": [[1, 0], [0, 1]]}"#]).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let arc = dir.join("arc.json");
+    std::fs::write(&arc, r#"{"loops": [[[0, 0, 0], [4, 0, 1], [4, 4, 0], [0, 4, 0]]]}"#).unwrap();
+    let out = medax().arg("axis").arg(&arc).args(["--ball", "square"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("is an arc"));
+}

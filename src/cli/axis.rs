@@ -2,7 +2,8 @@
 
 use super::{fail, per_shape, write_file, write_streamed, RunArgs, ShapeArgs};
 use medax::plane::{medial_axis, AxisOptions, AxisPicture, NodeKind};
-use medax::shape::Shape2d;
+use medax::polymetric::medial_axis_with_ball;
+use medax::shape::{Ball2, Shape2d};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -23,6 +24,11 @@ pub struct AxisArgs {
     /// Draw the maximal disks at branch points in the picture.
     #[arg(long)]
     pub disks: bool,
+    /// The unit ball of the metric (polygons only): square, diamond, triangle, ngon:K[:DEGREES],
+    /// ball JSON text, or a file of ball JSON ({"vertices": [[x, y], ...]}). Default: the
+    /// Euclidean disk.
+    #[arg(long)]
+    pub ball: Option<String>,
 }
 
 pub fn run(args: &AxisArgs) -> Result<(), ExitCode> {
@@ -30,11 +36,15 @@ pub fn run(args: &AxisArgs) -> Result<(), ExitCode> {
     let shapes = args.shape.load_each().map_err(|e| fail(&args.shape.shape, &e))?;
     let read = t.elapsed().as_secs_f64();
     let pool = args.run.pool()?;
+    let ball = args.ball.as_deref().map(super::ball::load_ball).transpose()?;
     for (k, shape) in &shapes {
         if let Some(k) = k {
             out!("shape {k}:");
         }
-        run_one(args, shape, *k, read, &pool)?;
+        match &ball {
+            Some(ball) => run_ball(args, shape, ball, *k, read)?,
+            None => run_one(args, shape, *k, read, &pool)?,
+        }
     }
     Ok(())
 }
@@ -76,6 +86,37 @@ fn run_one(
         let path = per_shape(path, k);
         let pic = AxisPicture { width_px: 900.0, tolerance: tol, disks: args.disks };
         write_file(&path, &axis.to_svg(shape, &pic))?;
+        out!("wrote {}", path.display());
+    }
+    Ok(())
+}
+
+/// The axis of one shape under a polygon ball (thesis chapter 3).
+fn run_ball(args: &AxisArgs, shape: &Shape2d, ball: &Ball2, k: Option<usize>, read: f64) -> Result<(), ExitCode> {
+    let t = Instant::now();
+    let axis = medial_axis_with_ball(shape, ball).map_err(|e| {
+        let which = k.map_or_else(String::new, |k| format!(" shape {k}"));
+        eprintln!("medax: {}{which}: {e}", args.shape.shape.display());
+        ExitCode::from(1)
+    })?;
+    let took = t.elapsed().as_secs_f64();
+    let [branch, pseudo, corner, joint, leaf] = axis.kind_counts();
+    out!(
+        "medial axis under a {}-gon ball: {} nodes ({branch} branch, {pseudo} pseudo-branch, {corner} corner, {joint} joint, {leaf} leaf), {} edges ({} jump)",
+        ball.len(),
+        axis.nodes.len(),
+        axis.edges.len(),
+        axis.jump_count()
+    );
+    out!("read in {read:.3} s, axis in {took:.3} s ({} elements)", shape.element_count());
+    if let Some(path) = &args.json {
+        let path = per_shape(path, k);
+        write_streamed(&path, |w| axis.write_json(shape, w))?;
+        out!("wrote {}", path.display());
+    }
+    if let Some(path) = &args.svg {
+        let path = per_shape(path, k);
+        write_file(&path, &axis.to_svg(shape, 900.0))?;
         out!("wrote {}", path.display());
     }
     Ok(())

@@ -19,20 +19,27 @@ pub struct BallArgs {
     pub svg: Option<PathBuf>,
 }
 
-pub fn run(args: &BallArgs) -> Result<(), ExitCode> {
-    let path = PathBuf::from(&args.ball);
+/// The ball `spec` names: a preset, ball JSON text, or a file holding
+/// ball JSON. Errors are printed; exit code 3 for an unreadable file, 1
+/// for a bad ball.
+pub fn load_ball(spec: &str) -> Result<Ball2, ExitCode> {
+    let path = PathBuf::from(spec);
     let text = if path.is_file() {
         std::fs::read_to_string(&path).map_err(|e| {
             eprintln!("medax: cannot read {}: {e}", path.display());
             ExitCode::from(3)
         })?
     } else {
-        args.ball.clone()
+        spec.to_string()
     };
-    let ball = Ball2::parse(&text).map_err(|e| {
-        eprintln!("medax: {}: {e}", args.ball);
+    Ball2::parse(&text).map_err(|e| {
+        eprintln!("medax: {spec}: {e}");
         ExitCode::from(1)
-    })?;
+    })
+}
+
+pub fn run(args: &BallArgs) -> Result<(), ExitCode> {
+    let ball = load_ball(&args.ball)?;
     let v = ball.vertices();
     let n = v.len();
     // The largest circle inside and the smallest around, centred at the

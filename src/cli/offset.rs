@@ -6,8 +6,11 @@ use medax::cam::{pocket, vcarve, CamError, Pocket, PocketOptions, PocketOrder, V
 use medax::plane::offsets_to_dxf;
 use medax::plane::offsets_to_svg;
 use medax::plane::write_offsets_json;
-use medax::plane::{medial_axis, AxisOptions, MedialAxis2d, OffsetLayer, OffsetOptions, Offsets};
-use medax::shape::Shape2d;
+use medax::plane::{
+    medial_axis, AxisOptions, MedialAxis2d, OffsetLayer, OffsetLoop, OffsetOptions, OffsetRegion, Offsets,
+};
+use medax::polymetric::{medial_axis_with_ball, BallOffsetLayer};
+use medax::shape::{Ball2, Shape2d, Vertex};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -41,6 +44,11 @@ pub struct OffsetArgs {
     /// Write a picture of the shape, its axis and the loops, rings or paths.
     #[arg(long)]
     pub svg: Option<PathBuf>,
+    /// The unit ball of the metric (polygons, --distance > 0 only): square, diamond, triangle,
+    /// ngon:K[:DEGREES], ball JSON text, or a file of ball JSON. The offset at d is then the
+    /// path of the centre of the tool d·BALL kept inside the shape. Default: the Euclidean disk.
+    #[arg(long)]
+    pub ball: Option<String>,
     #[command(flatten)]
     pub run: RunArgs,
 }
@@ -131,13 +139,75 @@ pub fn run(args: &OffsetArgs) -> Result<(), ExitCode> {
         eprintln!("medax offset: --outside-in orders pocket rings; use it with --pocket");
         return Err(ExitCode::from(2));
     }
+    let ball = args.ball.as_deref().map(super::ball::load_ball).transpose()?;
+    if ball.is_some() && args.distance.as_ref().is_none_or(|ds| ds.iter().any(|&d| d <= 0.0)) {
+        eprintln!(
+            "medax offset: under --ball only inner offsets are computed: give --distance with positive distances"
+        );
+        return Err(ExitCode::from(2));
+    }
     let shapes = args.shape.load_each().map_err(|e| fail(&args.shape.shape, &e))?;
     let pool = args.run.pool()?;
     for (k, shape) in &shapes {
         if let Some(k) = k {
             out!("shape {k}:");
         }
-        run_one(args, shape, *k, &pool)?;
+        match (&ball, &args.distance) {
+            (Some(ball), Some(ds)) => run_ball(args, shape, ball, ds, *k)?,
+            _ => run_one(args, shape, *k, &pool)?,
+        }
+    }
+    Ok(())
+}
+
+/// Inner offsets of one shape under a polygon ball, from its axis under
+/// that ball (thesis 3.2, Observation 13).
+fn run_ball(args: &OffsetArgs, shape: &Shape2d, ball: &Ball2, ds: &[f64], k: Option<usize>) -> Result<(), ExitCode> {
+    let which = k.map_or_else(String::new, |k| format!(" shape {k}"));
+    let failed = |e: &dyn std::fmt::Display| {
+        eprintln!("medax: {}{which}: {e}", args.shape.shape.display());
+        ExitCode::from(1)
+    };
+    let t = Instant::now();
+    let axis = medial_axis_with_ball(shape, ball).map_err(|e| failed(&e))?;
+    let layers: Vec<BallOffsetLayer> =
+        ds.iter().map(|&d| axis.offset(shape, d)).collect::<Result<_, _>>().map_err(|e| failed(&e))?;
+    out!("computed in {:.3} s ({} elements)", t.elapsed().as_secs_f64(), shape.element_count());
+    out!("offsets under a {}-gon ball: {} distance(s)", ball.len(), layers.len());
+    for l in &layers {
+        out!("  distance {}: {} loop(s), {} region(s), area {}", l.distance, l.loops.len(), l.regions.len(), l.area());
+    }
+    // As the Euclidean layers (straight elements), for the same writers.
+    let plain: Vec<OffsetLayer> = layers
+        .iter()
+        .map(|l| {
+            let loops = l
+                .loops
+                .iter()
+                .map(|lp| OffsetLoop {
+                    vertices: lp.points.iter().map(|&p| Vertex { p, bulge: 0.0 }).collect(),
+                    area: lp.area,
+                    region: lp.region,
+                })
+                .collect();
+            let regions = l.regions.iter().map(|r| OffsetRegion { outer: r.outer, holes: r.holes.clone() }).collect();
+            OffsetLayer::from_loops(l.distance, loops, regions)
+        })
+        .collect();
+    if let Some(path) = &args.json {
+        let path = per_shape(path, k);
+        write_streamed(&path, |w| write_offsets_json(&plain, w))?;
+        out!("wrote {}", path.display());
+    }
+    if let Some(path) = &args.dxf {
+        let path = per_shape(path, k);
+        write_file(&path, &offsets_to_dxf(&plain))?;
+        out!("wrote {}", path.display());
+    }
+    if let Some(path) = &args.svg {
+        let path = per_shape(path, k);
+        write_file(&path, &axis.offsets_svg(shape, &layers, 900.0))?;
+        out!("wrote {}", path.display());
     }
     Ok(())
 }

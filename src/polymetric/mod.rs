@@ -19,7 +19,9 @@
 //!   for input outside general position.
 //! * `trace.rs`: following a ray to its next node (`f64` search, exact
 //!   decision).
-//! * `build.rs`: the driver; `graph.rs`: the output graph.
+//! * `build.rs`: the driver; `graph.rs`: the output graph; `json.rs` and
+//!   `draw.rs`: the axis JSON and SVG; `offset.rs`: trimmed inner offsets
+//!   from the axis.
 //!
 //! ```
 //! use medax::polymetric::{medial_axis_with_ball, BallNodeKind};
@@ -37,9 +39,12 @@
 
 mod build;
 mod classes;
+mod draw;
 mod error;
 mod graph;
+mod json;
 mod node;
+mod offset;
 mod problem;
 mod trace;
 
@@ -47,3 +52,4 @@ pub use build::medial_axis_with_ball;
 pub use classes::{BallFeature, ClassKind, ContactClass, ShapeFeature};
 pub use error::BallAxisError;
 pub use graph::{BallAxis, BallEdge, BallNode, BallNodeKind};
+pub use offset::{BallOffsetLayer, BallOffsetLoop, BallOffsetRegion};

@@ -175,7 +175,12 @@ pub struct AxisEdge {
     /// Footpoint parameters on each primitive at `from` and at `to`, in the
     /// parametrisation of [`crate::kernel::bisector::footpoint`]: distance
     /// along a segment from its start, or an angle in radians around an
-    /// arc's centre or a reflex vertex.
+    /// arc's centre or a reflex vertex. Where the disks hug a stretch of
+    /// nearly concentric arcs (they touch all of it within the tolerance)
+    /// the stretch is one contact and an element's footpoint can lie on its
+    /// circle past the element's end, by up to the stretch's length; the
+    /// element itself still touches the disks within the tolerance there.
+    /// [`Primitive::clamp_param`] gives the point on the element.
     pub params: [(f64, f64); 2],
     /// The kind of conic the edge lies on.
     pub kind: ConicKind,

@@ -122,6 +122,14 @@ impl OffsetLayer {
         OffsetLayer { distance, loops: Vec::new(), regions: Vec::new(), anchors: Vec::new(), piece_region: Vec::new() }
     }
 
+    /// A layer of loops computed elsewhere (the offsets under a polygon
+    /// ball), so the writers and pictures serve it too. It carries no axis
+    /// anchors: the pocketing layer cannot nest it.
+    pub fn from_loops(distance: f64, loops: Vec<OffsetLoop>, regions: Vec<OffsetRegion>) -> OffsetLayer {
+        let anchors = vec![usize::MAX; regions.len()];
+        OffsetLayer { distance, loops, regions, anchors, piece_region: Vec::new() }
+    }
+
     /// Whether nothing is left at this distance.
     pub fn is_empty(&self) -> bool {
         self.loops.is_empty()
