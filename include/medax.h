@@ -310,6 +310,11 @@ typedef enum mx_node_kind {
    * Two edges meet and the pair of boundary primitives changes.
    */
   MX_NODE_JOINT = 3,
+  /**
+   * Under a polygon ball: two edges meet where a ball vertex sits on a
+   * shape vertex (thesis 3.1.3; where a pruned corner joins the axis).
+   */
+  MX_NODE_PSEUDO_BRANCH = 4,
 } mx_node_kind;
 
 /**
@@ -333,6 +338,24 @@ typedef enum mx_conic_kind {
    */
   MX_CONIC_HYPERBOLA = 3,
 } mx_conic_kind;
+
+/**
+ * Which features of ball and shape are in contact (thesis 3.1.2).
+ */
+typedef enum mx_contact_kind {
+  /**
+   * A ball vertex on the inside of a shape edge.
+   */
+  MX_CONTACT_VE = 0,
+  /**
+   * A ball edge on a (reflex) shape vertex.
+   */
+  MX_CONTACT_EV = 1,
+  /**
+   * A ball edge along a parallel shape edge (outside general position).
+   */
+  MX_CONTACT_EE = 2,
+} mx_contact_kind;
 
 /**
  * What kind of site an `mx_site` is.
@@ -534,6 +557,30 @@ typedef struct mx_axis_edge {
    */
   struct mx_axis_site sites[2];
 } mx_axis_edge;
+
+/**
+ * The contact classes on the two sides of an edge of an axis under a
+ * ball. The shape features are the edge's `sites` (`mx_axis_get_edge`).
+ */
+typedef struct mx_axis_contacts {
+  /**
+   * The kind of each side's class (`[0]` the left walking from `from`
+   * to `to`, as `mx_axis_edge.sites`).
+   */
+  enum mx_contact_kind kind[2];
+  /**
+   * The ball feature of each class: a vertex index for VE, an edge
+   * index (from vertex i to vertex i + 1) for EV and EE, counting the
+   * ball's vertices counter-clockwise (`mx_ball_vertices`).
+   */
+  size_t ball_feature[2];
+  /**
+   * 1 when the two classes neighbour on the ball (a jump edge,
+   * Observation 10: its balls are maximal* but not maximal inscribed),
+   * else 0.
+   */
+  int32_t jump;
+} mx_axis_contacts;
 
 /**
  * What to take out of a drawing. Initialise with
@@ -1537,6 +1584,61 @@ enum mx_status mx_ball_distance2(const struct mx_ball *ball,
  * `ball` NULL or a live handle; `out` NULL or writable.
  */
 enum mx_status mx_ball_is_symmetric(const struct mx_ball *ball, uint8_t *out);
+
+/**
+ * Computes the medial axis of `shape` under the unit ball `ball` (thesis
+ * 3.1–3.2: the centres of maximal* balls `c + r·B`) and writes a new
+ * handle to `*out`; `ball` NULL computes the Euclidean axis
+ * (`mx_axis_compute`). The shape must be a polygon (segments only;
+ * `MX_ERR_UNSUPPORTED` names the first arc's loop and element). Nodes
+ * and edges are read with `mx_axis_get_node` (kinds add
+ * `MX_NODE_PSEUDO_BRANCH`) and `mx_axis_get_edge` (every edge
+ * `MX_CONIC_LINE`, sites the shape features of its two contact
+ * classes); `mx_axis_edge_contacts` gives the classes and jump flag;
+ * `mx_axis_edge_sample` gives the two end nodes, r the ball radius.
+ * `options` may be NULL; its `seed` does not apply (the construction is
+ * deterministic), `threads` and `progress` do. `MX_ERR_NUMERICAL` with
+ * the position when the exact tracing meets a configuration it does not
+ * resolve; `*out` is then untouched.
+ *
+ * # Safety
+ * `shape` NULL or a live handle; `ball` NULL or a live handle; `options`
+ * NULL or valid; `out` NULL or writable.
+ */
+enum mx_status mx_axis_compute_with_ball(const struct mx_shape2d *shape,
+                                         const struct mx_ball *ball,
+                                         const struct mx_axis_options *options,
+                                         struct mx_axis **out);
+
+/**
+ * The contact classes and jump flag of edge `index` of an axis computed
+ * under a ball (`MX_ERR_INVALID_ARGUMENT` for a Euclidean axis,
+ * `MX_ERR_INDEX_OUT_OF_RANGE` unless below `mx_axis_edge_count`).
+ *
+ * # Safety
+ * `axis` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_axis_edge_contacts(const struct mx_axis *axis,
+                                     size_t index,
+                                     struct mx_axis_contacts *out);
+
+/**
+ * The inner offset at `distance` (> 0, model units) read off `axis`, as
+ * a new layer handle in `*out` (`mx_offset_layer_*`; free with
+ * `mx_offset_layer_free`). For a Euclidean axis it is the layer
+ * `mx_offsets_layer` gives. For an axis under a ball B it is the set of
+ * centres c whose ball c + distance·B fits inside the shape: the path of
+ * the reference point of a tool shaped distance·B (the thesis's trimmed
+ * offset under the mirrored ball −B, Observation 13), straight loops.
+ * `MX_ERR_INVALID_ARGUMENT` for a distance that is not finite and
+ * positive; `*out` is then untouched.
+ *
+ * # Safety
+ * `axis` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_axis_offset_layer(const struct mx_axis *axis,
+                                    double distance,
+                                    struct mx_offset_layer **out);
 
 /**
  * Fills `out` with the selection of everything (and its `struct_size`).

@@ -9,6 +9,7 @@ use super::shape2d::mx_shape2d;
 use super::status::mx_status;
 use crate::kernel::bisector::ConicKind;
 use crate::plane::{medial_axis, AxisEdge, AxisError, AxisOptions, MedialAxis2d, NodeKind, Primitive};
+use crate::polymetric::BallAxis;
 use crate::shape::Shape2d;
 use std::ffi::{c_int, c_void};
 use std::mem::size_of;
@@ -20,7 +21,24 @@ use std::mem::size_of;
 /// threads at once.
 pub struct mx_axis {
     pub(crate) shape: Shape2d,
+    /// The Euclidean axis (empty for an axis under a ball).
     pub(crate) axis: MedialAxis2d,
+    /// The axis under a polygon ball (`mx_axis_compute_with_ball`).
+    pub(crate) ball: Option<BallAxis>,
+}
+
+impl mx_axis {
+    /// The Euclidean axis, for the computations built on it alone
+    /// (`what` names the caller for the message).
+    pub(crate) fn euclidean(&self, what: &str) -> Result<&MedialAxis2d, FfiError> {
+        match self.ball {
+            None => Ok(&self.axis),
+            Some(_) => Err(FfiError::new(
+                mx_status::MX_ERR_INVALID_ARGUMENT,
+                format!("{what}: the axis was computed under a polygon ball; use mx_axis_offset_layer for its offsets"),
+            )),
+        }
+    }
 }
 
 impl Handle for mx_axis {
@@ -93,6 +111,9 @@ pub enum mx_node_kind {
     MX_NODE_LEAF = 2,
     /// Two edges meet and the pair of boundary primitives changes.
     MX_NODE_JOINT = 3,
+    /// Under a polygon ball: two edges meet where a ball vertex sits on a
+    /// shape vertex (thesis 3.1.3; where a pruned corner joins the axis).
+    MX_NODE_PSEUDO_BRANCH = 4,
 }
 
 /// The kind of conic an edge of the medial axis lies on.
@@ -196,7 +217,7 @@ pub unsafe extern "C" fn mx_axis_compute(
             let axis = run_with_progress("mx_axis_compute", "mx_axis_options", o.threads, o.progress, o.user, || {
                 medial_axis(&s.inner, &opts).map_err(axis_error)
             })?;
-            Ok(mx_axis { shape: s.inner.clone(), axis })
+            Ok(mx_axis { shape: s.inner.clone(), axis, ball: None })
         })
     }
 }
@@ -234,7 +255,7 @@ fn site(shape: &Shape2d, p: Primitive) -> mx_axis_site {
 #[no_mangle]
 pub unsafe extern "C" fn mx_axis_node_count(axis: *const mx_axis, out: *mut usize) -> mx_status {
     // SAFETY: forwarded contract.
-    unsafe { query(axis, out, |a| Ok(a.axis.nodes.len())) }
+    unsafe { query(axis, out, |a| Ok(a.ball.as_ref().map_or(a.axis.nodes.len(), |b| b.nodes.len()))) }
 }
 
 /// Number of edges.
@@ -244,7 +265,7 @@ pub unsafe extern "C" fn mx_axis_node_count(axis: *const mx_axis, out: *mut usiz
 #[no_mangle]
 pub unsafe extern "C" fn mx_axis_edge_count(axis: *const mx_axis, out: *mut usize) -> mx_status {
     // SAFETY: forwarded contract.
-    unsafe { query(axis, out, |a| Ok(a.axis.edges.len())) }
+    unsafe { query(axis, out, |a| Ok(a.ball.as_ref().map_or(a.axis.edges.len(), |b| b.edges.len()))) }
 }
 
 /// Node `index` (`MX_ERR_INDEX_OUT_OF_RANGE` unless below
@@ -257,6 +278,9 @@ pub unsafe extern "C" fn mx_axis_get_node(axis: *const mx_axis, index: usize, ou
     // SAFETY: forwarded contract.
     unsafe {
         query(axis, out, |a| {
+            if let Some(b) = &a.ball {
+                return super::ball_axis::node(b, index);
+            }
             let n = nth(&a.axis.nodes, index, "node")?;
             let kind = match n.kind {
                 NodeKind::Branch => mx_node_kind::MX_NODE_BRANCH,
@@ -279,6 +303,9 @@ pub unsafe extern "C" fn mx_axis_get_edge(axis: *const mx_axis, index: usize, ou
     // SAFETY: forwarded contract.
     unsafe {
         query(axis, out, |a| {
+            if let Some(b) = &a.ball {
+                return super::ball_axis::edge(&a.shape, b, index);
+            }
             let e = edge_of(a, index)?;
             let kind = match e.kind {
                 ConicKind::Line => mx_conic_kind::MX_CONIC_LINE,
@@ -324,7 +351,6 @@ pub unsafe extern "C" fn mx_axis_edge_sample(
         check_out(count, "count")?;
         // SAFETY: caller contract.
         let a = unsafe { arg(axis)? };
-        let e = edge_of(a, index)?;
         let min = MX_AXIS_MIN_RELATIVE_SAMPLE_TOLERANCE * a.shape.bbox().diagonal();
         if !(tolerance.is_finite() && tolerance >= min) {
             return Err(FfiError::new(
@@ -332,7 +358,12 @@ pub unsafe extern "C" fn mx_axis_edge_sample(
                 format!("tolerance = {tolerance}: use a finite length of at least {min} (1e-12 x the diagonal)"),
             ));
         }
-        let samples = e.sample(&a.shape, &a.axis.nodes, tolerance);
+        // Under a ball every edge is straight with an affine radius: its
+        // ends are the whole edge.
+        let samples = match &a.ball {
+            Some(b) => super::ball_axis::ends(b, index)?,
+            None => edge_of(a, index)?.sample(&a.shape, &a.axis.nodes, tolerance),
+        };
         let need = 3 * samples.len();
         if capacity != 0 {
             let xyr_of = samples.iter().flat_map(|d| [d.center.x, d.center.y, d.radius]);

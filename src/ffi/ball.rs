@@ -13,7 +13,7 @@ use std::ffi::c_char;
 /// A unit ball: a convex polygon holding the origin strictly inside,
 /// counter-clockwise. Immutable; may be shared between threads.
 pub struct mx_ball {
-    inner: Ball2,
+    pub(crate) inner: Ball2,
 }
 
 impl Handle for mx_ball {

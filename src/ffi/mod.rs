@@ -14,6 +14,7 @@
 
 mod axis;
 mod ball;
+mod ball_axis;
 mod boundary;
 mod drawing;
 mod drawing_report;
@@ -29,6 +30,7 @@ mod voronoi;
 
 pub use axis::*;
 pub use ball::*;
+pub use ball_axis::*;
 pub use drawing::*;
 pub use drawing_report::*;
 pub use handles::*;

@@ -293,7 +293,8 @@ pub unsafe extern "C" fn mx_offsets_from_axis(
     // SAFETY: caller contract.
     unsafe {
         compute(out, axis, options, |a, o| {
-            prepare("mx_offsets_from_axis", o, |opts| Offsets::from_axis(&a.shape, &a.axis)?.with_outer(&a.shape, opts))
+            let axis = a.euclidean("mx_offsets_from_axis")?;
+            prepare("mx_offsets_from_axis", o, |opts| Offsets::from_axis(&a.shape, axis)?.with_outer(&a.shape, opts))
         })
     }
 }

@@ -109,7 +109,7 @@ pub unsafe extern "C" fn mx_vcarve_compute(
     unsafe {
         compute(out, axis, options, |a, o| {
             let opts = VCarveOptions { angle_deg: o.angle_deg, max_depth: o.max_depth, tolerance: o.tolerance };
-            let v = vcarve(&a.shape, &a.axis, &opts).map_err(cam_error)?;
+            let v = vcarve(&a.shape, a.euclidean("mx_vcarve_compute")?, &opts).map_err(cam_error)?;
             Ok(mx_vcarve { paths: v.paths, flat: mx_offset_layer::new(v.flat) })
         })
     }

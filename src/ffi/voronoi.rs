@@ -313,7 +313,7 @@ pub unsafe extern "C" fn mx_voronoi_compute(
                 run_with_progress("mx_voronoi_compute", "mx_voronoi_options", o.threads, o.progress, o.user, || {
                     voronoi(&sites, &opts).map_err(voronoi_error)
                 })?;
-            let axis = mx_axis { shape: diagram.shape().clone(), axis: std::mem::take(&mut diagram.axis) };
+            let axis = mx_axis { shape: diagram.shape().clone(), axis: std::mem::take(&mut diagram.axis), ball: None };
             Ok(mx_voronoi { axis, diagram })
         })
     }
