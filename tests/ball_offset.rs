@@ -6,7 +6,7 @@
 //! exactly when their distance exceeds `d`.
 
 use medax::kernel::Point;
-use medax::polymetric::{medial_axis_with_ball, BallOffsetLayer};
+use medax::polymetric::{medial_axis_with_ball, outer_offset, BallOffsetLayer};
 use medax::shape::{samples, Ball2, Shape2d, ShapeOptions, Vertex};
 use rand::{Rng, SeedableRng};
 
@@ -188,4 +188,68 @@ fn rectilinear_combs_under_the_square() {
     }
     comb.push((0.0, 4.0));
     check_all(&shape_of(vec![comb]), &Ball2::square(), &[0.1, 0.3, 0.6, 0.95], 300);
+}
+
+/// Checks an outer layer: loop points at distance d outside the shape,
+/// and points round it in the grown region exactly when within d.
+fn check_outer(shape: &Shape2d, ball: &Ball2, layer: &BallOffsetLayer, probes: usize, seed: u64) {
+    let d = -layer.distance;
+    let edges = boundary(shape);
+    let diag = shape.bbox().diagonal();
+    for lp in &layer.loops {
+        let p = &lp.points;
+        for i in 0..p.len() {
+            for s in [0.0, 0.5] {
+                let c = p[i] + (p[(i + 1) % p.len()] - p[i]) * s;
+                let got = distance(ball, &edges, c);
+                assert!(!inside(&edges, c), "outer {d}: {c:?} inside the shape");
+                assert!((got - d).abs() < 1e-9 * diag, "outer {d}: {c:?} at distance {got}");
+            }
+        }
+    }
+    let region = edges_of(layer.loops.iter().map(|l| l.points.clone()));
+    let bb = shape.bbox();
+    let m = 3.0 * d;
+    let mut rng = rand::rngs::SmallRng::seed_from_u64(seed);
+    for _ in 0..probes {
+        let c = Point::new(rng.gen_range(bb.min.x - m..bb.max.x + m), rng.gen_range(bb.min.y - m..bb.max.y + m));
+        let r = distance(ball, &edges, c);
+        if (r - d).abs() < 1e-7 * diag {
+            continue;
+        }
+        let want = inside(&edges, c) || r < d;
+        assert_eq!(inside(&region, c), want, "outer {d}: {c:?} at distance {r} wrongly classed");
+    }
+}
+
+#[test]
+fn outer_offsets_grow_the_shape_under_the_ball() {
+    // A diamond tool keeps a diamond's corners: the diamond |x| + |y| ≤ 1
+    // grown by 0.5 is |x| + |y| ≤ 1.5, area 4.5.
+    let s = shape_of(vec![vec![(1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)]]);
+    let layer = outer_offset(&s, &Ball2::diamond(), 0.5).unwrap();
+    assert_eq!(layer.loops.len(), 1);
+    assert!((layer.area() - 4.5).abs() < 1e-9, "area {}", layer.area());
+    check_outer(&s, &Ball2::diamond(), &layer, 400, 1);
+    let mut plate = vec![vec![(0.0, 0.0), (10.0, 0.0), (10.0, 10.0), (0.0, 10.0)]];
+    for (x, y) in [(2.0, 2.0), (6.0, 2.5), (2.5, 6.0)] {
+        plate.push(vec![(x, y), (x + 0.4, y + 2.0), (x + 2.0, y + 1.7), (x + 1.6, y)]);
+    }
+    let plate = shape_of(plate);
+    for ball in [Ball2::triangle(), Ball2::regular(7, 0.1).unwrap()] {
+        for d in [0.1, 0.4, 3.0] {
+            let layer = outer_offset(&plate, &ball, d).unwrap();
+            check_outer(&plate, &ball, &layer, 300, 2);
+        }
+        // Small distances keep the holes (smaller), large ones fill them.
+        assert_eq!(outer_offset(&plate, &ball, 0.1).unwrap().regions[0].holes.len(), 3);
+        assert!(outer_offset(&plate, &ball, 3.0).unwrap().regions[0].holes.is_empty());
+    }
+    for seed in 0..3 {
+        let star = Shape2d::from_bulge_loops(samples::star_polygon(30, seed), &ShapeOptions::default()).unwrap();
+        for d in [0.02, 0.2] {
+            let layer = outer_offset(&star, &Ball2::regular(5, 0.2).unwrap(), d).unwrap();
+            check_outer(&star, &Ball2::regular(5, 0.2).unwrap(), &layer, 200, seed);
+        }
+    }
 }

@@ -441,8 +441,20 @@ fn axis_and_offsets_under_a_ball() {
     let area = doc["offsets"][0]["area"].as_f64().unwrap();
     assert!((area - 3.25).abs() < 1e-12, "area {area}");
     assert!(os.exists());
-    // Arcs, outer offsets and a bad ball are refused with a message.
-    let out = medax().arg("offset").arg(&shape).args(["--ball", "square", "--distance=-0.2"]).output().unwrap();
+    // Outer offsets: the L grown by a diamond tool.
+    let out = medax()
+        .arg("offset")
+        .arg(&shape)
+        .args(["--ball", "diamond", "--distance=-0.2", "--json"])
+        .arg(&oj)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&oj).unwrap()).unwrap();
+    assert_eq!(doc["offsets"][0]["distance"].as_f64(), Some(-0.2));
+    assert!(doc["offsets"][0]["area"].as_f64().unwrap() > 7.0);
+    // Pockets, a bad ball and arcs are refused with a message.
+    let out = medax().arg("offset").arg(&shape).args(["--ball", "square", "--pocket", "0.1,0.1"]).output().unwrap();
     assert_eq!(out.status.code(), Some(2));
     let out = medax().arg("axis").arg(&shape).args(["--ball", r#"{"vertices": [[1, 0], [0, 1]]}"#]).output().unwrap();
     assert_eq!(out.status.code(), Some(1));

@@ -9,7 +9,7 @@ use medax::plane::write_offsets_json;
 use medax::plane::{
     medial_axis, AxisOptions, MedialAxis2d, OffsetLayer, OffsetLoop, OffsetOptions, OffsetRegion, Offsets,
 };
-use medax::polymetric::{medial_axis_with_ball, BallOffsetLayer};
+use medax::polymetric::{medial_axis_with_ball, outer_offset, BallOffsetLayer};
 use medax::shape::{Ball2, Shape2d, Vertex};
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -44,9 +44,10 @@ pub struct OffsetArgs {
     /// Write a picture of the shape, its axis and the loops, rings or paths.
     #[arg(long)]
     pub svg: Option<PathBuf>,
-    /// The unit ball of the metric (polygons, --distance > 0 only): square, diamond, triangle,
-    /// ngon:K[:DEGREES], ball JSON text, or a file of ball JSON. The offset at d is then the
-    /// path of the centre of the tool d·BALL kept inside the shape. Default: the Euclidean disk.
+    /// The unit ball of the metric (polygons, --distance only): square, diamond, triangle,
+    /// ngon:K[:DEGREES], ball JSON text, or a file of ball JSON. The offset at d > 0 is then the
+    /// path of the centre of the tool d·BALL kept inside the shape, at d < 0 kept outside it.
+    /// Default: the Euclidean disk.
     #[arg(long)]
     pub ball: Option<String>,
     #[command(flatten)]
@@ -140,9 +141,9 @@ pub fn run(args: &OffsetArgs) -> Result<(), ExitCode> {
         return Err(ExitCode::from(2));
     }
     let ball = args.ball.as_deref().map(super::ball::load_ball).transpose()?;
-    if ball.is_some() && args.distance.as_ref().is_none_or(|ds| ds.iter().any(|&d| d <= 0.0)) {
+    if ball.is_some() && args.distance.as_ref().is_none_or(|ds| ds.contains(&0.0)) {
         eprintln!(
-            "medax offset: under --ball only inner offsets are computed: give --distance with positive distances"
+            "medax offset: under --ball give --distance with non-zero distances (pockets and V-carve are Euclidean)"
         );
         return Err(ExitCode::from(2));
     }
@@ -170,8 +171,12 @@ fn run_ball(args: &OffsetArgs, shape: &Shape2d, ball: &Ball2, ds: &[f64], k: Opt
     };
     let t = Instant::now();
     let axis = medial_axis_with_ball(shape, ball).map_err(|e| failed(&e))?;
-    let layers: Vec<BallOffsetLayer> =
-        ds.iter().map(|&d| axis.offset(shape, d)).collect::<Result<_, _>>().map_err(|e| failed(&e))?;
+    // Negative distances: the shape grown, from the complement's axis.
+    let layers: Vec<BallOffsetLayer> = ds
+        .iter()
+        .map(|&d| if d > 0.0 { axis.offset(shape, d) } else { outer_offset(shape, ball, -d) })
+        .collect::<Result<_, _>>()
+        .map_err(|e| failed(&e))?;
     out!("computed in {:.3} s ({} elements)", t.elapsed().as_secs_f64(), shape.element_count());
     out!("offsets under a {}-gon ball: {} distance(s)", ball.len(), layers.len());
     for l in &layers {

@@ -21,7 +21,7 @@
 //!   decision).
 //! * `build.rs`: the driver; `graph.rs`: the output graph; `json.rs` and
 //!   `draw.rs`: the axis JSON and SVG; `offset.rs`: trimmed inner offsets
-//!   from the axis.
+//!   from the axis; `outer.rs`: outer offsets from the complement's axis.
 //!
 //! ```
 //! use medax::polymetric::{medial_axis_with_ball, BallNodeKind};
@@ -45,6 +45,7 @@ mod graph;
 mod json;
 mod node;
 mod offset;
+mod outer;
 mod problem;
 mod trace;
 
@@ -53,3 +54,4 @@ pub use classes::{BallFeature, ClassKind, ContactClass, ShapeFeature};
 pub use error::BallAxisError;
 pub use graph::{BallAxis, BallEdge, BallNode, BallNodeKind};
 pub use offset::{BallOffsetLayer, BallOffsetLoop, BallOffsetRegion};
+pub use outer::outer_offset;

@@ -47,7 +47,7 @@ pub struct BallOffsetRegion {
 /// The inner offset at one distance under a polygon ball.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BallOffsetLayer {
-    /// The distance, model units (> 0: inwards).
+    /// The distance, model units: positive inwards, negative outwards.
     pub distance: f64,
     /// Every loop of the offset boundary.
     pub loops: Vec<BallOffsetLoop>,
@@ -327,17 +327,19 @@ impl BallAxis {
             }
             rings.push(ring);
         }
-        Ok(layer(d, rings, shape.tolerance()))
+        // Walked with the boundary on their left: turned, outer loops run
+        // counter-clockwise.
+        let rings = rings.into_iter().map(|r| r.into_iter().rev().collect()).collect();
+        Ok(layer_of(d, rings, shape.tolerance()))
     }
 }
 
-/// The rings (walked with the boundary on their left) as loops: repeated
-/// points dropped, turned so outer loops run counter-clockwise, holes
-/// given to the smallest outer loop round them.
-fn layer(d: f64, rings: Vec<Vec<Point>>, tol: f64) -> BallOffsetLayer {
+/// The rings (outer loops counter-clockwise, holes clockwise) as a layer:
+/// repeated points dropped, holes given to the smallest outer loop round
+/// them.
+pub(super) fn layer_of(d: f64, rings: Vec<Vec<Point>>, tol: f64) -> BallOffsetLayer {
     let mut loops: Vec<BallOffsetLoop> = Vec::new();
-    for mut ring in rings {
-        ring.reverse();
+    for ring in rings {
         let mut points: Vec<Point> = Vec::with_capacity(ring.len());
         for p in ring {
             if points.last().is_none_or(|q: &Point| q.dist(p) > tol) {
