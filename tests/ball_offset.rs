@@ -253,3 +253,18 @@ fn outer_offsets_grow_the_shape_under_the_ball() {
         }
     }
 }
+
+#[test]
+fn a_ball_vertex_resting_on_a_shape_vertex_along_a_jump_edge() {
+    // Found by fuzzing (grid / 4): along a jump edge the triangle's vertex
+    // stays on the shape vertex where edges 6 and 0 meet, so edge 6
+    // touches the balls there too, in a face of no width along the edge;
+    // it was once placed in the sector on the far side and bent the ring
+    // through the intersection of unrelated level lines.
+    let g = |x: i32, y: i32| (f64::from(x) / 4.0, f64::from(y) / 4.0);
+    let poly = [(65, -1), (38, 75), (4, 58), (-1, 38), (-1, -1), (37, -1), (10, -59)].map(|(x, y)| g(x, y));
+    let s = shape_of(vec![poly.to_vec()]);
+    let [a, b, c] = [g(-59, -1), g(58, -1), g(-1, 99)].map(|(x, y)| Point::new(x, y));
+    let ball = Ball2::new(&[a, b, c]).unwrap();
+    check_all(&s, &ball, &[0.1, 0.3, 0.5, 0.7, 0.95], 400);
+}

@@ -2,7 +2,9 @@
 //! vertices in line, edges parallel to ball edges: far from general
 //! position) under random polygon balls: the axis under the ball or a
 //! typed error, never a panic; an axis returned is sound (every node's
-//! radius is the brute-force gauge distance to the boundary).
+//! radius is the brute-force gauge distance to the boundary); its offsets
+//! at two distances exist and lie at their distance, and its JSON and SVG
+//! are written.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
@@ -41,4 +43,16 @@ fuzz_target!(|input: (Vec<(i8, i8)>, Vec<(i8, i8)>)| {
         let d = edges.iter().map(|&(a, b)| ball.distance_to_segment(n.at, a, b)).fold(f64::INFINITY, f64::min);
         assert!((d - n.r).abs() <= tol, "node {:?}: radius {} distance {d}", n.at, n.r);
     }
+    let rmax = axis.nodes.iter().map(|n| n.r).fold(0.0, f64::max);
+    for f in [0.3, 0.7] {
+        let d = f * rmax;
+        let layer = axis.offset(&shape, d).expect("offsets of an axis that was computed");
+        for lp in &layer.loops {
+            for &p in &lp.points {
+                let got = edges.iter().map(|&(a, b)| ball.distance_to_segment(p, a, b)).fold(f64::INFINITY, f64::min);
+                assert!((got - d).abs() <= 4.0 * tol, "offset at {d}: {p:?} at {got}");
+            }
+        }
+    }
+    let _ = (axis.to_json(&shape), axis.to_svg(&shape, 300.0));
 });

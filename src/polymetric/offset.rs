@@ -216,13 +216,25 @@ impl BallAxis {
         // Classes on the sides of the node's edges are met on those sides:
         // their contact can lie along an edge (a jump edge runs along the
         // spoke to a ball vertex), where the angle test is rounding.
+        // So can a class no edge here carries: where a ball vertex sits on
+        // a shape vertex all along a jump edge, the other edge at that
+        // vertex touches the ball there too, a face of no width along the
+        // edge; the offset meets it at the edge's other end.
         let carried: Vec<ContactClass> =
             map.around[v].iter().flat_map(|&o| [*map.class(o), *map.class(o ^ 1)]).collect();
+        let along_an_edge = |w: Point| {
+            map.around[v].iter().any(|&o| {
+                let u = map.direction(o);
+                u.dot(w) > 0.0 && u.cross(w).abs() <= 1e-9 * u.norm() * w.norm()
+            })
+        };
         let mut inside: Vec<(f64, ContactClass)> = self.nodes[v]
             .contacts
             .iter()
             .filter(|c| !carried.contains(c))
-            .map(|c| (clockwise(back, self.contact_point(shape, v, c) - at), *c))
+            .map(|c| (self.contact_point(shape, v, c) - at, *c))
+            .filter(|&(w, _)| !along_an_edge(w))
+            .map(|(w, c)| (clockwise(back, w), c))
             .filter(|&(angle, _)| angle < span)
             .collect();
         inside.sort_by(|x, y| x.0.total_cmp(&y.0));
