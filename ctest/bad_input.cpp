@@ -294,7 +294,7 @@ void test_null_arguments() {
     EXPECT_ERROR(mx_shape2d_tolerance(s, nullptr), Err(null_arg).says("out"));
     EXPECT_ERROR(mx_shape2d_write_svg(nullptr, "never-written.svg"), Err(null_arg).says("shape"));
     EXPECT_ERROR(mx_shape2d_write_svg(s, nullptr), Err(null_arg).says("path"));
-    EXPECT_ERROR(mx_shape_options_default(nullptr), Err(null_arg).says("out"));
+    EXPECT_ERROR(mx_shape_options_init(nullptr, sizeof(mx_shape_options)), Err(null_arg).says("out"));
     MT_CHECK(!fs::exists("never-written.svg"));
     // Out-params of failed queries are untouched.
     MT_CHECK_EQ(n, size_t{777});
@@ -341,7 +341,7 @@ void test_invalid_arguments() {
     EXPECT_ERROR(from_file("/tmp/medax-\xff\xfe.json", MX_FORMAT_AUTO), invalid);
 
     mx_shape_options o;
-    MT_CHECK_OK(mx_shape_options_default(&o));
+    MT_CHECK_OK(mx_shape_options_init(&o, sizeof o));
     mx_shape_options small = o;
     small.struct_size = offsetof(mx_shape_options, threads) - 1;  // short of 0.1.0
     EXPECT_ERROR(bulges({kUnitSquare}, &small), Err(invalid).says("struct_size"));
@@ -445,7 +445,7 @@ void test_degenerate() {
     // Zero area relative to the tolerance: an equilateral triangle of side 1
     // (area 0.43) with tolerance 0.2 (area <= tolerance x perimeter = 0.6).
     mx_shape_options o;
-    MT_CHECK_OK(mx_shape_options_default(&o));
+    MT_CHECK_OK(mx_shape_options_init(&o, sizeof o));
     o.tolerance = 0.2;
     EXPECT_ERROR(bulges({{0, 0, 0, 1, 0, 0, 0.5, std::sqrt(0.75), 0}}, &o), Err(deg).at(0, 0).pos(0, 0).says("area"));
     // The same for a hole: a sliver triangle inside a 10 x 10 square.

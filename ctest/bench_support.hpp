@@ -66,14 +66,14 @@ inline mx_status run_medax(const std::vector<double>& xyb, const std::vector<siz
     // The shape is checked on the same number of threads as the axis:
     // "one thread" is the whole call on one thread.
     mx_shape_options so;
-    mx_shape_options_default(&so);
+    mx_shape_options_init(&so, sizeof so);
     so.threads = threads;
     mx_shape2d* shape = nullptr;
     mx_status st = mx_shape2d_from_bulges(xyb.data(), xyb.size(), loop_lengths.data(), loop_lengths.size(), &so,
                                           &shape);
     if (st != MX_OK) return st;
     mx_axis_options o;
-    mx_axis_options_default(&o);
+    mx_axis_options_init(&o, sizeof o);
     o.threads = threads;
     mx_axis* axis = nullptr;
     st = mx_axis_compute(shape, &o, &axis);
@@ -104,7 +104,7 @@ inline mx_status run_medax_voronoi(const VoronoiInput& in, size_t threads,
     sites.boundary_xyb = in.boundary_xyb.empty() ? nullptr : in.boundary_xyb.data();
     sites.boundary_length = in.boundary_xyb.size() / 3;
     mx_voronoi_options o;
-    mx_voronoi_options_default(&o);
+    mx_voronoi_options_init(&o, sizeof o);
     o.threads = threads;
     mx_voronoi* vd = nullptr;
     const mx_status st = mx_voronoi_compute(&sites, &o, &vd);

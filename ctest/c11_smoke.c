@@ -58,7 +58,7 @@ int main(void) {
              MEDAX_VERSION_PATCH);
     CHECK(strcmp(version, expected_version) == 0);
 
-    CHECK_OK(mx_shape_options_default(&options));
+    CHECK_OK(mx_shape_options_init(&options, sizeof options));
     CHECK(options.struct_size == sizeof options);
     CHECK_OK(mx_shape2d_from_bulges(xyb, sizeof xyb / sizeof xyb[0], loop_lengths, 2, &options, &shape));
     if (shape == NULL) {

@@ -148,7 +148,7 @@ void test_stars(size_t count) {
         auto s = make({p});
         if (!s) continue;
         mx_axis_options o;
-        mx_axis_options_default(&o);
+        mx_axis_options_init(&o, sizeof o);
         o.threads = i % 3;  // 0 (shared pool), 1, 2
         mx_axis* raw = nullptr;
         const mx_status st = mx_axis_compute(s.get(), &o, &raw);
@@ -177,7 +177,7 @@ void test_options_and_errors() {
     auto s = make({rect});
     if (!s) return;
     mx_axis_options o;
-    MT_CHECK_OK(mx_axis_options_default(&o));
+    MT_CHECK_OK(mx_axis_options_init(&o, sizeof o));
     MT_CHECK_EQ(o.struct_size, sizeof(mx_axis_options));
     MT_CHECK_EQ(o.threads, size_t{0});
     Progress seen;

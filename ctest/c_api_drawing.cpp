@@ -122,7 +122,7 @@ void one_layer_and_no_profile() {
     const std::string path = write("layers.dxf", drawing());
     const char* layers[] = {"CENTER"};
     mx_drawing_select select{};
-    MT_CHECK_OK(mx_drawing_select_default(&select));
+    MT_CHECK_OK(mx_drawing_select_init(&select, sizeof select));
     select.layers = layers;
     select.layer_count = 1;
     mx_drawing* d = nullptr;
@@ -140,13 +140,13 @@ void one_layer_and_no_profile() {
     MT_CHECK_STATUS(mx_drawing_from_file(nullptr, MX_FORMAT_AUTO, nullptr, nullptr, &untouched),
                     MX_ERR_NULL_ARGUMENT);
     mx_drawing_select missing{};
-    MT_CHECK_OK(mx_drawing_select_default(&missing));
+    MT_CHECK_OK(mx_drawing_select_init(&missing, sizeof missing));
     missing.layer_count = 2;
     MT_CHECK_STATUS(mx_drawing_from_file(path.c_str(), MX_FORMAT_AUTO, nullptr, &missing, &untouched),
                     MX_ERR_NULL_ARGUMENT);
     const int16_t no_colour[] = {0};
     mx_drawing_select bad_colour{};
-    MT_CHECK_OK(mx_drawing_select_default(&bad_colour));
+    MT_CHECK_OK(mx_drawing_select_init(&bad_colour, sizeof bad_colour));
     bad_colour.colours = no_colour;
     bad_colour.colour_count = 1;
     MT_CHECK_STATUS(mx_drawing_from_file(path.c_str(), MX_FORMAT_AUTO, nullptr, &bad_colour, &untouched),
@@ -201,7 +201,7 @@ void memory_colours_and_handles() {
     // Green only: the square on layer GREEN, by layer.
     const int16_t green[] = {3};
     mx_drawing_select select{};
-    MT_CHECK_OK(mx_drawing_select_default(&select));
+    MT_CHECK_OK(mx_drawing_select_init(&select, sizeof select));
     select.colours = green;
     select.colour_count = 1;
     MT_CHECK_OK(mx_drawing_from_memory(reinterpret_cast<const uint8_t*>(text.data()), text.size(), MX_FORMAT_DXF,

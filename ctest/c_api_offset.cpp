@@ -211,7 +211,7 @@ void check_sides(const Scene& s, std::vector<std::pair<double, double>> distance
 
 void check_pocket(const Scene& s, const mx_offsets* offsets, double r, double step, uint32_t order) {
     mx_pocket_options o{};
-    MT_CHECK_OK(mx_pocket_options_default(&o));
+    MT_CHECK_OK(mx_pocket_options_init(&o, sizeof o));
     o.tool_radius = r;
     o.stepover = step;
     o.order = order;
@@ -261,7 +261,7 @@ void check_pocket(const Scene& s, const mx_offsets* offsets, double r, double st
 
 void check_vcarve(const mx_axis* axis, const Scene& s, double angle, double max_depth) {
     mx_vcarve_options o{};
-    MT_CHECK_OK(mx_vcarve_options_default(&o));
+    MT_CHECK_OK(mx_vcarve_options_init(&o, sizeof o));
     o.angle_deg = angle;
     o.max_depth = max_depth;
     // Paths are sampled to this chordal tolerance; where a path is cut at
@@ -305,7 +305,7 @@ void scene(std::mt19937_64& rng) {
     mx_axis* axis = nullptr;
     if (!MT_CHECK_OK(mx_axis_compute(shape.get(), nullptr, &axis))) return;
     mx_offset_options o{};
-    MT_CHECK_OK(mx_offset_options_default(&o));
+    MT_CHECK_OK(mx_offset_options_init(&o, sizeof o));
     o.outer_reach = 1.0;
     mx_offsets* offsets = nullptr;
     if (MT_CHECK_OK(mx_offsets_from_axis(axis, &o, &offsets))) {
@@ -340,7 +340,7 @@ void errors() {
     mx_offsets* const no_offsets = reinterpret_cast<mx_offsets*>(0x5EE7);
     mx_offsets* offsets = no_offsets;
     mx_offset_options o{};
-    MT_CHECK_OK(mx_offset_options_default(&o));
+    MT_CHECK_OK(mx_offset_options_init(&o, sizeof o));
     o.outer_reach = -1.0;
     MT_CHECK_STATUS(mx_offsets_compute(shape.get(), &o, &offsets), MX_ERR_INVALID_ARGUMENT);
     MT_CHECK_STATUS(mx_offsets_compute(nullptr, nullptr, &offsets), MX_ERR_NULL_ARGUMENT);
@@ -354,14 +354,14 @@ void errors() {
     mx_pocket* const no_pocket = reinterpret_cast<mx_pocket*>(0x5EE7);
     mx_pocket* p = no_pocket;
     mx_pocket_options po{};
-    MT_CHECK_OK(mx_pocket_options_default(&po));
+    MT_CHECK_OK(mx_pocket_options_init(&po, sizeof po));
     MT_CHECK_STATUS(mx_pocket_compute(offsets, &po, &p), MX_ERR_INVALID_ARGUMENT);
     MT_CHECK(mt::last_message().find("tool_radius") != std::string::npos);
     MT_CHECK(p == no_pocket);
     mx_vcarve* const no_vcarve = reinterpret_cast<mx_vcarve*>(0x5EE7);
     mx_vcarve* v = no_vcarve;
     mx_vcarve_options vo{};
-    MT_CHECK_OK(mx_vcarve_options_default(&vo));
+    MT_CHECK_OK(mx_vcarve_options_init(&vo, sizeof vo));
     vo.angle_deg = 200.0;
     mx_axis* axis = nullptr;
     MT_CHECK_OK(mx_axis_compute(shape.get(), nullptr, &axis));

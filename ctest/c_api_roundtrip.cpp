@@ -180,7 +180,7 @@ void test_options() {
     mt::begin_case("options");
     mx_shape_options o;
     std::memset(&o, 0xAB, sizeof o);
-    MT_CHECK_OK(mx_shape_options_default(&o));
+    MT_CHECK_OK(mx_shape_options_init(&o, sizeof o));
     MT_CHECK_EQ(o.struct_size, sizeof(mx_shape_options));
     MT_CHECK_EQ(o.tolerance, 0.0);
     MT_CHECK_EQ(o.relative_tolerance, 1e-9);

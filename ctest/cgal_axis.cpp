@@ -383,7 +383,7 @@ void check_polygon(const Loops& shape, const std::string& name, Tally& tally, bo
     const size_t n = shape.size();
     const double diag = shape.diagonal(), eps = 1e-9 * diag;
     mx_shape_options so;
-    mx_shape_options_default(&so);
+    mx_shape_options_init(&so, sizeof so);
     const double touch = so.relative_tolerance * diag;
     mx_shape2d* raw_shape = nullptr;
     // A failure here is a failed check (the generator promises valid shapes).

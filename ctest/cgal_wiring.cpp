@@ -214,7 +214,7 @@ Outcome run_medax(const Case& c) {
         lens.push_back(p.size());
     }
     mx_shape_options opts;
-    mx_shape_options_default(&opts);
+    mx_shape_options_init(&opts, sizeof opts);
     Outcome o;
     o.tolerance = opts.relative_tolerance * std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin());
     o.angle_tolerance = opts.angle_tolerance;

@@ -458,8 +458,8 @@ typedef struct mx_voronoi mx_voronoi;
 typedef int (*mx_progress_fn)(double fraction, void *user);
 
 /**
- * Options for `mx_axis_compute`. Initialise with `mx_axis_options_default`
- * (which sets `struct_size`), then change fields.
+ * Options for `mx_axis_compute`. Initialise with
+ * `mx_axis_options_init(&o, sizeof o)` (which sets `struct_size`), then change fields.
  */
 typedef struct mx_axis_options {
   /**
@@ -584,7 +584,7 @@ typedef struct mx_axis_contacts {
 
 /**
  * What to take out of a drawing. Initialise with
- * `mx_drawing_select_default` (which sets `struct_size` and selects
+ * `mx_drawing_select_init(&o, sizeof o)` (which sets `struct_size` and selects
  * everything), then change fields.
  */
 typedef struct mx_drawing_select {
@@ -621,8 +621,8 @@ typedef struct mx_drawing_select {
 } mx_drawing_select;
 
 /**
- * Tolerances for building shapes. Initialise with `mx_shape_options_default`
- * (which sets `struct_size`), then change fields. Lengths in model units.
+ * Tolerances for building shapes. Initialise with
+ * `mx_shape_options_init(&o, sizeof o)` (which sets `struct_size`), then change fields. Lengths in model units.
  */
 typedef struct mx_shape_options {
   /**
@@ -794,7 +794,7 @@ typedef struct mx_error_info {
 
 /**
  * Options for `mx_offsets_compute` and `mx_offsets_from_axis`.
- * Initialise with `mx_offset_options_default` (which sets `struct_size`).
+ * Initialise with `mx_offset_options_init(&o, sizeof o)` (which sets `struct_size`).
  */
 typedef struct mx_offset_options {
   /**
@@ -928,7 +928,7 @@ typedef struct mx_offset_region {
 
 /**
  * Options for `mx_pocket_compute`. Initialise with
- * `mx_pocket_options_default` (which sets `struct_size`), then set
+ * `mx_pocket_options_init(&o, sizeof o)` (which sets `struct_size`), then set
  * `tool_radius` and `stepover`: their defaults (0) are rejected.
  */
 typedef struct mx_pocket_options {
@@ -1115,7 +1115,7 @@ typedef struct mx_bbox {
 
 /**
  * Options for `mx_vcarve_compute`. Initialise with
- * `mx_vcarve_options_default` (which sets `struct_size`).
+ * `mx_vcarve_options_init(&o, sizeof o)` (which sets `struct_size`).
  */
 typedef struct mx_vcarve_options {
   /**
@@ -1173,7 +1173,7 @@ typedef struct mx_vcarve_path {
 
 /**
  * Options for `mx_voronoi_compute`. Initialise with
- * `mx_voronoi_options_default` (which sets `struct_size`).
+ * `mx_voronoi_options_init(&o, sizeof o)` (which sets `struct_size`).
  */
 typedef struct mx_voronoi_options {
   /**
@@ -1368,12 +1368,21 @@ extern "C" {
 #endif // __cplusplus
 
 /**
- * Fills `out` with the default options (and its `struct_size`).
+ * Fills the caller's `mx_axis_options` with the defaults: `size` is its
+ * `sizeof` as the caller was compiled; the first `min(size, this
+ * release's size)` bytes are written and `struct_size` set to that, so an
+ * older caller's struct is never overrun. `MX_ERR_INVALID_ARGUMENT` for a
+ * size below the first release's.
+ *
+ * ```c
+ * mx_axis_options o;
+ * mx_axis_options_init(&o, sizeof o);
+ * ```
  *
  * # Safety
- * `out` must be NULL or point to a writable `mx_axis_options`.
+ * `out` must be NULL or point to `size` writable bytes.
  */
-enum mx_status mx_axis_options_default(struct mx_axis_options *out);
+enum mx_status mx_axis_options_init(struct mx_axis_options *out, size_t size);
 
 /**
  * Computes the medial axis of `shape` (thesis Algorithm 2) and writes a new
@@ -1641,12 +1650,21 @@ enum mx_status mx_axis_offset_layer(const struct mx_axis *axis,
                                     struct mx_offset_layer **out);
 
 /**
- * Fills `out` with the selection of everything (and its `struct_size`).
+ * Fills the caller's `mx_drawing_select` with the defaults: `size` is its
+ * `sizeof` as the caller was compiled; the first `min(size, this
+ * release's size)` bytes are written and `struct_size` set to that, so an
+ * older caller's struct is never overrun. `MX_ERR_INVALID_ARGUMENT` for a
+ * size below the first release's.
+ *
+ * ```c
+ * mx_drawing_select o;
+ * mx_drawing_select_init(&o, sizeof o);
+ * ```
  *
  * # Safety
- * `out` must be NULL or point to a writable `mx_drawing_select`.
+ * `out` must be NULL or point to `size` writable bytes.
  */
-enum mx_status mx_drawing_select_default(struct mx_drawing_select *out);
+enum mx_status mx_drawing_select_init(struct mx_drawing_select *out, size_t size);
 
 /**
  * Reads a drawing file (DXF or SVG through profile extraction; medax shape
@@ -1795,12 +1813,21 @@ enum mx_status mx_last_error_info(struct mx_error_info *out);
 void mx_clear_last_error(void);
 
 /**
- * Fills `out` with the default options (and its `struct_size`).
+ * Fills the caller's `mx_offset_options` with the defaults: `size` is its
+ * `sizeof` as the caller was compiled; the first `min(size, this
+ * release's size)` bytes are written and `struct_size` set to that, so an
+ * older caller's struct is never overrun. `MX_ERR_INVALID_ARGUMENT` for a
+ * size below the first release's.
+ *
+ * ```c
+ * mx_offset_options o;
+ * mx_offset_options_init(&o, sizeof o);
+ * ```
  *
  * # Safety
- * `out` must be NULL or point to a writable `mx_offset_options`.
+ * `out` must be NULL or point to `size` writable bytes.
  */
-enum mx_status mx_offset_options_default(struct mx_offset_options *out);
+enum mx_status mx_offset_options_init(struct mx_offset_options *out, size_t size);
 
 /**
  * Prepares `shape` for offsets (thesis 2.4: its medial axis, and for
@@ -1933,12 +1960,21 @@ enum mx_status mx_offset_layer_get_region(const struct mx_offset_layer *layer,
                                           struct mx_offset_region *out);
 
 /**
- * Fills `out` with the default options (and its `struct_size`).
+ * Fills the caller's `mx_pocket_options` with the defaults: `size` is its
+ * `sizeof` as the caller was compiled; the first `min(size, this
+ * release's size)` bytes are written and `struct_size` set to that, so an
+ * older caller's struct is never overrun. `MX_ERR_INVALID_ARGUMENT` for a
+ * size below the first release's.
+ *
+ * ```c
+ * mx_pocket_options o;
+ * mx_pocket_options_init(&o, sizeof o);
+ * ```
  *
  * # Safety
- * `out` must be NULL or point to a writable `mx_pocket_options`.
+ * `out` must be NULL or point to `size` writable bytes.
  */
-enum mx_status mx_pocket_options_default(struct mx_pocket_options *out);
+enum mx_status mx_pocket_options_init(struct mx_pocket_options *out, size_t size);
 
 /**
  * The pocket of the prepared shape: rings at r + k·s until nothing is
@@ -1994,12 +2030,21 @@ enum mx_status mx_pocket_get_uncut(const struct mx_pocket *pocket,
                                    struct mx_uncut_region *out);
 
 /**
- * Fills `out` with the default options (and its `struct_size`).
+ * Fills the caller's `mx_shape_options` with the defaults: `size` is its
+ * `sizeof` as the caller was compiled; the first `min(size, this
+ * release's size)` bytes are written and `struct_size` set to that, so an
+ * older caller's struct is never overrun. `MX_ERR_INVALID_ARGUMENT` for a
+ * size below the first release's.
+ *
+ * ```c
+ * mx_shape_options o;
+ * mx_shape_options_init(&o, sizeof o);
+ * ```
  *
  * # Safety
- * `out` must be NULL or point to a writable `mx_shape_options`.
+ * `out` must be NULL or point to `size` writable bytes.
  */
-enum mx_status mx_shape_options_default(struct mx_shape_options *out);
+enum mx_status mx_shape_options_init(struct mx_shape_options *out, size_t size);
 
 /**
  * Creates a shape from bulge loops. `xyb` holds `x, y, bulge` triples for
@@ -2175,12 +2220,21 @@ enum mx_status mx_shape2d_write_svg(const struct mx_shape2d *shape, const char *
 const char *mx_status_str(int32_t status);
 
 /**
- * Fills `out` with the default options (and its `struct_size`).
+ * Fills the caller's `mx_vcarve_options` with the defaults: `size` is its
+ * `sizeof` as the caller was compiled; the first `min(size, this
+ * release's size)` bytes are written and `struct_size` set to that, so an
+ * older caller's struct is never overrun. `MX_ERR_INVALID_ARGUMENT` for a
+ * size below the first release's.
+ *
+ * ```c
+ * mx_vcarve_options o;
+ * mx_vcarve_options_init(&o, sizeof o);
+ * ```
  *
  * # Safety
- * `out` must be NULL or point to a writable `mx_vcarve_options`.
+ * `out` must be NULL or point to `size` writable bytes.
  */
-enum mx_status mx_vcarve_options_default(struct mx_vcarve_options *out);
+enum mx_status mx_vcarve_options_init(struct mx_vcarve_options *out, size_t size);
 
 /**
  * Computes the V-carve paths along the medial axis `axis` (of the
@@ -2249,12 +2303,21 @@ const char *mx_version(void);
 uint32_t mx_version_number(void);
 
 /**
- * Fills `out` with the default options (and its `struct_size`).
+ * Fills the caller's `mx_voronoi_options` with the defaults: `size` is its
+ * `sizeof` as the caller was compiled; the first `min(size, this
+ * release's size)` bytes are written and `struct_size` set to that, so an
+ * older caller's struct is never overrun. `MX_ERR_INVALID_ARGUMENT` for a
+ * size below the first release's.
+ *
+ * ```c
+ * mx_voronoi_options o;
+ * mx_voronoi_options_init(&o, sizeof o);
+ * ```
  *
  * # Safety
- * `out` must be NULL or point to a writable `mx_voronoi_options`.
+ * `out` must be NULL or point to `size` writable bytes.
  */
-enum mx_status mx_voronoi_options_default(struct mx_voronoi_options *out);
+enum mx_status mx_voronoi_options_init(struct mx_voronoi_options *out, size_t size);
 
 /**
  * Computes the Voronoi diagram of `sites` (thesis 2.3: the medial axis of

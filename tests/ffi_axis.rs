@@ -178,7 +178,7 @@ fn axis_outlives_its_shape_and_threads_do_not_change_it() {
         .collect();
     let s = shape(&[&star]);
     let mut o = unsafe { std::mem::zeroed::<mx_axis_options>() };
-    assert_eq!(unsafe { mx_axis_options_default(&mut o) }, mx_status::MX_OK);
+    assert_eq!(unsafe { mx_axis_options_init(&mut o, std::mem::size_of_val(&o)) }, mx_status::MX_OK);
     assert_eq!(o.struct_size, std::mem::size_of::<mx_axis_options>());
     assert_eq!(o.threads, 0);
     assert!(o.progress.is_none() && o.user.is_null());
@@ -208,7 +208,10 @@ fn null_and_range_errors_write_nothing() {
     assert_eq!(unsafe { mx_axis_compute(null(), null(), &mut out) }, MX_ERR_NULL_ARGUMENT);
     assert_eq!(out, SENTINEL);
     assert_eq!(unsafe { mx_axis_compute(s, null(), null_mut()) }, MX_ERR_NULL_ARGUMENT);
-    assert_eq!(unsafe { mx_axis_options_default(null_mut()) }, MX_ERR_NULL_ARGUMENT);
+    assert_eq!(
+        unsafe { mx_axis_options_init(null_mut(), std::mem::size_of::<mx_axis_options>()) },
+        MX_ERR_NULL_ARGUMENT
+    );
     let a = compute(s, null());
     let mut n = 77;
     assert_eq!(unsafe { mx_axis_node_count(null(), &mut n) }, MX_ERR_NULL_ARGUMENT);
@@ -262,14 +265,14 @@ fn null_and_range_errors_write_nothing() {
 fn bad_options() {
     let s = shape(&[&RECT]);
     let mut o = unsafe { std::mem::zeroed::<mx_axis_options>() };
-    unsafe { mx_axis_options_default(&mut o) };
+    unsafe { mx_axis_options_init(&mut o, std::mem::size_of_val(&o)) };
     let mut out = SENTINEL;
     o.threads = MX_AXIS_MAX_THREADS + 1;
     assert_eq!(unsafe { mx_axis_compute(s, &o, &mut out) }, mx_status::MX_ERR_INVALID_ARGUMENT);
     o.threads = 0;
     o.struct_size = 8;
     assert_eq!(unsafe { mx_axis_compute(s, &o, &mut out) }, mx_status::MX_ERR_INVALID_ARGUMENT);
-    assert!(last_message().contains("mx_axis_options_default"), "{}", last_message());
+    assert!(last_message().contains("mx_axis_options_init"), "{}", last_message());
     assert_eq!(out, SENTINEL);
     unsafe { mx_shape2d_free(s) };
 }
@@ -290,7 +293,7 @@ unsafe extern "C" fn on_progress(fraction: f64, user: *mut c_void) -> c_int {
 fn progress_and_cancel() {
     let s = shape(&[&RECT]);
     let mut o = unsafe { std::mem::zeroed::<mx_axis_options>() };
-    unsafe { mx_axis_options_default(&mut o) };
+    unsafe { mx_axis_options_init(&mut o, std::mem::size_of_val(&o)) };
     let mut p = Progress { seen: vec![], cancel_at: 0.0 };
     o.progress = Some(on_progress);
     o.user = (&mut p as *mut Progress).cast();

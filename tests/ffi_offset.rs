@@ -111,7 +111,7 @@ fn check_layer(c: *const mx_offset_layer, rust: &OffsetLayer) {
 
 fn offset_options() -> mx_offset_options {
     let mut o = unsafe { std::mem::zeroed::<mx_offset_options>() };
-    assert_eq!(unsafe { mx_offset_options_default(&mut o) }, mx_status::MX_OK);
+    assert_eq!(unsafe { mx_offset_options_init(&mut o, std::mem::size_of_val(&o)) }, mx_status::MX_OK);
     o
 }
 
@@ -267,7 +267,7 @@ fn offsets_refuse_bad_values_and_leave_out_params_alone() {
 
 fn pocket_options(r: f64, s: f64) -> mx_pocket_options {
     let mut o = unsafe { std::mem::zeroed::<mx_pocket_options>() };
-    assert_eq!(unsafe { mx_pocket_options_default(&mut o) }, mx_status::MX_OK);
+    assert_eq!(unsafe { mx_pocket_options_init(&mut o, std::mem::size_of_val(&o)) }, mx_status::MX_OK);
     o.tool_radius = r;
     o.stepover = s;
     o
@@ -363,7 +363,7 @@ fn pockets_refuse_bad_options_by_name() {
 
 fn vcarve_options(angle_deg: f64, max_depth: f64) -> mx_vcarve_options {
     let mut o = unsafe { std::mem::zeroed::<mx_vcarve_options>() };
-    assert_eq!(unsafe { mx_vcarve_options_default(&mut o) }, mx_status::MX_OK);
+    assert_eq!(unsafe { mx_vcarve_options_init(&mut o, std::mem::size_of_val(&o)) }, mx_status::MX_OK);
     assert_eq!((o.angle_deg, o.max_depth), (90.0, f64::INFINITY));
     o.angle_deg = angle_deg;
     o.max_depth = max_depth;

@@ -114,7 +114,7 @@ fn rectangle(options: *const mx_shape_options) -> (mx_status, *mut mx_shape2d) {
 #[test]
 fn shape_threads_are_checked_and_leave_the_shape_as_it_is() {
     let mut o: mx_shape_options = unsafe { std::mem::zeroed() };
-    assert_eq!(unsafe { mx_shape_options_default(&mut o) }, mx_status::MX_OK);
+    assert_eq!(unsafe { mx_shape_options_init(&mut o, std::mem::size_of_val(&o)) }, mx_status::MX_OK);
     assert_eq!(o.threads, 0);
     let mut tol = [0.0; 2];
     for (i, threads) in [0, 1].into_iter().enumerate() {
@@ -275,4 +275,55 @@ fn voronoi_options_of_0_1() {
         mx_status::MX_ERR_INVALID_ARGUMENT
     );
     unsafe { mx_voronoi_free(vd) };
+}
+
+/// Writes into a buffer of `size` bytes followed by guard bytes; returns
+/// the status, the `struct_size` written and whether the guard held.
+fn guarded<T>(size: usize, fill: unsafe extern "C" fn(*mut T) -> mx_status) -> (mx_status, usize, bool) {
+    // u64 words: aligned for every options struct.
+    let mut buf = vec![0xABAB_ABAB_ABAB_ABABu64; (size + 64).div_ceil(8)];
+    let st = unsafe { fill(buf.as_mut_ptr().cast()) };
+    let bytes: Vec<u8> = buf.iter().flat_map(|w| w.to_ne_bytes()).collect();
+    (st, buf[0] as usize, bytes[size..].iter().all(|&b| b == 0xAB))
+}
+
+fn guarded_init<T>(size: usize, init: unsafe extern "C" fn(*mut T, usize) -> mx_status) -> (mx_status, usize, bool) {
+    let mut buf = vec![0xABAB_ABAB_ABAB_ABABu64; (size + 64).div_ceil(8)];
+    let st = unsafe { init(buf.as_mut_ptr().cast(), size) };
+    let bytes: Vec<u8> = buf.iter().flat_map(|w| w.to_ne_bytes()).collect();
+    (st, buf[0] as usize, bytes[size..].iter().all(|&b| b == 0xAB))
+}
+
+#[test]
+fn defaults_never_write_past_the_callers_struct() {
+    // (first release's end of fields, today's size, _default, _init) per
+    // options struct; a 0.1 caller's struct is at least the first size.
+    macro_rules! check {
+        ($t:ty, $v1:expr, $default:ident, $init:ident) => {{
+            let (v1, now) = ($v1, size_of::<$t>());
+            // The 0.1 export: the 0.1 fields only.
+            assert_eq!(guarded::<$t>(v1, $default), (mx_status::MX_OK, v1, true), stringify!($default));
+            // The size-aware one: an old size, today's size, a larger one.
+            assert_eq!(guarded_init::<$t>(v1, $init), (mx_status::MX_OK, v1, true), stringify!($init));
+            assert_eq!(guarded_init::<$t>(now, $init), (mx_status::MX_OK, now, true), stringify!($init));
+            assert_eq!(guarded_init::<$t>(now + 24, $init), (mx_status::MX_OK, now, true), stringify!($init));
+            // Too small for any release: refused, nothing written.
+            let (st, written, guard) = guarded_init::<$t>(v1 - 1, $init);
+            assert_eq!((st, written, guard), (mx_status::MX_ERR_INVALID_ARGUMENT, 0xABAB_ABAB_ABAB_ABAB, true));
+            assert!(last_message().contains("sizeof"), "{}", last_message());
+        }};
+    }
+    check!(mx_shape_options, 56, mx_shape_options_default, mx_shape_options_init);
+    check!(mx_axis_options, 40, mx_axis_options_default, mx_axis_options_init);
+    check!(mx_offset_options, 48, mx_offset_options_default, mx_offset_options_init);
+    check!(mx_pocket_options, 40, mx_pocket_options_default, mx_pocket_options_init);
+    check!(mx_vcarve_options, 32, mx_vcarve_options_default, mx_vcarve_options_init);
+    check!(mx_voronoi_options, 48, mx_voronoi_options_default, mx_voronoi_options_init);
+    check!(mx_drawing_select, 41, mx_drawing_select_default, mx_drawing_select_init);
+    // What a 0.1 caller's _default gives is accepted as it is.
+    let mut o: ShapeOptionsV01 = unsafe { std::mem::zeroed() };
+    assert_eq!(unsafe { mx_shape_options_default((&mut o as *mut ShapeOptionsV01).cast()) }, mx_status::MX_OK);
+    let (st, s) = rectangle(as_current(&o));
+    assert_eq!(st, mx_status::MX_OK, "{}", last_message());
+    unsafe { mx_shape2d_free(s) };
 }

@@ -200,7 +200,7 @@ unsafe extern "C" fn cancel(_fraction: f64, calls: *mut c_void) -> c_int {
 fn options_boundary_and_cancellation() {
     let input = squares(&[(0.0, 0.0), (2.0, 0.0)]);
     let mut o = unsafe { std::mem::zeroed::<mx_voronoi_options>() };
-    assert_eq!(unsafe { mx_voronoi_options_default(&mut o) }, mx_status::MX_OK);
+    assert_eq!(unsafe { mx_voronoi_options_init(&mut o, std::mem::size_of_val(&o)) }, mx_status::MX_OK);
     let mut calls = 0usize;
     o.progress = Some(cancel);
     o.user = &mut calls as *mut usize as *mut c_void;

@@ -33,6 +33,7 @@ static const char *node_kind(enum mx_node_kind kind) {
     case MX_NODE_CORNER: return "corner";
     case MX_NODE_LEAF: return "leaf";
     case MX_NODE_JOINT: return "joint";
+    case MX_NODE_PSEUDO_BRANCH: return "pseudo-branch";
     }
     return "?";
 }
@@ -83,7 +84,7 @@ int main(int argc, char **argv) {
 
     /* Options structs carry their size: always start from the defaults. */
     mx_axis_options options;
-    mx_axis_options_default(&options);
+    mx_axis_options_init(&options, sizeof options);
     options.seed = 1;    /* the same seed gives the same axis, bit for bit */
     options.threads = 2; /* 0 = the shared pool (all cores) */
     status = mx_axis_compute(shape, &options, &axis);

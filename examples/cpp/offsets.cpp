@@ -44,7 +44,7 @@ Shape shape_from_json(const char *json) {
 
 Offsets prepare_offsets(const mx_shape2d &shape, double outer_reach) {
     mx_offset_options options;
-    mx_offset_options_default(&options);
+    mx_offset_options_init(&options, sizeof options);
     // Negative (outer) distances down to -outer_reach need the complement's
     // axis, computed now; 0 keeps to inner offsets.
     options.outer_reach = outer_reach;
@@ -64,7 +64,7 @@ std::vector<Layer> layers(const mx_offsets &offsets, const std::vector<double> &
 
 Pocket make_pocket(const mx_offsets &offsets, double tool_radius, double stepover) {
     mx_pocket_options options;
-    mx_pocket_options_default(&options);
+    mx_pocket_options_init(&options, sizeof options);
     options.tool_radius = tool_radius;
     options.stepover = stepover;
     options.order = MX_POCKET_INSIDE_OUT;  // the wall last, as a finishing pass

@@ -3,7 +3,7 @@
 //! is computed here.
 
 use super::boundary::{check_out, fill, guard, nth, run_with_progress, write_out};
-use super::handles::{arg, compute, free, impl_options, options_default, query, Boxed, Handle};
+use super::handles::{arg, compute, free, impl_options, options_default, options_init, query, Boxed, Handle};
 use super::last_error::FfiError;
 use super::shape2d::mx_shape2d;
 use super::status::mx_status;
@@ -51,8 +51,8 @@ impl Handle for mx_axis {
 /// the thread that called `mx_axis_compute`; it must not throw or unwind.
 pub type mx_progress_fn = Option<unsafe extern "C" fn(fraction: f64, user: *mut c_void) -> c_int>;
 
-/// Options for `mx_axis_compute`. Initialise with `mx_axis_options_default`
-/// (which sets `struct_size`), then change fields.
+/// Options for `mx_axis_compute`. Initialise with
+/// `mx_axis_options_init(&o, sizeof o)` (which sets `struct_size`), then change fields.
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct mx_axis_options {
@@ -88,10 +88,31 @@ impl_options!(mx_axis_options, v1: 40 bytes up to user: *mut c_void, defaults: m
     user: std::ptr::null_mut(),
 });
 
-/// Fills `out` with the default options (and its `struct_size`).
+/// Fills the caller's `mx_axis_options` with the defaults: `size` is its
+/// `sizeof` as the caller was compiled; the first `min(size, this
+/// release's size)` bytes are written and `struct_size` set to that, so an
+/// older caller's struct is never overrun. `MX_ERR_INVALID_ARGUMENT` for a
+/// size below the first release's.
+///
+/// ```c
+/// mx_axis_options o;
+/// mx_axis_options_init(&o, sizeof o);
+/// ```
 ///
 /// # Safety
-/// `out` must be NULL or point to a writable `mx_axis_options`.
+/// `out` must be NULL or point to `size` writable bytes.
+#[no_mangle]
+pub unsafe extern "C" fn mx_axis_options_init(out: *mut mx_axis_options, size: usize) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { options_init(out, size) }
+}
+
+/// For callers built against medax 0.1 (not in the header): the defaults
+/// in the 0.1 layout only, `struct_size` its size, nothing written past
+/// it. New code calls `mx_axis_options_init`.
+///
+/// # Safety
+/// `out` must be NULL or point to a writable 0.1 `mx_axis_options`.
 #[no_mangle]
 pub unsafe extern "C" fn mx_axis_options_default(out: *mut mx_axis_options) -> mx_status {
     // SAFETY: forwarded contract.

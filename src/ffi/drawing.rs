@@ -2,7 +2,7 @@
 //! grouped by containment) and what was left out of them.
 
 use super::boundary::{c_str, guard, in_pool, nth, slice};
-use super::handles::{arg, create, free, impl_options, options_default, query, Handle, Options};
+use super::handles::{arg, create, free, impl_options, options_default, options_init, query, Handle, Options};
 use super::last_error::FfiError;
 use super::shape2d::{format_of, mx_shape2d, mx_shape_options, options};
 use super::status::mx_status;
@@ -36,7 +36,7 @@ fn c_string(s: &str) -> CString {
 }
 
 /// What to take out of a drawing. Initialise with
-/// `mx_drawing_select_default` (which sets `struct_size` and selects
+/// `mx_drawing_select_init(&o, sizeof o)` (which sets `struct_size` and selects
 /// everything), then change fields.
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
@@ -71,10 +71,31 @@ impl_options!(mx_drawing_select, v1: 41 bytes up to keep_duplicates: u8, default
     keep_duplicates: 0,
 });
 
-/// Fills `out` with the selection of everything (and its `struct_size`).
+/// Fills the caller's `mx_drawing_select` with the defaults: `size` is its
+/// `sizeof` as the caller was compiled; the first `min(size, this
+/// release's size)` bytes are written and `struct_size` set to that, so an
+/// older caller's struct is never overrun. `MX_ERR_INVALID_ARGUMENT` for a
+/// size below the first release's.
+///
+/// ```c
+/// mx_drawing_select o;
+/// mx_drawing_select_init(&o, sizeof o);
+/// ```
 ///
 /// # Safety
-/// `out` must be NULL or point to a writable `mx_drawing_select`.
+/// `out` must be NULL or point to `size` writable bytes.
+#[no_mangle]
+pub unsafe extern "C" fn mx_drawing_select_init(out: *mut mx_drawing_select, size: usize) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { options_init(out, size) }
+}
+
+/// For callers built against medax 0.1 (not in the header): the defaults
+/// in the 0.1 layout only, `struct_size` its size, nothing written past
+/// it. New code calls `mx_drawing_select_init`.
+///
+/// # Safety
+/// `out` must be NULL or point to a writable 0.1 `mx_drawing_select`.
 #[no_mangle]
 pub unsafe extern "C" fn mx_drawing_select_default(out: *mut mx_drawing_select) -> mx_status {
     // SAFETY: forwarded contract.

@@ -208,7 +208,7 @@ pub(crate) unsafe trait Options: Copy {
             return Err(FfiError::new(
                 mx_status::MX_ERR_INVALID_ARGUMENT,
                 format!(
-                    "{name}.struct_size = {size} is smaller than any released layout ({min}); call {name}_default first"
+                    "{name}.struct_size = {size} is smaller than any released layout ({min}); call {name}_init(&o, sizeof o) first"
                 ),
             ));
         }
@@ -267,15 +267,54 @@ macro_rules! impl_options {
 }
 pub(crate) use impl_options;
 
-/// Fills `out` with the defaults of `O`: every `_options_default` export.
+/// The defaults of `O` in its first release's layout: the first
+/// `V1_SIZE` bytes, `struct_size` = `V1_SIZE`: every `_default` export,
+/// kept for callers built against medax 0.1, whose struct is that small
+/// (writing today's struct overran them).
 ///
 /// # Safety
-/// `out` must be NULL or valid for writes.
+/// `out` must be NULL or valid for `O::V1_SIZE` bytes of writes.
 pub(crate) unsafe fn options_default<O: Options>(out: *mut O) -> mx_status {
+    // SAFETY: forwarded contract (the caller's struct holds V1_SIZE bytes).
+    unsafe { write_defaults(out, O::V1_SIZE) }
+}
+
+/// The defaults of `O` into the caller's struct of `size` bytes (its
+/// `sizeof`): the first `min(size, today's size)` bytes, `struct_size` set
+/// to that: every `_init` export. Fields the caller's release does not
+/// have are neither written nor, later, read. A size below the first
+/// release's is refused.
+///
+/// # Safety
+/// `out` must be NULL or valid for `size` bytes of writes.
+pub(crate) unsafe fn options_init<O: Options>(out: *mut O, size: usize) -> mx_status {
+    if size < O::V1_SIZE {
+        let (name, min) = (O::NAME, O::V1_SIZE);
+        return guard(|| {
+            Err(FfiError::new(
+                mx_status::MX_ERR_INVALID_ARGUMENT,
+                format!("{name}_init: size {size} is smaller than any released {name} ({min}); pass sizeof"),
+            ))
+        });
+    }
+    // SAFETY: forwarded contract.
+    unsafe { write_defaults(out, size.min(std::mem::size_of::<O>())) }
+}
+
+/// Writes the first `n` bytes (`V1_SIZE <= n <= size_of::<O>()`) of the
+/// defaults with `struct_size = n`.
+///
+/// # Safety
+/// `out` must be NULL or valid for `n` bytes of writes.
+unsafe fn write_defaults<O: Options>(out: *mut O, n: usize) -> mx_status {
     guard(|| {
         check_out(out, "out")?;
-        // SAFETY: checked non-NULL above.
-        unsafe { write_out(out, O::defaults()) };
+        let mut d = O::defaults();
+        // SAFETY: every options struct starts with `struct_size: usize`.
+        unsafe { std::ptr::addr_of_mut!(d).cast::<usize>().write_unaligned(n) };
+        // SAFETY: `out` holds n writable bytes (contract); `d` is at least
+        // n bytes of plain old data.
+        unsafe { std::ptr::copy_nonoverlapping(std::ptr::addr_of!(d).cast::<u8>(), out.cast::<u8>(), n) };
         Ok(())
     })
 }

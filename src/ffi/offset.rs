@@ -11,7 +11,7 @@
 
 use super::axis::{axis_error, mx_axis, mx_progress_fn};
 use super::boundary::{check_out, guard, in_pool, nth, ptr_or_null, run_with_progress, slice, write_out};
-use super::handles::{arg, compute, free, impl_options, into_raw, options_default, query, Boxed, Handle};
+use super::handles::{arg, compute, free, impl_options, into_raw, options_default, options_init, query, Boxed, Handle};
 use super::last_error::FfiError;
 use super::shape2d::mx_shape2d;
 use super::status::mx_status;
@@ -52,7 +52,7 @@ impl Handle for mx_offset_layer {
 }
 
 /// Options for `mx_offsets_compute` and `mx_offsets_from_axis`.
-/// Initialise with `mx_offset_options_default` (which sets `struct_size`).
+/// Initialise with `mx_offset_options_init(&o, sizeof o)` (which sets `struct_size`).
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct mx_offset_options {
@@ -220,10 +220,31 @@ pub(crate) fn offset_error(e: OffsetError) -> FfiError {
     }
 }
 
-/// Fills `out` with the default options (and its `struct_size`).
+/// Fills the caller's `mx_offset_options` with the defaults: `size` is its
+/// `sizeof` as the caller was compiled; the first `min(size, this
+/// release's size)` bytes are written and `struct_size` set to that, so an
+/// older caller's struct is never overrun. `MX_ERR_INVALID_ARGUMENT` for a
+/// size below the first release's.
+///
+/// ```c
+/// mx_offset_options o;
+/// mx_offset_options_init(&o, sizeof o);
+/// ```
 ///
 /// # Safety
-/// `out` must be NULL or point to a writable `mx_offset_options`.
+/// `out` must be NULL or point to `size` writable bytes.
+#[no_mangle]
+pub unsafe extern "C" fn mx_offset_options_init(out: *mut mx_offset_options, size: usize) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { options_init(out, size) }
+}
+
+/// For callers built against medax 0.1 (not in the header): the defaults
+/// in the 0.1 layout only, `struct_size` its size, nothing written past
+/// it. New code calls `mx_offset_options_init`.
+///
+/// # Safety
+/// `out` must be NULL or point to a writable 0.1 `mx_offset_options`.
 #[no_mangle]
 pub unsafe extern "C" fn mx_offset_options_default(out: *mut mx_offset_options) -> mx_status {
     // SAFETY: forwarded contract.

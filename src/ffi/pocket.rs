@@ -3,7 +3,7 @@
 //! Mirrors `crate::cam::pocket`; no geometry here.
 
 use super::boundary::{in_pool, nth, ptr_or_null};
-use super::handles::{compute, free, impl_options, options_default, query, Boxed, Handle};
+use super::handles::{compute, free, impl_options, options_default, options_init, query, Boxed, Handle};
 use super::last_error::FfiError;
 use super::offset::{mx_bulge_loops, mx_offsets, offset_error, FlatLoops};
 use super::status::mx_status;
@@ -36,7 +36,7 @@ pub const MX_UNCUT_SCALLOP: u32 = 0;
 pub const MX_UNCUT_WALL: u32 = 1;
 
 /// Options for `mx_pocket_compute`. Initialise with
-/// `mx_pocket_options_default` (which sets `struct_size`), then set
+/// `mx_pocket_options_init(&o, sizeof o)` (which sets `struct_size`), then set
 /// `tool_radius` and `stepover`: their defaults (0) are rejected.
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
@@ -124,10 +124,31 @@ pub(crate) fn cam_error(e: CamError) -> FfiError {
     }
 }
 
-/// Fills `out` with the default options (and its `struct_size`).
+/// Fills the caller's `mx_pocket_options` with the defaults: `size` is its
+/// `sizeof` as the caller was compiled; the first `min(size, this
+/// release's size)` bytes are written and `struct_size` set to that, so an
+/// older caller's struct is never overrun. `MX_ERR_INVALID_ARGUMENT` for a
+/// size below the first release's.
+///
+/// ```c
+/// mx_pocket_options o;
+/// mx_pocket_options_init(&o, sizeof o);
+/// ```
 ///
 /// # Safety
-/// `out` must be NULL or point to a writable `mx_pocket_options`.
+/// `out` must be NULL or point to `size` writable bytes.
+#[no_mangle]
+pub unsafe extern "C" fn mx_pocket_options_init(out: *mut mx_pocket_options, size: usize) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { options_init(out, size) }
+}
+
+/// For callers built against medax 0.1 (not in the header): the defaults
+/// in the 0.1 layout only, `struct_size` its size, nothing written past
+/// it. New code calls `mx_pocket_options_init`.
+///
+/// # Safety
+/// `out` must be NULL or point to a writable 0.1 `mx_pocket_options`.
 #[no_mangle]
 pub unsafe extern "C" fn mx_pocket_options_default(out: *mut mx_pocket_options) -> mx_status {
     // SAFETY: forwarded contract.

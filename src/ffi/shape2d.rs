@@ -2,7 +2,7 @@
 //! `crate::shape`; no geometry is computed here.
 
 use super::boundary::{c_str, check_out, check_threads, fill, guard, in_pool, index_error, nth, slice, write_out};
-use super::handles::{arg, create, free, impl_options, options_default, query, Boxed, Handle, Options};
+use super::handles::{arg, create, free, impl_options, options_default, options_init, query, Boxed, Handle, Options};
 use super::last_error::FfiError;
 use super::status::mx_status;
 use crate::io::Format;
@@ -33,8 +33,8 @@ impl std::ops::Deref for mx_shape2d {
     }
 }
 
-/// Tolerances for building shapes. Initialise with `mx_shape_options_default`
-/// (which sets `struct_size`), then change fields. Lengths in model units.
+/// Tolerances for building shapes. Initialise with
+/// `mx_shape_options_init(&o, sizeof o)` (which sets `struct_size`), then change fields. Lengths in model units.
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct mx_shape_options {
@@ -139,10 +139,31 @@ impl_options!(mx_shape_options, v1: 56 bytes up to max_radius_ratio: f64, defaul
     threads: 0,
 });
 
-/// Fills `out` with the default options (and its `struct_size`).
+/// Fills the caller's `mx_shape_options` with the defaults: `size` is its
+/// `sizeof` as the caller was compiled; the first `min(size, this
+/// release's size)` bytes are written and `struct_size` set to that, so an
+/// older caller's struct is never overrun. `MX_ERR_INVALID_ARGUMENT` for a
+/// size below the first release's.
+///
+/// ```c
+/// mx_shape_options o;
+/// mx_shape_options_init(&o, sizeof o);
+/// ```
 ///
 /// # Safety
-/// `out` must be NULL or point to a writable `mx_shape_options`.
+/// `out` must be NULL or point to `size` writable bytes.
+#[no_mangle]
+pub unsafe extern "C" fn mx_shape_options_init(out: *mut mx_shape_options, size: usize) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { options_init(out, size) }
+}
+
+/// For callers built against medax 0.1 (not in the header): the defaults
+/// in the 0.1 layout only, `struct_size` its size, nothing written past
+/// it. New code calls `mx_shape_options_init`.
+///
+/// # Safety
+/// `out` must be NULL or point to a writable 0.1 `mx_shape_options`.
 #[no_mangle]
 pub unsafe extern "C" fn mx_shape_options_default(out: *mut mx_shape_options) -> mx_status {
     // SAFETY: forwarded contract.

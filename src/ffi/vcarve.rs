@@ -4,7 +4,7 @@
 
 use super::axis::mx_axis;
 use super::boundary::{nth, ptr_or_null};
-use super::handles::{compute, free, impl_options, lend, options_default, query, Boxed, Handle, Lends};
+use super::handles::{compute, free, impl_options, lend, options_default, options_init, query, Boxed, Handle, Lends};
 use super::offset::mx_offset_layer;
 use super::pocket::cam_error;
 use super::status::mx_status;
@@ -32,7 +32,7 @@ impl Lends<mx_offset_layer> for mx_vcarve {
 }
 
 /// Options for `mx_vcarve_compute`. Initialise with
-/// `mx_vcarve_options_default` (which sets `struct_size`).
+/// `mx_vcarve_options_init(&o, sizeof o)` (which sets `struct_size`).
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct mx_vcarve_options {
@@ -78,10 +78,31 @@ pub struct mx_vcarve_path {
     pub point_count: usize,
 }
 
-/// Fills `out` with the default options (and its `struct_size`).
+/// Fills the caller's `mx_vcarve_options` with the defaults: `size` is its
+/// `sizeof` as the caller was compiled; the first `min(size, this
+/// release's size)` bytes are written and `struct_size` set to that, so an
+/// older caller's struct is never overrun. `MX_ERR_INVALID_ARGUMENT` for a
+/// size below the first release's.
+///
+/// ```c
+/// mx_vcarve_options o;
+/// mx_vcarve_options_init(&o, sizeof o);
+/// ```
 ///
 /// # Safety
-/// `out` must be NULL or point to a writable `mx_vcarve_options`.
+/// `out` must be NULL or point to `size` writable bytes.
+#[no_mangle]
+pub unsafe extern "C" fn mx_vcarve_options_init(out: *mut mx_vcarve_options, size: usize) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { options_init(out, size) }
+}
+
+/// For callers built against medax 0.1 (not in the header): the defaults
+/// in the 0.1 layout only, `struct_size` its size, nothing written past
+/// it. New code calls `mx_vcarve_options_init`.
+///
+/// # Safety
+/// `out` must be NULL or point to a writable 0.1 `mx_vcarve_options`.
 #[no_mangle]
 pub unsafe extern "C" fn mx_vcarve_options_default(out: *mut mx_vcarve_options) -> mx_status {
     // SAFETY: forwarded contract.

@@ -5,7 +5,9 @@
 
 use super::axis::{axis_error, mx_axis, mx_progress_fn};
 use super::boundary::{check_out, deref, fill, guard, nth, run_with_progress, slice, write_out};
-use super::handles::{arg, create, free, impl_options, lend, options_default, query, Boxed, Handle, Lends, Options};
+use super::handles::{
+    arg, create, free, impl_options, lend, options_default, options_init, query, Boxed, Handle, Lends, Options,
+};
 use super::last_error::FfiError;
 use super::shape2d::split_bulges;
 use super::status::mx_status;
@@ -74,7 +76,7 @@ pub struct mx_sites {
 }
 
 /// Options for `mx_voronoi_compute`. Initialise with
-/// `mx_voronoi_options_default` (which sets `struct_size`).
+/// `mx_voronoi_options_init(&o, sizeof o)` (which sets `struct_size`).
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct mx_voronoi_options {
@@ -184,10 +186,31 @@ pub struct mx_nearest_site {
     pub foot_y: f64,
 }
 
-/// Fills `out` with the default options (and its `struct_size`).
+/// Fills the caller's `mx_voronoi_options` with the defaults: `size` is its
+/// `sizeof` as the caller was compiled; the first `min(size, this
+/// release's size)` bytes are written and `struct_size` set to that, so an
+/// older caller's struct is never overrun. `MX_ERR_INVALID_ARGUMENT` for a
+/// size below the first release's.
+///
+/// ```c
+/// mx_voronoi_options o;
+/// mx_voronoi_options_init(&o, sizeof o);
+/// ```
 ///
 /// # Safety
-/// `out` must be NULL or point to a writable `mx_voronoi_options`.
+/// `out` must be NULL or point to `size` writable bytes.
+#[no_mangle]
+pub unsafe extern "C" fn mx_voronoi_options_init(out: *mut mx_voronoi_options, size: usize) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe { options_init(out, size) }
+}
+
+/// For callers built against medax 0.1 (not in the header): the defaults
+/// in the 0.1 layout only, `struct_size` its size, nothing written past
+/// it. New code calls `mx_voronoi_options_init`.
+///
+/// # Safety
+/// `out` must be NULL or point to a writable 0.1 `mx_voronoi_options`.
 #[no_mangle]
 pub unsafe extern "C" fn mx_voronoi_options_default(out: *mut mx_voronoi_options) -> mx_status {
     // SAFETY: forwarded contract.
