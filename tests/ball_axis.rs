@@ -322,3 +322,52 @@ fn axis_size_lies_between_n_and_n_plus_rk() {
         }
     }
 }
+
+/// Regression: the new-contact search took its earliest `f64` contact for
+/// a real one. Here (a 100-gon star under a triangle, seed 182) a class
+/// tied within the filter's margin at a node, its contact just behind the
+/// ball, was the earliest; the exact test rejected it and the reflex
+/// vertex the ball reached next was never examined, so the ball walked
+/// through it and the tracing broke down ("no ray back"). Seed 2086 broke
+/// down too ("a ray of the axis leaves the shape") and computes with the
+/// same fix.
+#[test]
+fn rejected_early_contact_does_not_hide_the_next() {
+    let ball = Ball2::regular(3, 0.1).unwrap();
+    for seed in [182, 2086] {
+        let s = Shape2d::from_bulge_loops(samples::star_polygon(100, seed), &ShapeOptions::default()).unwrap();
+        check(&s, &ball, 200);
+    }
+}
+
+/// Regression: when no corner seeds the axis (a square hole in a square
+/// frame under the square ball prunes all eight corners), a probe lands in
+/// the middle of an axis edge; the trace coming round the ring from the
+/// other side walked past that landing point (nothing happens there) and
+/// found the edge's far node already taken.
+#[test]
+fn a_probe_landing_mid_edge_is_met_from_both_sides() {
+    let sq = Ball2::square();
+    let ring = shape_of(vec![
+        vec![(-1.0, -1.0), (2.0, -1.0), (2.0, 2.0), (-1.0, 2.0)],
+        vec![(0.0, 0.0), (0.0, 1.0), (1.0, 1.0), (1.0, 0.0)],
+    ]);
+    let a = check(&ring, &sq, 200);
+    assert_eq!((a.nodes.len(), a.edges.len()), (4, 4), "{a:?}");
+    for n in &a.nodes {
+        assert!((n.at.x.abs() - 0.5).abs() < 1e-12 || (n.at.x - 1.5).abs() < 1e-12, "{n:?}");
+        assert!((n.at.y.abs() - 0.5).abs() < 1e-12 || (n.at.y - 1.5).abs() < 1e-12, "{n:?}");
+        assert!((n.r - 0.5).abs() < 1e-12, "{n:?}");
+    }
+    // Rectangles in rectangular frames, margins differing per side.
+    let mut rng = rand::rngs::SmallRng::seed_from_u64(11);
+    for _ in 0..20 {
+        let (w, h) = (rng.gen_range(0.5..6.0), rng.gen_range(0.5..6.0));
+        let m: Vec<f64> = (0..4).map(|_| rng.gen_range(0.2..3.0)).collect();
+        let s = shape_of(vec![
+            vec![(-m[0], -m[1]), (w + m[2], -m[1]), (w + m[2], h + m[3]), (-m[0], h + m[3])],
+            vec![(0.0, 0.0), (0.0, h), (w, h), (w, 0.0)],
+        ]);
+        check(&s, &sq, 100);
+    }
+}

@@ -167,10 +167,7 @@ fn shapes_with_holes_give_rings_round_the_holes() {
         plate.push(vec![(x, y), (x + 0.4, y + 2.0), (x + 2.0, y + 1.7), (x + 1.6, y)]);
     }
     let s = shape_of(plate);
-    // (The square on this plate is left out until the tracing bug it
-    // shows, "an edge of the axis arrives where its node has no ray
-    // back", is fixed.)
-    for ball in [Ball2::triangle(), Ball2::regular(7, 0.1).unwrap()] {
+    for ball in [Ball2::triangle(), Ball2::regular(7, 0.1).unwrap(), Ball2::square()] {
         let layers = check_all(&s, &ball, &[0.05, 0.3, 0.7], 300);
         // Small distances keep one region with a hole per hole.
         assert_eq!(layers[0].regions.len(), 1, "{:?}", layers[0].regions);
@@ -231,12 +228,19 @@ fn outer_offsets_grow_the_shape_under_the_ball() {
     assert_eq!(layer.loops.len(), 1);
     assert!((layer.area() - 4.5).abs() < 1e-9, "area {}", layer.area());
     check_outer(&s, &Ball2::diamond(), &layer, 400, 1);
+    // A square tool keeps a rectangle a rectangle: [0, 6] × [0, 2] grown
+    // by 0.5 is [−0.5, 6.5] × [−0.5, 2.5], area 21.
+    let rect = shape_of(vec![vec![(0.0, 0.0), (6.0, 0.0), (6.0, 2.0), (0.0, 2.0)]]);
+    let layer = outer_offset(&rect, &Ball2::square(), 0.5).unwrap();
+    assert_eq!(layer.loops.len(), 1);
+    assert!((layer.area() - 21.0).abs() < 1e-9, "area {}", layer.area());
+    check_outer(&rect, &Ball2::square(), &layer, 400, 3);
     let mut plate = vec![vec![(0.0, 0.0), (10.0, 0.0), (10.0, 10.0), (0.0, 10.0)]];
     for (x, y) in [(2.0, 2.0), (6.0, 2.5), (2.5, 6.0)] {
         plate.push(vec![(x, y), (x + 0.4, y + 2.0), (x + 2.0, y + 1.7), (x + 1.6, y)]);
     }
     let plate = shape_of(plate);
-    for ball in [Ball2::triangle(), Ball2::regular(7, 0.1).unwrap()] {
+    for ball in [Ball2::triangle(), Ball2::regular(7, 0.1).unwrap(), Ball2::square()] {
         for d in [0.1, 0.4, 3.0] {
             let layer = outer_offset(&plate, &ball, d).unwrap();
             check_outer(&plate, &ball, &layer, 300, 2);

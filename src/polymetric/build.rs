@@ -29,6 +29,10 @@ struct Tracer<'p, 'a> {
     /// `named[e]`: a traced edge has shape edge `e`'s class on a side.
     named: Vec<bool>,
     work: Vec<(usize, usize)>,
+    /// Probe landing points: nodes in the middle of an axis edge, which a
+    /// trace from the edge's far end would walk past (nothing happens
+    /// there) and must stop at.
+    landings: Vec<usize>,
 }
 
 /// A traced edge: nodes, side classes, the line it runs on.
@@ -78,7 +82,7 @@ impl Tracer<'_, '_> {
             }
             self.nodes[id].rays[j].traced = true;
             let (q, reference) = self.pb.trace(&self.nodes[id], &self.nodes[id].rays[j])?;
-            let to = match self.find(&q) {
+            let to = match self.landing_before(id, j, &q).or_else(|| self.find(&q)) {
                 Some(t) => t,
                 None => {
                     if self.nodes.len() >= limit {
@@ -114,6 +118,24 @@ impl Tracer<'_, '_> {
             self.edges.push(Traced { from: id, to, left, right, carrier });
         }
         Ok(())
+    }
+
+    /// The landing point nearest to node `id` strictly inside the segment
+    /// its ray `j` traced to `q`, if any.
+    fn landing_before(&self, id: usize, j: usize, q: &HPoint) -> Option<usize> {
+        let (from, ray) = (&self.nodes[id].p, &self.nodes[id].rays[j]);
+        let d = &ray.dir;
+        self.landings
+            .iter()
+            .copied()
+            .filter(|&l| {
+                let p = &self.nodes[l].p;
+                l != id
+                    && ray.carrier.side(p) == Ordering::Equal
+                    && from.along(p, d) == Ordering::Greater
+                    && p.along(q, d) == Ordering::Greater
+            })
+            .min_by(|&a, &b| self.nodes[b].p.along(&self.nodes[a].p, d))
     }
 
     /// True when `q` lies on a traced edge (ends included).
@@ -174,7 +196,8 @@ impl Tracer<'_, '_> {
                 });
             }
             let node = pb.analyse(q, reference);
-            self.insert(node);
+            let id = self.insert(node);
+            self.landings.push(id);
             self.run(limit)?;
         }
         Ok(())
@@ -207,6 +230,7 @@ pub fn medial_axis_with_ball(shape: &Shape2d, ball: &Ball2) -> Result<BallAxis, 
         edges: Vec::new(),
         named: vec![false; n],
         work: Vec::new(),
+        landings: Vec::new(),
     };
     for v in 0..n as u32 {
         if pb.reflex[v as usize] {

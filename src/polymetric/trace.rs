@@ -12,7 +12,9 @@
 //! edge box tree for the earliest contact (a box is reached no earlier than
 //! the Euclidean disk around the ball reaches it), then every class whose
 //! `f64` contact comes within a margin (10^-7 of the shape's diagonal) of
-//! the earliest is decided exactly. Edges the ball touches at the start
+//! the earliest is decided exactly; when the exact test rejects them all
+//! (the margin admits classes whose contact lies just behind the start),
+//! the search resumes without them. Edges the ball touches at the start
 //! are left out: the ball meets a closed edge during one interval of the
 //! walk (both are convex), so an edge it leaves never comes back, and one
 //! it keeps touching changes class only through the first kind of event.
@@ -142,42 +144,74 @@ impl Problem<'_> {
         let walk =
             Walk { at: node.at, dir: unit, r: node.r, slope: ra.slope(unit), eps: 1e-7 * self.diag + 1e-9 * node.r };
         let t_first = best.as_ref().map_or(f64::INFINITY, |b| (b.approx(self.shape_units) - node.at).dot(unit));
-        // New contacts: the earliest in f64, then all near it exactly.
+        // New contacts: the earliest in f64, then all near it exactly. The
+        // f64 times carry margins, so the earliest can be a false alarm
+        // that the exact test rejects (typically a class tied within the
+        // margin at the start, whose contact lies just behind it): such
+        // classes are set aside and the search resumes, or a real contact
+        // beyond the window would be missed and the ball would walk
+        // through it.
         let excluded = |e: u32| node.touching.binary_search(&e).is_ok();
-        let key = |e: usize, _: &BBox| -> Option<f64> {
-            if excluded(e as u32) {
-                return None;
-            }
-            self.classes_of_edge(e as u32).filter_map(|c| walk.contact_time(&self.approx(c))).reduce(f64::min)
-        };
-        let found = self.tree.min_by_bound(
-            // A contact later than the validity end found exactly would be
-            // dropped below: boxes beyond it are never opened (most rays
-            // end at a joint, long before the next contact).
-            |b| walk.box_bound(self.reach, &self.extent, b).filter(|&t| t <= t_first + 2.0 * walk.eps),
-            key,
-        );
-        if let Some((_, t)) = found {
-            let limit = t + 2.0 * walk.eps;
-            if t <= t_first + 2.0 * walk.eps {
-                let window = walk.ball_box(self.reach, 0.0).union(&walk.ball_box(self.reach, limit));
-                let mut near: Vec<ClassId> = Vec::new();
-                self.tree.visit_overlapping(&window, |e| {
-                    if !excluded(e as u32) {
-                        near.extend(
-                            self.classes_of_edge(e as u32)
-                                .filter(|&c| walk.contact_time(&self.approx(c)).is_some_and(|tc| tc <= limit)),
-                        );
-                    }
-                    ControlFlow::<()>::Continue(())
-                });
-                near.sort_unstable();
-                near.dedup();
-                for c in near {
-                    if let Some(q) = self.contact_on_ray(node, ray, &re, c) {
-                        offer(q, &mut best);
-                    }
+        let mut rejected: Vec<ClassId> = Vec::new();
+        loop {
+            let contact = |c: ClassId| -> Option<f64> {
+                if rejected.contains(&c) {
+                    return None;
                 }
+                walk.contact_time(&self.approx(c))
+            };
+            let key = |e: usize, _: &BBox| -> Option<(f64, ClassId)> {
+                if excluded(e as u32) {
+                    return None;
+                }
+                self.classes_of_edge(e as u32).filter_map(|c| contact(c).map(|t| (t, c))).reduce(|a, b| {
+                    if b.0 < a.0 {
+                        b
+                    } else {
+                        a
+                    }
+                })
+            };
+            let found = self.tree.min_by_bound(
+                // A contact later than the validity end found exactly would
+                // be dropped below: boxes beyond it are never opened (most
+                // rays end at a joint, long before the next contact).
+                |b| {
+                    walk.box_bound(self.reach, &self.extent, b)
+                        .filter(|&t| t <= t_first + 2.0 * walk.eps)
+                        .map(|t| (t, 0))
+                },
+                key,
+            );
+            let Some((_, (t, first))) = found else { break };
+            if t > t_first + 2.0 * walk.eps {
+                break;
+            }
+            let limit = t + 2.0 * walk.eps;
+            let window = walk.ball_box(self.reach, 0.0).union(&walk.ball_box(self.reach, limit));
+            // The earliest's own class always, so that every round without
+            // a contact sets at least one class aside and the loop ends.
+            let mut near: Vec<ClassId> = vec![first];
+            self.tree.visit_overlapping(&window, |e| {
+                if !excluded(e as u32) {
+                    near.extend(self.classes_of_edge(e as u32).filter(|&c| contact(c).is_some_and(|tc| tc <= limit)));
+                }
+                ControlFlow::<()>::Continue(())
+            });
+            near.sort_unstable();
+            near.dedup();
+            let mut hit = false;
+            for c in near {
+                match self.contact_on_ray(node, ray, &re, c) {
+                    Some(q) => {
+                        offer(q, &mut best);
+                        hit = true;
+                    }
+                    None => rejected.push(c),
+                }
+            }
+            if hit {
+                break;
             }
         }
         match best {
