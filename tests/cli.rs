@@ -464,3 +464,40 @@ fn axis_and_offsets_under_a_ball() {
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("is an arc"));
 }
+
+#[test]
+fn voronoi_under_a_ball() {
+    let dir = scratch("ball_voronoi");
+    let sites = dir.join("sites.json");
+    // Two points under the square: split by x = 1 (one edge or a few on
+    // that line, the region beyond |y| = 1 where they tie given to one).
+    std::fs::write(&sites, r#"{"points": [[0, 0], [2, 0]], "curves": [[[0, 3, 0], [2, 3, 0]]]}"#).unwrap();
+    let json = dir.join("vd.json");
+    let out = medax().arg("voronoi").arg(&sites).args(["--ball", "square", "--json"]).arg(&json).output().unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(stdout.contains("4-gon ball") && stdout.contains("3 sites"), "{stdout}");
+    let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let edges = doc["edges"].as_array().unwrap();
+    let nodes = doc["nodes"].as_array().unwrap();
+    let between: Vec<&serde_json::Value> = edges
+        .iter()
+        .filter(|e| e["sides"].as_array().unwrap().iter().all(|s| s == "point 0" || s == "point 1"))
+        .collect();
+    assert!(!between.is_empty(), "{doc}");
+    for e in &between {
+        for s in e["samples"].as_array().unwrap() {
+            let (x, y, r) = (s[0].as_f64().unwrap(), s[1].as_f64().unwrap(), s[2].as_f64().unwrap());
+            // Both points at the radius (L∞); on the line x = 1 where |y| < 1.
+            assert!((x.abs().max(y.abs()) - r).abs() < 1e-12 && ((x - 2.0).abs().max(y.abs()) - r).abs() < 1e-12);
+            assert!(y.abs() >= 1.0 || (x - 1.0).abs() < 1e-12, "{e}");
+        }
+        assert!(e["from"].as_u64().unwrap() < nodes.len() as u64);
+    }
+    assert!(nodes.iter().any(|n| n["frontier"] == true));
+    // Arcs are refused, naming the site.
+    std::fs::write(&sites, r#"{"points": [[0, 0]], "curves": [[[0, 3, 0.5], [2, 3, 0]]]}"#).unwrap();
+    let out = medax().arg("voronoi").arg(&sites).args(["--ball", "square"]).output().unwrap();
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("curve site 0: element 0 is an arc"));
+}

@@ -31,13 +31,7 @@ fuzz_target!(|input: (Vec<(i8, i8)>, Vec<(i8, i8)>)| {
     }
     // The gauge is 1/inradius-Lipschitz: rounding the node's position by ε
     // changes its distance by up to ε/inradius.
-    let bv = ball.vertices();
-    let inradius = (0..bv.len())
-        .map(|i| {
-            let (p, q) = (bv[i], bv[(i + 1) % bv.len()]);
-            p.cross(q).abs() / (q - p).norm()
-        })
-        .fold(f64::INFINITY, f64::min);
+    let inradius = ball.inradius();
     let tol = 1e-9 * shape.bbox().diagonal() / inradius.min(1.0);
     for n in &axis.nodes {
         let d = edges.iter().map(|&(a, b)| ball.distance_to_segment(n.at, a, b)).fold(f64::INFINITY, f64::min);

@@ -7,7 +7,8 @@ use medax::plane::read_sites;
 use medax::plane::AxisOptions;
 use medax::plane::Sites;
 use medax::plane::{voronoi, VoronoiOptions};
-use medax::shape::{BoxTree, Drawing2d, DrawingOptions, Shape2d, ShapeOptions, Vertex};
+use medax::polymetric::{voronoi_with_ball, BallVoronoiOptions};
+use medax::shape::{Ball2, BoxTree, Drawing2d, DrawingOptions, Shape2d, ShapeOptions, Vertex};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -34,6 +35,10 @@ pub struct VoronoiArgs {
     /// Leave out self-edges (points with two nearest points on one site).
     #[arg(long)]
     pub no_self_edges: bool,
+    /// The unit ball of the metric (points, segments and polygons only): square, diamond, triangle,
+    /// ngon:K[:DEGREES], ball JSON text, or a file of ball JSON. Default: the Euclidean disk.
+    #[arg(long)]
+    pub ball: Option<String>,
     /// Absolute touching tolerance in model units (default: 1e-9 × the sites' bounding-box diagonal;
     /// the sample tolerance's default is relative to that diagonal too).
     #[arg(long)]
@@ -111,6 +116,10 @@ fn parts(shapes: &[Shape2d]) -> Vec<&Shape2d> {
 pub fn run(args: &VoronoiArgs) -> Result<(), ExitCode> {
     let name = args.sites.display();
     let (sites, boundary) = load(args)?;
+    if let Some(spec) = &args.ball {
+        let ball = super::ball::load_ball(spec)?;
+        return run_ball(args, &sites, boundary, &ball);
+    }
     let opts = VoronoiOptions {
         axis: AxisOptions { seed: args.run.seed, ..AxisOptions::default() },
         shape: ShapeOptions { tolerance: args.tolerance, ..ShapeOptions::default() },
@@ -148,6 +157,37 @@ pub fn run(args: &VoronoiArgs) -> Result<(), ExitCode> {
     }
     if let Some(path) = &args.svg {
         write_file(path, &vd.to_svg(900.0, tol, !args.no_self_edges))?;
+        out!("wrote {}", path.display());
+    }
+    Ok(())
+}
+
+/// The diagram under a polygon ball (thesis chapter 3's distance).
+fn run_ball(args: &VoronoiArgs, sites: &Sites, boundary: Option<Vec<Vertex>>, ball: &Ball2) -> Result<(), ExitCode> {
+    let name = args.sites.display();
+    if args.svg.is_some() {
+        eprintln!("medax: --svg is not drawn under --ball yet; --json writes the diagram");
+        return Err(ExitCode::from(2));
+    }
+    let opts =
+        BallVoronoiOptions { shape: ShapeOptions { tolerance: args.tolerance, ..ShapeOptions::default() }, boundary };
+    let t = Instant::now();
+    let vd = voronoi_with_ball(sites, ball, &opts).map_err(|e| {
+        eprintln!("medax: {name}: {e}");
+        ExitCode::from(1)
+    })?;
+    let took = t.elapsed().as_secs_f64();
+    let between = vd.site_edges().count();
+    let selfs = vd.edges.iter().filter(|e| e.self_edge).count();
+    let unbounded = vd.frontier.iter().filter(|&&f| f).count();
+    out!(
+        "voronoi diagram under a {}-gon ball: {} sites, {between} edges between sites, {selfs} self-edges, {unbounded} running to infinity",
+        ball.len(),
+        sites.len()
+    );
+    out!("computed in {took:.3} s ({} elements)", vd.shape().element_count());
+    if let Some(path) = &args.json {
+        write_streamed(path, |w| vd.write_json(!args.no_self_edges, w))?;
         out!("wrote {}", path.display());
     }
     Ok(())

@@ -159,7 +159,7 @@ impl Tracer<'_, '_> {
         for e in 0..pb.edge_count() as u32 {
             // A bit per edge, not a scan of the traced edges: this loop
             // runs for every edge.
-            if self.named[e as usize] {
+            if self.named[e as usize] || pb.degenerate[e as usize] {
                 continue;
             }
             let (a, b) = pb.edge(e);
@@ -217,7 +217,6 @@ impl Tracer<'_, '_> {
 /// # Errors
 ///
 /// [`BallAxisError::Arc`] for arcs (flatten them first),
-/// [`BallAxisError::NotRegion`] for point and curve sites, and
 /// [`BallAxisError::Inconsistent`] if the tracing breaks down (a bug).
 pub fn medial_axis_with_ball(shape: &Shape2d, ball: &Ball2) -> Result<BallAxis, BallAxisError> {
     let pb = Problem::new(shape, ball)?;

@@ -14,7 +14,8 @@ pub enum BallAxisError {
         /// Element in the loop.
         i: usize,
     },
-    /// Loop `l` is a point or curve site, not a region.
+    /// Loop `l` is a point or curve site, not a region (offsets under a
+    /// ball are of regions).
     NotRegion {
         /// Loop.
         l: usize,

@@ -21,7 +21,8 @@
 //!   decision).
 //! * `build.rs`: the driver; `graph.rs`: the output graph; `json.rs` and
 //!   `draw.rs`: the axis JSON and SVG; `offset.rs`: trimmed inner offsets
-//!   from the axis; `outer.rs`: outer offsets from the complement's axis.
+//!   from the axis; `outer.rs`: outer offsets from the complement's axis;
+//!   `voronoi.rs`: Voronoi diagrams of point, segment and polygon sites.
 //!
 //! ```
 //! use medax::polymetric::{medial_axis_with_ball, BallNodeKind};
@@ -48,6 +49,7 @@ mod offset;
 mod outer;
 mod problem;
 mod trace;
+mod voronoi;
 
 pub use build::medial_axis_with_ball;
 pub use classes::{BallFeature, ClassKind, ContactClass, ShapeFeature};
@@ -55,3 +57,4 @@ pub use error::BallAxisError;
 pub use graph::{BallAxis, BallEdge, BallNode, BallNodeKind};
 pub use offset::{BallOffsetLayer, BallOffsetLoop, BallOffsetRegion};
 pub use outer::outer_offset;
+pub use voronoi::{voronoi_with_ball, BallVoronoi, BallVoronoiError, BallVoronoiOptions};

@@ -140,8 +140,30 @@ impl Problem<'_> {
         let grow = 1e-9 * r * self.reach + slack;
         let query =
             BBox::of_points(at + Point::new(r * e[0], r * e[2]), at + Point::new(r * e[1], r * e[3])).inflate(grow);
+        // At a corner only the classes of its own vertex are tied: a curve
+        // site's way back passes through the same point (radius 0 too),
+        // but on the other side of the curve.
+        let own_vertex = if corner {
+            match self.classes[reference as usize].shape {
+                ShapeFeature::Edge(e) => [e, self.next(e)]
+                    .into_iter()
+                    .find(|&v| HPoint::at(&self.shape_units.vec(self.pts[v as usize])).same(&p)),
+                ShapeFeature::Vertex(v) => Some(v),
+            }
+        } else {
+            None
+        };
         let mut tied: Vec<Tied> = Vec::new();
         for c in self.classes_near(&query) {
+            if let Some(v) = own_vertex {
+                let at_v = match self.classes[c as usize].shape {
+                    ShapeFeature::Edge(e) => e == v || self.next(e) == v,
+                    ShapeFeature::Vertex(x) => x == v,
+                };
+                if !at_v {
+                    continue;
+                }
+            }
             // The f64 filter first: a class whose radius at the node or
             // validity misses by more than the slack is not tied (near the
             // middle of a large shape the box holds many edges, and each

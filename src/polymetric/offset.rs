@@ -249,6 +249,11 @@ impl BallAxis {
     /// say which offset): loops of straight elements with regions, empty
     /// past the largest radius. `shape` is the shape the axis is of.
     pub fn offset(&self, shape: &Shape2d, d: f64) -> Result<BallOffsetLayer, BallAxisError> {
+        // The level set of a point or curve site's distance is a loop
+        // round the site, not a ring the walk below builds.
+        if let Some(l) = shape.loops().iter().position(|lp| lp.kind() != crate::shape::LoopKind::Region) {
+            return Err(BallAxisError::NotRegion { l });
+        }
         let empty = BallOffsetLayer { distance: d, loops: Vec::new(), regions: Vec::new() };
         if self.edges.is_empty() || d.is_nan() || d <= 0.0 {
             return Ok(empty);

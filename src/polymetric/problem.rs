@@ -22,6 +22,9 @@ pub(crate) struct Problem<'a> {
     /// Loop `l` holds vertices `offsets[l]..offsets[l + 1]`.
     pub offsets: Vec<usize>,
     pub reflex: Vec<bool>,
+    /// `degenerate[e]`: edge `e` is a point site's zero-length element; its
+    /// class (kept so that class `e` stays edge `e`'s) is never a contact.
+    pub degenerate: Vec<bool>,
     pub classes: Vec<ContactClass>,
     /// EV classes of vertex `v`: `ev[v]..ev[v + 1]` (empty unless reflex).
     ev: Vec<u32>,
@@ -46,10 +49,9 @@ impl<'a> Problem<'a> {
     pub(crate) fn new(shape: &Shape2d, ball: &'a Ball2) -> Result<Problem<'a>, BallAxisError> {
         let mut pts = Vec::with_capacity(shape.element_count());
         let mut offsets = vec![0];
+        let mut point = Vec::new();
         for (l, lp) in shape.loops().iter().enumerate() {
-            if lp.kind() != crate::shape::LoopKind::Region {
-                return Err(BallAxisError::NotRegion { l });
-            }
+            point.push(lp.kind() == crate::shape::LoopKind::Point);
             for (i, v) in lp.vertices().iter().enumerate() {
                 if v.bulge != 0.0 {
                     return Err(BallAxisError::Arc { l, i: shape.input_element_index(l, i) });
@@ -59,11 +61,14 @@ impl<'a> Problem<'a> {
             offsets.push(pts.len());
         }
         let n = pts.len();
+        let degenerate: Vec<bool> =
+            (0..offsets.len() - 1).flat_map(|l| std::iter::repeat_n(point[l], offsets[l + 1] - offsets[l])).collect();
         let mut p = Problem {
             ball,
             pts,
             offsets,
             reflex: vec![false; n],
+            degenerate,
             classes: Vec::with_capacity(n),
             ev: Vec::with_capacity(n + 1),
             shape_units: Units::covering([]),
@@ -96,8 +101,22 @@ impl<'a> Problem<'a> {
             p.ev.push(p.classes.len() as u32);
             let (prev, next) = (p.pts[p.prev(v as u32) as usize], p.pts[p.next(v as u32) as usize]);
             let here = p.pts[v];
-            p.reflex[v] = FilteredKernel.orientation(prev, here, next) == Orientation::Right;
+            // A point site's vertex faces every way (its fan of normals is
+            // a whole turn); a curve site's ends are cusps (a fan of π,
+            // which the cross-product test below picks out as it is).
+            let (point, cusp) = (p.degenerate[v], prev == next);
+            p.reflex[v] = point || cusp || FilteredKernel.orientation(prev, here, next) == Orientation::Right;
             if !p.reflex[v] {
+                continue;
+            }
+            if point {
+                for i in 0..k {
+                    p.classes.push(ContactClass {
+                        kind: ClassKind::EV,
+                        shape: ShapeFeature::Vertex(v as u32),
+                        ball: BallFeature::Edge(i),
+                    });
+                }
                 continue;
             }
             // Ball edges whose outward normal lies strictly inside the fan
@@ -168,7 +187,10 @@ impl<'a> Problem<'a> {
     /// Every class whose contact can lie on edge `e` (closed): its own, and
     /// the EV classes of its two end points.
     pub(crate) fn classes_of_edge(&self, e: u32) -> impl Iterator<Item = ClassId> + '_ {
-        std::iter::once(e).chain(self.ev_classes(e)).chain(self.ev_classes(self.next(e)))
+        let own = (!self.degenerate[e as usize]).then_some(e);
+        // A point site's element starts and ends at its one vertex.
+        let end = (!self.degenerate[e as usize]).then(|| self.ev_classes(self.next(e))).into_iter().flatten();
+        own.into_iter().chain(self.ev_classes(e)).chain(end)
     }
 
     /// The edges a class's contact lies on: its edge, or both edges at its vertex.

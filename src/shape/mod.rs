@@ -41,6 +41,7 @@ pub use model::error::{Degeneracy, ElementRef, ShapeError};
 pub use model::joints::{classify, turning_angle, JointKind};
 pub use model::loose::LooseElement;
 pub use model::options::ShapeOptions;
+pub use model::sites::{SiteId, Sites, VoronoiEdge};
 pub use shape2d::{ElementSpec, Shape2d};
 
 /// Largest absolute coordinate medax accepts, in model units (vertices and

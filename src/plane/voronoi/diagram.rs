@@ -6,8 +6,8 @@ use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Point;
 use crate::plane::axis::{MedialAxis2d, Primitive};
 use crate::plane::voronoi::regions::{site_regions, SiteRegion};
-use crate::plane::voronoi::sites::{SiteId, VoronoiEdge};
 use crate::shape::{ChainTree, Shape2d};
+use crate::shape::{SiteId, VoronoiEdge};
 
 /// The Voronoi diagram of a set of sites.
 #[derive(Debug, Clone)]

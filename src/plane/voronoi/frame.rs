@@ -12,8 +12,8 @@
 
 use crate::kernel::{BBox, FilteredKernel, Kernel, Orientation, Point};
 use crate::plane::voronoi::diagram::VoronoiDiagram;
-use crate::plane::voronoi::sites::{SiteId, Sites};
 use crate::shape::{Element, Loop, Vertex, MAX_COORDINATE};
+use crate::shape::{SiteId, Sites};
 
 /// The first frame's radius in sites' diagonals. Disks near the frame
 /// have radii of its size, and constructing the ones that touch two sites

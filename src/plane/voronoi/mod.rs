@@ -23,16 +23,14 @@ pub(crate) mod draw;
 pub(crate) mod frame;
 pub(crate) mod json;
 pub(crate) mod regions;
-pub(crate) mod sites;
 
+pub use crate::shape::{SiteId, Sites, VoronoiEdge};
 pub use diagram::VoronoiDiagram;
-pub use sites::{SiteId, Sites, VoronoiEdge};
 
 use crate::kernel::tolerance::Tolerance;
-use crate::kernel::BBox;
 use crate::plane::medial::conquer::{medial_axis, AxisError, AxisOptions};
 use crate::plane::voronoi::frame::{frame_loop, FrameCheck};
-use crate::shape::{Element, Loop, Shape2d, ShapeError, ShapeOptions, Vertex};
+use crate::shape::{Shape2d, ShapeError, ShapeOptions, Vertex};
 
 /// Options for [`voronoi`].
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -142,7 +140,7 @@ fn voronoi_from(sites: &Sites, opts: &VoronoiOptions, shape_only: bool) -> Resul
         return Err(VoronoiError::NoSites);
     }
     check_finite(sites)?;
-    let bbox = sites_bbox(sites);
+    let bbox = sites.bbox();
     // The length every relative quantity is measured against: the sites'
     // diagonal, or for sites at a single place a unit that keeps the
     // coordinates' digits.
@@ -154,10 +152,7 @@ fn voronoi_from(sites: &Sites, opts: &VoronoiOptions, shape_only: bool) -> Resul
         _ if bbox.min.is_finite() => Tolerance::unit_at(bbox.min.x.abs().max(bbox.min.y.abs())),
         _ => 1.0,
     };
-    let mut loop_sites = vec![SiteId::Frame];
-    loop_sites.extend((0..sites.regions.len()).map(SiteId::Region));
-    loop_sites.extend((0..sites.curves.len()).map(SiteId::Curve));
-    loop_sites.extend((0..sites.points.len()).map(SiteId::Point));
+    let loop_sites = sites.loop_sites();
     let tolerance = opts.shape.tolerance_for(scale);
     let shape_opts = ShapeOptions { tolerance: Some(tolerance), ..opts.shape };
     let build = |outer: Vec<Vertex>| {
@@ -213,44 +208,8 @@ fn voronoi_from(sites: &Sites, opts: &VoronoiOptions, shape_only: bool) -> Resul
 /// Non-finite numbers are reported for their site before they reach the
 /// frame (whose centre and size come from the sites).
 fn check_finite(sites: &Sites) -> Result<(), VoronoiError> {
-    let bad = |l: usize, site: SiteId, k: usize| {
-        let at = crate::shape::ElementRef { loop_index: l, element: k };
-        Err(VoronoiError::Invalid { site: Some(site), error: ShapeError::NonFinite { at } })
-    };
-    let finite = |v: &Vertex| v.p.is_finite() && v.bulge.is_finite();
-    let (nr, nc) = (sites.regions.len(), sites.curves.len());
-    for (i, r) in sites.regions.iter().enumerate() {
-        if let Some(k) = r.iter().position(|v| !finite(v)) {
-            return bad(1 + i, SiteId::Region(i), k);
-        }
-    }
-    for (i, c) in sites.curves.iter().enumerate() {
-        if let Some(k) = c.iter().position(|v| !finite(v)) {
-            return bad(1 + nr + i, SiteId::Curve(i), k);
-        }
-    }
-    match sites.points.iter().position(|p| !p.is_finite()) {
-        Some(i) => bad(1 + nr + nc + i, SiteId::Point(i), 0),
+    match sites.first_non_finite() {
+        Some((site, at)) => Err(VoronoiError::Invalid { site: Some(site), error: ShapeError::NonFinite { at } }),
         None => Ok(()),
     }
-}
-
-/// Bounding box of every site's vertices and elements.
-fn sites_bbox(sites: &Sites) -> BBox {
-    let mut b = BBox::EMPTY;
-    for &p in &sites.points {
-        b.add_point(p);
-    }
-    for l in sites.regions.iter() {
-        b = b.union(&Loop::new(l.clone()).bbox());
-    }
-    for c in &sites.curves {
-        for w in c.windows(2) {
-            b = b.union(&Element::from_bulge(w[0].p, w[1].p, w[0].bulge).bbox());
-        }
-        if let [v] = c.as_slice() {
-            b.add_point(v.p);
-        }
-    }
-    b
 }

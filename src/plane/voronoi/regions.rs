@@ -7,7 +7,7 @@
 use crate::kernel::fan::cw_angle;
 use crate::kernel::Point;
 use crate::plane::axis::MedialAxis2d;
-use crate::plane::voronoi::sites::{SiteId, VoronoiEdge};
+use crate::shape::{SiteId, VoronoiEdge};
 
 /// The region of one site.
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -199,6 +199,20 @@ impl Ball2 {
             && (0..n).all(|i| self.vertices[(i + n / 2) % n] == Point::new(-self.vertices[i].x, -self.vertices[i].y))
     }
 
+    /// The radius of the largest disk about the origin inside the ball (the
+    /// least distance from the origin to an edge's line): the gauge is
+    /// 1/inradius-Lipschitz, so a position rounded by ε moves a distance
+    /// by at most ε/inradius.
+    pub fn inradius(&self) -> f64 {
+        let n = self.len();
+        (0..n)
+            .map(|i| {
+                let (p, q) = (self.vertices[i], self.vertices[(i + 1) % n]);
+                p.cross(q).abs() / (q - p).norm()
+            })
+            .fold(f64::INFINITY, f64::min)
+    }
+
     /// The vertices of the ball `c + r·B` (model units), counter-clockwise.
     pub fn placed(&self, c: Point, r: f64) -> Vec<Point> {
         self.vertices.iter().map(|&v| c + v * r).collect()

@@ -8,3 +8,4 @@ pub(crate) mod joints;
 pub(crate) mod loose;
 pub(crate) mod options;
 pub(crate) mod per_element;
+pub(crate) mod sites;
