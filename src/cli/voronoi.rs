@@ -8,7 +8,7 @@ use medax::plane::AxisOptions;
 use medax::plane::Sites;
 use medax::plane::{voronoi, VoronoiOptions};
 use medax::polymetric::{voronoi_with_ball, BallVoronoiOptions};
-use medax::shape::{Ball2, BoxTree, Drawing2d, DrawingOptions, Shape2d, ShapeOptions, Vertex};
+use medax::shape::{Ball2, BoxTree, Drawing2d, DrawingOptions, Shape2d, ShapeOptions, SiteId, Vertex};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -178,7 +178,8 @@ fn run_ball(args: &VoronoiArgs, sites: &Sites, boundary: Option<Vec<Vertex>>, ba
     })?;
     let took = t.elapsed().as_secs_f64();
     let between = vd.site_edges().count();
-    let selfs = vd.edges.iter().filter(|e| e.self_edge).count();
+    // The library's frame has an axis of its own (its corners): not the sites'.
+    let selfs = vd.edges.iter().filter(|e| e.self_edge && !(vd.auto_frame && e.sides[0] == SiteId::Frame)).count();
     let unbounded = vd.frontier.iter().filter(|&&f| f).count();
     out!(
         "voronoi diagram under a {}-gon ball: {} sites, {between} edges between sites, {selfs} self-edges, {unbounded} running to infinity",
