@@ -9,7 +9,8 @@ fn main() {
     let k: usize = a.get(2).and_then(|s| s.parse().ok()).unwrap_or(4);
     let seed: u64 = a.get(3).and_then(|s| s.parse().ok()).unwrap_or(1);
     let s = Shape2d::from_bulge_loops(samples::star_polygon(n, seed), &ShapeOptions::default()).unwrap();
-    let ball = Ball2::regular(k, 0.1).unwrap();
+    let rot: f64 = a.get(4).and_then(|s| s.parse().ok()).unwrap_or(0.1);
+    let ball = Ball2::regular(k, rot).unwrap();
     let t = Instant::now();
     let ax = medial_axis_with_ball(&s, &ball).unwrap();
     let dt = t.elapsed().as_secs_f64();

@@ -17,6 +17,7 @@
 //! where the combinatorics are fixed once (a node's contact classes).
 
 use super::bigint::{lowest_bit_exponent, BigInt};
+use super::xfloat::{sign_or, Fx};
 use super::Point;
 use std::cmp::Ordering;
 
@@ -77,8 +78,42 @@ impl IVec {
         &(&self.x * &o.y) - &(&self.y * &o.x)
     }
 
+    /// The sign of `self · o`, filtered.
+    pub(crate) fn dot_sign(&self, o: &IVec) -> Ordering {
+        let f = self.fx()[0] * o.fx()[0] + self.fx()[1] * o.fx()[1];
+        sign_or(f, || self.dot(o).signum())
+    }
+
+    /// The sign of `self × o`, filtered.
+    pub(crate) fn cross_sign(&self, o: &IVec) -> Ordering {
+        let f = self.fx()[0] * o.fx()[1] - self.fx()[1] * o.fx()[0];
+        sign_or(f, || self.cross(o).signum())
+    }
+
+    /// The components as filter values.
+    pub(crate) fn fx(&self) -> [Fx; 2] {
+        [Fx::of(&self.x), Fx::of(&self.y)]
+    }
+
     pub(crate) fn add(&self, o: &IVec) -> IVec {
         IVec::new(&self.x + &o.x, &self.y + &o.y)
+    }
+
+    /// A direction strictly between the nonzero `self` and `o` (less than
+    /// a half turn apart): their sum after scaling the shorter by a power
+    /// of two to the other's size. A plain sum of a long and a short
+    /// vector lies almost on the long one, where every comparison along
+    /// it is nearly a tie and only the exact fallback decides.
+    pub(crate) fn add_balanced(&self, o: &IVec) -> IVec {
+        let (a, b) = (self.magnitude_bits(), o.magnitude_bits());
+        let up = |v: &IVec, k: i64| if k > 0 { v.scale(&BigInt::from_shifted(false, 1, k as u32)) } else { v.clone() };
+        up(self, b - a).add(&up(o, a - b))
+    }
+
+    /// The exponent of the larger component's leading bit.
+    fn magnitude_bits(&self) -> i64 {
+        let bits = |b: &BigInt| if b.is_zero() { i64::MIN / 2 } else { b.approx().1 };
+        bits(&self.x).max(bits(&self.y))
     }
 
     pub(crate) fn sub(&self, o: &IVec) -> IVec {
@@ -115,7 +150,7 @@ pub(crate) fn cmp_angle(u: &IVec, v: &IVec) -> Ordering {
             _ => 1,
         }
     };
-    half(u).cmp(&half(v)).then_with(|| Ordering::Equal.cmp(&u.cross(v).signum()))
+    half(u).cmp(&half(v)).then_with(|| Ordering::Equal.cmp(&u.cross_sign(v)))
 }
 
 /// The line `n · p + c = 0` (`n ≠ 0`); `n · p + c > 0` is its positive side.
@@ -137,7 +172,9 @@ impl ILine {
 
     /// Which side of the line `p` lies on (`Equal`: on it).
     pub(crate) fn side(&self, p: &HPoint) -> Ordering {
-        self.value(p).signum()
+        let [nx, ny] = self.n.fx();
+        let f = nx * Fx::of(&p.x) + ny * Fx::of(&p.y) + Fx::of(&self.c) * Fx::of(&p.w);
+        sign_or(f, || self.value(p).signum())
     }
 
     /// The point where the two lines meet; `None` when they are parallel.
@@ -187,6 +224,14 @@ impl HPoint {
 
     /// Sign of `(o − self) · d`: whether `o` lies ahead of `self` along `d`.
     pub(crate) fn along(&self, o: &HPoint, d: &IVec) -> Ordering {
+        let [sx, sy, sw] = [&self.x, &self.y, &self.w].map(Fx::of);
+        let [ox, oy, ow] = [&o.x, &o.y, &o.w].map(Fx::of);
+        let [vx, vy] = d.fx();
+        let f = (ox * sw - sx * ow) * vx + (oy * sw - sy * ow) * vy;
+        sign_or(f, || self.along_exact(o, d))
+    }
+
+    fn along_exact(&self, o: &HPoint, d: &IVec) -> Ordering {
         let dx = &(&o.x * &self.w) - &(&self.x * &o.w);
         let dy = &(&o.y * &self.w) - &(&self.y * &o.w);
         (&(&dx * &d.x) + &(&dy * &d.y)).signum()

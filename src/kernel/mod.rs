@@ -45,6 +45,7 @@ pub mod growing_disk;
 mod point;
 mod site_piece;
 pub mod tolerance;
+pub(crate) mod xfloat;
 
 pub use axis_kernel::{AxisKernel, CarrierSide, Contact};
 pub use bbox::BBox;

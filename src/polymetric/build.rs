@@ -75,48 +75,95 @@ impl Tracer<'_, '_> {
         id
     }
 
+    /// Traces every pending ray, in rounds: the rays pending at the start
+    /// of a round are traced in parallel, the new nodes they reach are
+    /// analysed in parallel, then the edges are recorded in the order the
+    /// rays were taken (so the result does not depend on the threads). A
+    /// ray whose partner (the ray back from its far end) was traced in the
+    /// same round is dropped: the partner's edge is the same.
     fn run(&mut self, limit: usize) -> Result<(), BallAxisError> {
-        while let Some((id, j)) = self.work.pop() {
-            if self.nodes[id].rays[j].traced {
-                continue;
+        use rayon::prelude::*;
+        loop {
+            let mut batch: Vec<(usize, usize)> = std::mem::take(&mut self.work);
+            batch.retain(|&(id, j)| !self.nodes[id].rays[j].traced);
+            if batch.is_empty() {
+                return Ok(());
             }
-            self.nodes[id].rays[j].traced = true;
-            let (q, reference) = self.pb.trace(&self.nodes[id], &self.nodes[id].rays[j])?;
-            let to = match self.landing_before(id, j, &q).or_else(|| self.find(&q)) {
-                Some(t) => t,
-                None => {
-                    if self.nodes.len() >= limit {
-                        return Err(BallAxisError::Inconsistent {
-                            at: self.nodes[id].at,
-                            what: "more nodes than the size bound O(n + r·k) allows",
+            let (pb, nodes) = (self.pb, &self.nodes);
+            let reached: Vec<Result<(HPoint, ClassId), BallAxisError>> =
+                batch.par_iter().map(|&(id, j)| pb.trace(&nodes[id], &nodes[id].rays[j])).collect();
+            // Where each ray lands: an existing node or a new one (several
+            // rays of a round can reach the same new node).
+            let mut fresh: Vec<(HPoint, ClassId)> = Vec::new();
+            let mut fresh_cells: FastMap<(i64, i64), Vec<usize>> = FastMap::default();
+            let mut targets: Vec<usize> = Vec::with_capacity(batch.len());
+            for (&(id, j), r) in batch.iter().zip(reached) {
+                let (q, reference) = r?;
+                let to = match self.landing_before(id, j, &q).or_else(|| self.find(&q)) {
+                    Some(t) => t,
+                    None => {
+                        let at = q.approx(self.pb.shape_units);
+                        let (cx, cy) = self.key(at.x, at.y);
+                        let seen = (-1..=1)
+                            .flat_map(|dx| (-1..=1).map(move |dy| (cx + dx, cy + dy)))
+                            .filter_map(|c| fresh_cells.get(&c))
+                            .flatten()
+                            .copied()
+                            .find(|&k| fresh[k].0.same(&q));
+                        let k = seen.unwrap_or_else(|| {
+                            fresh_cells.entry((cx, cy)).or_default().push(fresh.len());
+                            fresh.push((q, reference));
+                            fresh.len() - 1
                         });
+                        self.nodes.len() + k
                     }
-                    let node = self.pb.analyse(q, reference);
-                    self.insert(node)
-                }
-            };
-            let ray = &self.nodes[id].rays[j];
-            let (dir, left, right, carrier) = (ray.dir.neg(), ray.left, ray.right, ray.carrier.clone());
-            let back = self.nodes[to]
-                .rays
-                .iter()
-                .position(|b| b.dir.cross(&dir).is_zero() && b.dir.dot(&dir).signum() == Ordering::Greater);
-            match back {
-                Some(b) if !self.nodes[to].rays[b].traced => self.nodes[to].rays[b].traced = true,
-                _ => {
-                    return Err(BallAxisError::Inconsistent {
-                        at: self.nodes[to].at,
-                        what: "an edge of the axis arrives where its node has no ray back",
-                    })
-                }
+                };
+                targets.push(to);
             }
-            for c in [left, right] {
-                if let Some(x) = self.named.get_mut(c as usize) {
-                    *x = true;
-                }
+            if self.nodes.len() + fresh.len() > limit {
+                return Err(BallAxisError::Inconsistent {
+                    at: self.nodes[batch[0].0].at,
+                    what: "more nodes than the size bound O(n + r·k) allows",
+                });
             }
-            self.edges.push(Traced { from: id, to, left, right, carrier });
+            let analysed: Vec<Node> = fresh.into_par_iter().map(|(q, reference)| pb.analyse(q, reference)).collect();
+            for node in analysed {
+                self.insert(node);
+            }
+            for (&(id, j), to) in batch.iter().zip(targets) {
+                if self.nodes[id].rays[j].traced {
+                    continue;
+                }
+                self.nodes[id].rays[j].traced = true;
+                self.connect(id, j, to)?;
+            }
         }
+    }
+
+    /// Records the edge traced along ray `j` of node `id` to node `to`,
+    /// marking the ray back from `to` as traced.
+    fn connect(&mut self, id: usize, j: usize, to: usize) -> Result<(), BallAxisError> {
+        let ray = &self.nodes[id].rays[j];
+        let (dir, left, right, carrier) = (ray.dir.neg(), ray.left, ray.right, ray.carrier.clone());
+        let back = self.nodes[to]
+            .rays
+            .iter()
+            .position(|b| b.dir.cross_sign(&dir) == Ordering::Equal && b.dir.dot_sign(&dir) == Ordering::Greater);
+        match back {
+            Some(b) if !self.nodes[to].rays[b].traced => self.nodes[to].rays[b].traced = true,
+            _ => {
+                return Err(BallAxisError::Inconsistent {
+                    at: self.nodes[to].at,
+                    what: "an edge of the axis arrives where its node has no ray back",
+                })
+            }
+        }
+        for c in [left, right] {
+            if let Some(x) = self.named.get_mut(c as usize) {
+                *x = true;
+            }
+        }
+        self.edges.push(Traced { from: id, to, left, right, carrier });
         Ok(())
     }
 
@@ -231,15 +278,17 @@ pub fn medial_axis_with_ball(shape: &Shape2d, ball: &Ball2) -> Result<BallAxis, 
         work: Vec::new(),
         landings: Vec::new(),
     };
-    for v in 0..n as u32 {
-        if pb.reflex[v as usize] {
-            continue;
-        }
-        let p = HPoint::at(&pb.shape_units.vec(pb.pts[v as usize]));
-        let node = pb.analyse(p, v);
-        if !node.rays.is_empty() {
-            t.insert(node);
-        }
+    let seeds: Vec<Node> = {
+        use rayon::prelude::*;
+        (0..n as u32)
+            .into_par_iter()
+            .filter(|&v| !pb.reflex[v as usize])
+            .map(|v| pb.analyse(HPoint::at(&pb.shape_units.vec(pb.pts[v as usize])), v))
+            .filter(|node| !node.rays.is_empty())
+            .collect()
+    };
+    for node in seeds {
+        t.insert(node);
     }
     let limit = 64 * (pb.classes.len() + 16);
     t.run(limit)?;

@@ -22,9 +22,9 @@
 use super::classes::{ContactClass, ExactClass, ShapeFeature};
 use super::problem::{ClassId, Problem};
 use crate::kernel::exact_line::{cmp_angle, HPoint, ILine, IVec};
+use crate::kernel::xfloat::{sign_or, Fx};
 use crate::kernel::{BBox, BigInt, Point};
 use std::cmp::Ordering;
-use std::ops::ControlFlow;
 
 /// A ray of the axis out of a node.
 #[derive(Debug, Clone)]
@@ -55,9 +55,9 @@ pub(crate) struct Node {
     pub rays: Vec<Ray>,
 }
 
-struct Tied {
+struct Tied<'p> {
     id: ClassId,
-    ex: ExactClass,
+    ex: &'p ExactClass,
     /// Validity lines through the node.
     active: Vec<usize>,
 }
@@ -65,7 +65,13 @@ struct Tied {
 /// `(n_a·x)·h_b` against `(n_b·x)·h_a`: `Less` when class `a` grows slower along `x`.
 fn cmp_slope(a: &ExactClass, b: &ExactClass, x: &IVec) -> Ordering {
     // L = −n·x/h, so a grows slower when n_a·x/h_a is larger.
-    (&b.n.dot(x) * &a.h).cmp_value(&(&a.n.dot(x) * &b.h))
+    let [xx, xy] = x.fx();
+    let dot = |c: &ExactClass| {
+        let [nx, ny] = c.n.fx();
+        nx * xx + ny * xy
+    };
+    let f = dot(b) * Fx::of(&a.h) - dot(a) * Fx::of(&b.h);
+    sign_or(f, || (&b.n.dot(x) * &a.h).cmp_value(&(&a.n.dot(x) * &b.h)))
 }
 
 trait CmpValue {
@@ -88,6 +94,17 @@ pub(crate) fn tie_line(a: &ExactClass, b: &ExactClass) -> Option<ILine> {
 /// `W·(K − n·P)`-type numerator of a class's radius at `p` (denominator `h·W`).
 pub(crate) fn radius_num(c: &ExactClass, p: &HPoint) -> BigInt {
     &(&c.k * &p.w) - &(&(&c.n.x * &p.x) + &(&c.n.y * &p.y))
+}
+
+/// Whether class `c` gives `p` the radius `rn / (h_ref·W)` of the reference class.
+fn same_radius(c: &ExactClass, reference: &ExactClass, rn: &BigInt, p: &HPoint) -> bool {
+    let [nx, ny] = c.n.fx();
+    let num = Fx::of(&c.k) * Fx::of(&p.w) - (nx * Fx::of(&p.x) + ny * Fx::of(&p.y));
+    let f = num * Fx::of(&reference.h) - Fx::of(rn) * Fx::of(&c.h);
+    if f.sign().is_some_and(|s| s != Ordering::Equal) {
+        return false;
+    }
+    &radius_num(c, p) * &reference.h == rn * &c.h
 }
 
 /// Whether `p` satisfies every validity line of `c`.
@@ -113,12 +130,15 @@ impl Problem<'_> {
         }
     }
 
-    /// The classes whose contact may lie in the box (closed edges).
-    pub(crate) fn classes_near(&self, query: &BBox) -> Vec<ClassId> {
+    /// The classes whose contact may lie in the box `query` and within
+    /// `radius` of `at` (closed edges).
+    pub(crate) fn classes_near(&self, at: Point, radius: f64, query: &BBox) -> Vec<ClassId> {
         let mut out = Vec::new();
-        self.tree.visit_overlapping(query, |e| {
-            out.extend(self.classes_of_edge(e as u32));
-            ControlFlow::<()>::Continue(())
+        self.chain.visit_within(at, radius, |r| {
+            let e = self.edge_of(r);
+            if self.edge_box(e).overlaps(query) {
+                out.extend(self.classes_of_edge(e));
+            }
         });
         out.sort_unstable();
         out.dedup();
@@ -131,7 +151,7 @@ impl Problem<'_> {
         let at = p.approx(self.shape_units);
         let re = self.exact(reference);
         let r = self.approx(reference).radius(at).max(0.0);
-        let rn = radius_num(&re, &p);
+        let rn = radius_num(re, &p);
         let corner = rn.is_zero();
         let slack = 1e-7 * self.diag + 1e-9 * r;
         // The ball at + r·B lies in at + r·(the ball's box); every contact
@@ -154,7 +174,7 @@ impl Problem<'_> {
             None
         };
         let mut tied: Vec<Tied> = Vec::new();
-        for c in self.classes_near(&query) {
+        for c in self.classes_near(at, r * self.reach * (1.0 + 1e-9) + 2.0 * grow, &query) {
             if let Some(v) = own_vertex {
                 let at_v = match self.classes[c as usize].shape {
                     ShapeFeature::Edge(e) => e == v || self.next(e) == v,
@@ -175,8 +195,8 @@ impl Problem<'_> {
             if c != reference && ((ac.radius(at) - r).abs() > slack + off || ac.validity(at) < -(slack + off)) {
                 continue;
             }
-            let ex = if c == reference { re.clone() } else { self.exact(c) };
-            if &radius_num(&ex, &p) * &re.h != &rn * &ex.h || !valid_at(&ex, &p) {
+            let ex = self.exact(c);
+            if !same_radius(ex, re, &rn, &p) || !valid_at(ex, &p) {
                 continue;
             }
             let active = (0..ex.valid.len()).filter(|&i| ex.valid[i].side(&p) == Ordering::Equal).collect();
@@ -207,26 +227,29 @@ impl Problem<'_> {
         node
     }
 
-    fn rays(&self, tied: &[Tied], corner: bool) -> Vec<Ray> {
-        // Candidate directions with the line they lie on.
-        let mut dirs: Vec<(IVec, Option<ILine>)> = Vec::new();
+    fn rays(&self, tied: &[Tied<'_>], corner: bool) -> Vec<Ray> {
+        // Candidate directions with the line they lie on, and for a tie
+        // line the two classes it ties: along it their slopes are equal
+        // by construction, which the filter could never certify.
+        type Dir = (IVec, Option<ILine>, Option<(usize, usize)>);
+        let mut dirs: Vec<Dir> = Vec::new();
         for (i, a) in tied.iter().enumerate() {
-            for b in &tied[i + 1..] {
-                if let Some(l) = tie_line(&a.ex, &b.ex) {
+            for (j, b) in tied.iter().enumerate().skip(i + 1) {
+                if let Some(l) = tie_line(a.ex, b.ex) {
                     let d = l.direction();
-                    dirs.push((d.neg(), Some(l.clone())));
-                    dirs.push((d, Some(l)));
+                    dirs.push((d.neg(), Some(l.clone()), Some((i, j))));
+                    dirs.push((d, Some(l), Some((i, j))));
                 }
             }
             for &k in &a.active {
                 let l = a.ex.valid[k].clone();
                 let d = l.direction();
-                dirs.push((d.neg(), Some(l.clone())));
-                dirs.push((d, Some(l)));
+                dirs.push((d.neg(), Some(l.clone()), None));
+                dirs.push((d, Some(l), None));
             }
         }
         for (x, y) in [(1, 0), (0, 1), (-1, 0), (0, -1)] {
-            dirs.push((IVec::small(x, y), None));
+            dirs.push((IVec::small(x, y), None, None));
         }
         dirs.sort_by(|a, b| cmp_angle(&a.0, &b.0).then_with(|| b.1.is_some().cmp(&a.1.is_some())));
         dirs.dedup_by(|b, a| cmp_angle(&a.0, &b.0) == Ordering::Equal);
@@ -234,10 +257,10 @@ impl Problem<'_> {
         // owners[j]: the owner of the gap from dirs[j] to dirs[j + 1].
         let owners: Vec<Option<usize>> = (0..m)
             .map(|j| {
-                let mid = dirs[j].0.add(&dirs[(j + 1) % m].0);
+                let mid = dirs[j].0.add_balanced(&dirs[(j + 1) % m].0);
                 // At a corner the classes' regions reach outside the shape;
                 // only steps into the wedge of its two edges count.
-                let into = !corner || tied.iter().all(|t| t.ex.n.dot(&mid).signum() == Ordering::Less);
+                let into = !corner || tied.iter().all(|t| t.ex.n.dot_sign(&mid) == Ordering::Less);
                 if into {
                     self.owner(tied, &mid, false)
                 } else {
@@ -257,15 +280,20 @@ impl Problem<'_> {
                 continue;
             };
             let d = &dirs[j].0;
+            let tie = dirs[j].2;
+            let slope = |a: usize, b: usize| {
+                if a == b || tie == Some((a.min(b), a.max(b))) {
+                    Ordering::Equal
+                } else {
+                    cmp_slope(tied[a].ex, tied[b].ex, d)
+                }
+            };
             let valid: Vec<usize> = (0..tied.len()).filter(|&i| self.valid_towards(&tied[i], d, true)).collect();
-            let best = valid.iter().copied().min_by(|&a, &b| cmp_slope(&tied[a].ex, &tied[b].ex, d));
+            let best = valid.iter().copied().min_by(|&a, &b| slope(a, b));
             let along = match best {
-                Some(b) => valid
-                    .iter()
-                    .copied()
-                    .filter(|&i| cmp_slope(&tied[i].ex, &tied[b].ex, d) == Ordering::Equal)
-                    .map(|i| tied[i].id)
-                    .collect(),
+                Some(b) => {
+                    valid.iter().copied().filter(|&i| slope(i, b) == Ordering::Equal).map(|i| tied[i].id).collect()
+                }
                 None => Vec::new(),
             };
             rays.push(Ray { dir: d.clone(), carrier, left: tied[l].id, right: tied[r].id, along, traced: false });
@@ -273,8 +301,8 @@ impl Problem<'_> {
         rays
     }
 
-    fn valid_towards(&self, t: &Tied, x: &IVec, closed: bool) -> bool {
-        t.active.iter().all(|&k| match t.ex.valid[k].n.dot(x).signum() {
+    fn valid_towards(&self, t: &Tied<'_>, x: &IVec, closed: bool) -> bool {
+        t.active.iter().all(|&k| match t.ex.valid[k].n.dot_sign(x) {
             Ordering::Greater => true,
             Ordering::Equal => closed,
             Ordering::Less => false,
@@ -283,7 +311,7 @@ impl Problem<'_> {
 
     /// The class owning the step `x` (index into `tied`): valid towards it,
     /// growing slowest, the smaller id on a tie.
-    fn owner(&self, tied: &[Tied], x: &IVec, closed: bool) -> Option<usize> {
+    fn owner(&self, tied: &[Tied<'_>], x: &IVec, closed: bool) -> Option<usize> {
         let mut best: Option<usize> = None;
         for (i, t) in tied.iter().enumerate() {
             if !self.valid_towards(t, x, closed) {
@@ -291,7 +319,7 @@ impl Problem<'_> {
             }
             best = match best {
                 None => Some(i),
-                Some(b) => match cmp_slope(&t.ex, &tied[b].ex, x) {
+                Some(b) => match cmp_slope(t.ex, tied[b].ex, x) {
                     Ordering::Less => Some(i),
                     Ordering::Equal if t.id < tied[b].id => Some(i),
                     _ => Some(b),

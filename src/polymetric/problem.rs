@@ -8,7 +8,9 @@ use super::classes::{ApproxClass, BallFeature, ClassKind, ContactClass, ExactCla
 use super::error::BallAxisError;
 use crate::kernel::exact_line::{ILine, IVec, Units};
 use crate::kernel::{BBox, FilteredKernel, Kernel, Orientation, Point};
-use crate::shape::{Ball2, BoxTree, Shape2d};
+use crate::shape::model::error::ElementRef;
+use crate::shape::{Ball2, ChainTree, Shape2d};
+use std::sync::OnceLock;
 
 /// Class ids: `0..edges` are the edges' VE/EE classes (class `e` belongs to
 /// edge `e`), then the EV classes vertex by vertex.
@@ -31,8 +33,10 @@ pub(crate) struct Problem<'a> {
     pub shape_units: Units,
     pub ball_units: Units,
     ball_ints: Vec<IVec>,
-    /// Edge boxes.
-    pub tree: BoxTree,
+    /// The edges in runs along their loops, bounded by capsules and boxes
+    /// (plain edge boxes fail among long thin spikes, where a point lies in
+    /// the boxes of a fixed fraction of all edges).
+    pub chain: ChainTree,
     /// The shape's diagonal (model units): the scale of the filters' margins.
     pub diag: f64,
     /// Largest |v| over the ball's vertices: c + r·B lies in the disk of
@@ -43,6 +47,8 @@ pub(crate) struct Problem<'a> {
     pub extent: [f64; 4],
     /// Every class in `f64` ([`Problem::approx`]).
     approx: Vec<ApproxClass>,
+    /// The exact classes made so far ([`Problem::exact`]).
+    exact: Vec<OnceLock<Box<ExactClass>>>,
 }
 
 impl<'a> Problem<'a> {
@@ -74,7 +80,7 @@ impl<'a> Problem<'a> {
             shape_units: Units::covering([]),
             ball_units: Units::covering(ball.vertices().iter().flat_map(|v| [v.x, v.y])),
             ball_ints: Vec::new(),
-            tree: BoxTree::new(Vec::new()),
+            chain: ChainTree::new(shape.loops()),
             diag: shape.bbox().diagonal(),
             reach: ball.vertices().iter().map(|v| v.norm()).fold(0.0, f64::max),
             extent: ball
@@ -84,6 +90,7 @@ impl<'a> Problem<'a> {
                     [e[0].min(v.x), e[1].max(v.x), e[2].min(v.y), e[3].max(v.y)]
                 }),
             approx: Vec::new(),
+            exact: Vec::new(),
         };
         p.shape_units = Units::covering(p.pts.iter().flat_map(|v| [v.x, v.y]));
         p.ball_ints = ball.vertices().iter().map(|v| p.ball_units.vec(*v)).collect();
@@ -136,15 +143,20 @@ impl<'a> Problem<'a> {
             }
         }
         p.ev.push(p.classes.len() as u32);
-        let boxes = (0..n as u32)
-            .map(|e| {
-                let (a, b) = p.edge(e);
-                BBox::of_points(a, b)
-            })
-            .collect();
-        p.tree = BoxTree::new(boxes);
         p.approx = (0..p.classes.len() as ClassId).map(|c| p.make_approx(c)).collect();
+        p.exact = (0..p.classes.len()).map(|_| OnceLock::new()).collect();
         Ok(p)
+    }
+
+    /// The edge of the chain tree's element `r`.
+    pub(crate) fn edge_of(&self, r: ElementRef) -> u32 {
+        (self.offsets[r.loop_index] + r.element) as u32
+    }
+
+    /// The edge's box.
+    pub(crate) fn edge_box(&self, e: u32) -> BBox {
+        let (a, b) = self.edge(e);
+        BBox::of_points(a, b)
     }
 
     pub(crate) fn edge_count(&self) -> usize {
@@ -211,8 +223,14 @@ impl<'a> Problem<'a> {
         (self.ball.vertices()[i % k], &self.ball_ints[i % k])
     }
 
-    /// The class's function and validity lines, exact.
-    pub(crate) fn exact(&self, c: ClassId) -> ExactClass {
+    /// The class's function and validity lines, exact: made on first use
+    /// and kept (a class is asked for at every node it ties and every
+    /// trace along it; making one costs a dozen big-integer products).
+    pub(crate) fn exact(&self, c: ClassId) -> &ExactClass {
+        self.exact[c as usize].get_or_init(|| Box::new(self.make_exact(c)))
+    }
+
+    fn make_exact(&self, c: ClassId) -> ExactClass {
         let cl = self.classes[c as usize];
         match (cl.kind, cl.shape, cl.ball) {
             (ClassKind::EV, ShapeFeature::Vertex(v), BallFeature::Edge(i)) => {

@@ -9,8 +9,9 @@
 //! exact and of bounded size however long the walk.
 //!
 //! The second kind is searched in `f64` first: a best-first walk of the
-//! edge box tree for the earliest contact (a box is reached no earlier than
-//! the Euclidean disk around the ball reaches it), then every class whose
+//! chain tree for the earliest contact (a run of edges is reached no
+//! earlier than the disk around the ball reaches its capsule, nor the
+//! ball's box its box or oriented box), then every class whose
 //! `f64` contact comes within a margin (10^-7 of the shape's diagonal) of
 //! the earliest is decided exactly; when the exact test rejects them all
 //! (the margin admits classes whose contact lies just behind the start),
@@ -24,9 +25,18 @@ use super::error::BallAxisError;
 use super::node::{radius_num, tie_line, valid_at, Node, Ray};
 use super::problem::{ClassId, Problem};
 use crate::kernel::exact_line::{HPoint, IVec};
-use crate::kernel::{BBox, Point};
+use crate::kernel::Point;
+use crate::shape::index::chain_tree::RunBounds;
+use crate::shape::model::error::ElementRef;
 use std::cmp::Ordering;
-use std::ops::ControlFlow;
+
+/// Distance from `p` to the segment `a`–`b`.
+fn segment_distance(p: Point, a: Point, b: Point) -> f64 {
+    let d = b - a;
+    let l2 = d.norm2();
+    let t = if l2 > 0.0 { ((p - a).dot(d) / l2).clamp(0.0, 1.0) } else { 0.0 };
+    (p - (a + d * t)).norm()
+}
 
 /// The ray's start in `f64`: position, unit direction, radius and its slope.
 struct Walk {
@@ -70,28 +80,44 @@ impl Walk {
         (c.validity(q) >= -self.eps).then_some(t.max(0.0))
     }
 
-    /// A lower bound on when the ball can reach the box (`None`: never):
-    /// the later of the times the circumscribed disk and the ball's own
-    /// box (`extent`, ball units) can reach it. The box bound is the
-    /// tight one for balls that fill their box (the square exactly); each
-    /// of its four separations is affine in the time, and all four must
-    /// have closed for the boxes to meet.
-    fn box_bound(&self, reach: f64, extent: &[f64; 4], b: &BBox) -> Option<f64> {
-        let gap = b.distance_to(self.at) - self.r * reach * (1.0 + 1e-9) - self.eps;
-        if gap <= 0.0 {
-            return Some(0.0);
-        }
+    /// A lower bound on when the ball can reach a run of edges (`None`:
+    /// never): the latest of the times the circumscribed disk can reach
+    /// the run's capsule, the ball's own box (`extent`, ball units) its
+    /// box, and the disk's box (in the run's frame) its oriented box. The
+    /// box bound is the tight one for balls that fill their box (the
+    /// square exactly), the other two among long thin spikes.
+    fn run_bound(&self, reach: f64, extent: &[f64; 4], run: RunBounds) -> Option<f64> {
+        let (a, b, stray) = run.capsule();
+        let gap = segment_distance(self.at, a, b) - stray - self.r * reach * (1.0 + 1e-9) - self.eps;
         let speed = 1.0 + self.slope * reach * (1.0 + 1e-9);
-        let mut t = if speed > 0.0 { gap / speed } else { return None };
+        let mut t = match (gap <= 0.0, speed > 0.0) {
+            (true, _) => 0.0,
+            (false, true) => gap / speed,
+            (false, false) => return None,
+        };
+        let bb = run.bbox();
+        t = t.max(self.box_bound(self.at, self.dir, extent, bb.min, bb.max)?);
+        let (u, lo, hi) = run.oriented();
+        let frame = |p: Point| Point::new(u.dot(p), u.perp().dot(p));
+        let disk = [-reach, reach, -reach, reach];
+        Some(t.max(self.box_bound(frame(self.at), frame(self.dir), &disk, lo, hi)?))
+    }
+
+    /// When the ball's box (`extent` around the centre `at + dir·t`,
+    /// scaled by the radius) can first meet the box [`lo`, `hi`], all in
+    /// one frame (`None`: never). Each of the four separations is affine
+    /// in the time, and all four must have closed for the boxes to meet.
+    fn box_bound(&self, at: Point, dir: Point, extent: &[f64; 4], lo: Point, hi: Point) -> Option<f64> {
         let grow = 1e-9 * self.r.abs() + self.eps;
         // (separation at t = 0, its rate): box beyond the ball's right,
         // left, top and bottom sides.
         let seps = [
-            (b.min.x - self.at.x - self.r * extent[1], -self.dir.x - self.slope * extent[1]),
-            (self.at.x + self.r * extent[0] - b.max.x, self.dir.x + self.slope * extent[0]),
-            (b.min.y - self.at.y - self.r * extent[3], -self.dir.y - self.slope * extent[3]),
-            (self.at.y + self.r * extent[2] - b.max.y, self.dir.y + self.slope * extent[2]),
+            (lo.x - at.x - self.r * extent[1], -dir.x - self.slope * extent[1]),
+            (at.x + self.r * extent[0] - hi.x, dir.x + self.slope * extent[0]),
+            (lo.y - at.y - self.r * extent[3], -dir.y - self.slope * extent[3]),
+            (at.y + self.r * extent[2] - hi.y, dir.y + self.slope * extent[2]),
         ];
+        let mut t: f64 = 0.0;
         for (s0, s1) in seps {
             let s0 = s0 - grow;
             if s0 > 0.0 {
@@ -102,13 +128,6 @@ impl Walk {
             }
         }
         Some(t)
-    }
-
-    /// The box around the ball at time `t`.
-    fn ball_box(&self, reach: f64, t: f64) -> BBox {
-        let c = self.at + self.dir * t;
-        let rad = (self.r + self.slope * t).max(0.0) * reach * (1.0 + 1e-9) + self.eps;
-        BBox::of_points(c, c).inflate(rad)
     }
 }
 
@@ -130,9 +149,9 @@ impl Problem<'_> {
         };
         // Validity ends of the classes along the ray.
         for &c in &ray.along {
-            let ex = if c == reference { re.clone() } else { self.exact(c) };
+            let ex = self.exact(c);
             for g in &ex.valid {
-                if g.n.dot(d).signum() == Ordering::Less {
+                if g.n.dot_sign(d) == Ordering::Less {
                     if let Some(q) = ray.carrier.meet(g) {
                         offer(q, &mut best);
                     }
@@ -160,49 +179,39 @@ impl Problem<'_> {
                 }
                 walk.contact_time(&self.approx(c))
             };
-            let key = |e: usize, _: &BBox| -> Option<(f64, ClassId)> {
-                if excluded(e as u32) {
+            let key = |r: ElementRef| -> Option<f64> {
+                let e = self.edge_of(r);
+                if excluded(e) {
                     return None;
                 }
-                self.classes_of_edge(e as u32).filter_map(|c| contact(c).map(|t| (t, c))).reduce(|a, b| {
-                    if b.0 < a.0 {
-                        b
-                    } else {
-                        a
-                    }
-                })
+                self.classes_of_edge(e).filter_map(contact).reduce(f64::min)
             };
-            let found = self.tree.min_by_bound(
-                // A contact later than the validity end found exactly would
-                // be dropped below: boxes beyond it are never opened (most
-                // rays end at a joint, long before the next contact).
-                |b| {
-                    walk.box_bound(self.reach, &self.extent, b)
-                        .filter(|&t| t <= t_first + 2.0 * walk.eps)
-                        .map(|t| (t, 0))
-                },
+            // A contact later than the validity end found exactly would
+            // be dropped below: runs beyond it are never opened (most
+            // rays end at a joint, long before the next contact).
+            let found = self.chain.first_by_bound(
+                t_first + 2.0 * walk.eps,
+                2.0 * walk.eps,
+                |run, _| walk.run_bound(self.reach, &self.extent, run),
                 key,
             );
-            let Some((_, (t, first))) = found else { break };
-            if t > t_first + 2.0 * walk.eps {
-                break;
-            }
+            let Some(&(_, t)) = found.first() else { break };
             let limit = t + 2.0 * walk.eps;
-            let window = walk.ball_box(self.reach, 0.0).union(&walk.ball_box(self.reach, limit));
-            // The earliest's own class always, so that every round without
-            // a contact sets at least one class aside and the loop ends.
-            let mut near: Vec<ClassId> = vec![first];
-            self.tree.visit_overlapping(&window, |e| {
-                if !excluded(e as u32) {
-                    near.extend(self.classes_of_edge(e as u32).filter(|&c| contact(c).is_some_and(|tc| tc <= limit)));
-                }
-                ControlFlow::<()>::Continue(())
-            });
+            // Every class of the edges found whose contact comes within
+            // the margin; the earliest's own class among them, so that
+            // every round without a contact sets at least one class aside
+            // and the loop ends.
+            let mut near: Vec<ClassId> = Vec::new();
+            for &(r, _) in &found {
+                near.extend(
+                    self.classes_of_edge(self.edge_of(r)).filter(|&c| contact(c).is_some_and(|tc| tc <= limit)),
+                );
+            }
             near.sort_unstable();
             near.dedup();
             let mut hit = false;
             for c in near {
-                match self.contact_on_ray(node, ray, &re, c) {
+                match self.contact_on_ray(node, ray, re, c) {
                     Some(q) => {
                         offer(q, &mut best);
                         hit = true;
@@ -231,17 +240,17 @@ impl Problem<'_> {
     ) -> Option<HPoint> {
         let ex = self.exact(c);
         let d: &IVec = &ray.dir;
-        let q = match tie_line(re, &ex).and_then(|t| ray.carrier.meet(&t)) {
+        let q = match tie_line(re, ex).and_then(|t| ray.carrier.meet(&t)) {
             Some(q) => q,
             None => {
                 // Parallel: equal along the whole line, or never.
-                if &radius_num(&ex, &node.p) * &re.h != &radius_num(re, &node.p) * &ex.h {
+                if &radius_num(ex, &node.p) * &re.h != &radius_num(re, &node.p) * &ex.h {
                     return None;
                 }
                 let mut entry: Option<HPoint> = None;
                 for g in &ex.valid {
                     if g.side(&node.p) == Ordering::Less {
-                        if g.n.dot(d).signum() != Ordering::Greater {
+                        if g.n.dot_sign(d) != Ordering::Greater {
                             return None;
                         }
                         let q = ray.carrier.meet(g)?;
@@ -253,6 +262,6 @@ impl Problem<'_> {
                 entry?
             }
         };
-        (node.p.along(&q, d) == Ordering::Greater && valid_at(&ex, &q)).then_some(q)
+        (node.p.along(&q, d) == Ordering::Greater && valid_at(ex, &q)).then_some(q)
     }
 }

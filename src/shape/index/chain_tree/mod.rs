@@ -488,22 +488,39 @@ impl ChainTree {
         &self,
         g: &GrowingDisk,
         slack: f64,
-        mut key: impl FnMut(ElementRef) -> Option<f64>,
+        key: impl FnMut(ElementRef) -> Option<f64>,
     ) -> Vec<(ElementRef, f64)> {
-        let bound = |n: &Node, cutoff: f64| -> Option<f64> {
-            let b = g.box_bound_below(n.bbox.min, n.bbox.max, cutoff)?;
+        let bound = |n: RunBounds, cutoff: f64| -> Option<f64> {
+            let b = g.box_bound_below(n.bbox().min, n.bbox().max, cutoff)?;
             if b >= cutoff {
                 return Some(b);
             }
-            let o = &n.obb;
-            let turned = GrowingDisk { p: o.frame(g.p), n: o.frame(g.n) };
-            Some(b.max(turned.box_bound_below(o.lo, o.hi, cutoff)?))
+            let (u, lo, hi) = n.oriented();
+            let frame = |p: Point| Point::new(u.dot(p), u.perp().dot(p));
+            let turned = GrowingDisk { p: frame(g.p), n: frame(g.n) };
+            Some(b.max(turned.box_bound_below(lo, hi, cutoff)?))
         };
+        self.first_by_bound(f64::INFINITY, slack, bound, key)
+    }
+
+    /// Best-first search for the smallest keys: every element whose `key`
+    /// is at most `cutoff` and within `slack` of the smallest, as
+    /// `(element, key)` in increasing key order (ties in loop and element
+    /// order). `bound(run, cutoff)` must not exceed the key of any element
+    /// of the run (`None`: none has a key, or all exceed `cutoff`); runs
+    /// whose bound is past the cutoff are never opened.
+    pub fn first_by_bound(
+        &self,
+        cutoff: f64,
+        slack: f64,
+        bound: impl Fn(RunBounds, f64) -> Option<f64>,
+        mut key: impl FnMut(ElementRef) -> Option<f64>,
+    ) -> Vec<(ElementRef, f64)> {
         let mut found: Vec<(ElementRef, f64)> = Vec::new();
-        let mut cutoff = f64::INFINITY;
+        let mut cutoff = cutoff;
         let mut heap = std::collections::BinaryHeap::with_capacity(64);
         for &r in &self.roots {
-            if let Some(b) = bound(&self.nodes[r as usize], cutoff) {
+            if let Some(b) = bound(RunBounds(&self.nodes[r as usize]), cutoff).filter(|&b| b <= cutoff) {
                 heap.push(Pending(b, r));
             }
         }
@@ -521,7 +538,7 @@ impl ChainTree {
                 }
             } else {
                 for c in [n.left, n.right] {
-                    if let Some(b) = bound(&self.nodes[c as usize], cutoff).filter(|&b| b <= cutoff) {
+                    if let Some(b) = bound(RunBounds(&self.nodes[c as usize]), cutoff).filter(|&b| b <= cutoff) {
                         heap.push(Pending(b, c));
                     }
                 }
@@ -530,6 +547,30 @@ impl ChainTree {
         found.retain(|&(_, v)| v <= cutoff);
         found.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
         found
+    }
+}
+
+/// The bounds of one run of the hierarchy, for a caller's own search
+/// ([`ChainTree::first_by_bound`]): every point of the run's elements lies
+/// in each of them.
+#[derive(Clone, Copy)]
+pub struct RunBounds<'a>(&'a Node);
+
+impl RunBounds<'_> {
+    /// The run's box.
+    pub fn bbox(&self) -> &BBox {
+        &self.0.bbox
+    }
+
+    /// The run's chord `a`–`b` and how far its elements stray from it.
+    pub fn capsule(&self) -> (Point, Point, f64) {
+        (self.0.a, self.0.b, self.0.reach)
+    }
+
+    /// The oriented box: unit axis `u`, and the ranges `[lo.x, hi.x]` of
+    /// `u·x` and `[lo.y, hi.y]` of `u.perp()·x` over the run's points.
+    pub fn oriented(&self) -> (Point, Point, Point) {
+        (self.0.obb.u, self.0.obb.lo, self.0.obb.hi)
     }
 }
 
