@@ -1650,6 +1650,29 @@ enum mx_status mx_axis_offset_layer(const struct mx_axis *axis,
                                     struct mx_offset_layer **out);
 
 /**
+ * The outer offset of `shape` at `distance` (> 0, model units) under the
+ * unit ball `ball`, as a new layer handle in `*out` (`mx_offset_layer_*`;
+ * free with `mx_offset_layer_free`; its distance is −`distance`): the
+ * loops where the centre of the tool `c + distance·B` touches the shape
+ * from outside (outer loops counter-clockwise, the holes of the grown
+ * shape clockwise). Computed from the axes of the shape's complement
+ * under the ball. `ball` NULL gives the Euclidean outer offset (as
+ * `mx_offsets_compute` with `outer_reach` = `distance`, then
+ * `mx_offsets_layer` at −`distance`). The shape must be polygonal under
+ * a ball (`MX_ERR_UNSUPPORTED` names the arc); `MX_ERR_INVALID_ARGUMENT`
+ * for a distance that is not finite and positive; `*out` is then
+ * untouched.
+ *
+ * # Safety
+ * `shape` NULL or a live handle; `ball` NULL or a live handle; `out` NULL
+ * or writable.
+ */
+enum mx_status mx_shape2d_outer_offset_with_ball(const struct mx_shape2d *shape,
+                                                 const struct mx_ball *ball,
+                                                 double distance,
+                                                 struct mx_offset_layer **out);
+
+/**
  * Fills the caller's `mx_drawing_select` with the defaults: `size` is its
  * `sizeof` as the caller was compiled; the first `min(size, this
  * release's size)` bytes are written and `struct_size` set to that, so an
@@ -2334,6 +2357,30 @@ enum mx_status mx_voronoi_options_init(struct mx_voronoi_options *out, size_t si
 enum mx_status mx_voronoi_compute(const struct mx_sites *sites,
                                   const struct mx_voronoi_options *options,
                                   struct mx_voronoi **out);
+
+/**
+ * Computes the Voronoi diagram of `sites` under the unit ball `ball`
+ * (thesis chapter 3: the distance from a point p to a site is the least r
+ * with the ball `p + r·B` touching it) and writes a new handle to `*out`;
+ * `ball` NULL computes the Euclidean diagram (`mx_voronoi_compute`).
+ * Sites must be polygonal (points, polylines, polygons: a bulge gives
+ * `MX_ERR_UNSUPPORTED` naming the site). The library's frame lies past
+ * every Voronoi vertex by a proven margin, so `complete` is always 1. The
+ * geometry is read through `mx_voronoi_axis` (an axis under the ball:
+ * straight edges, `mx_axis_edge_contacts`), the labels, regions and
+ * nearest site (under the ball's distance) through the other
+ * `mx_voronoi_*` functions. `options` may be NULL; its `seed` does not
+ * apply (the construction is deterministic). Fails as
+ * `mx_voronoi_compute`; `*out` is then untouched.
+ *
+ * # Safety
+ * `sites` NULL or valid with arrays valid for their counts; `ball` NULL
+ * or a live handle; `options` NULL or valid; `out` NULL or writable.
+ */
+enum mx_status mx_voronoi_compute_with_ball(const struct mx_sites *sites,
+                                            const struct mx_ball *ball,
+                                            const struct mx_voronoi_options *options,
+                                            struct mx_voronoi **out);
 
 /**
  * Releases a diagram (and its axis). NULL is a no-op.

@@ -105,6 +105,40 @@ fn check(sites: &Sites, ball: &Ball2, vd: &BallVoronoi, probes: usize, seed: u64
             rng.gen_range(bb.min.y - 0.3 * diag..bb.max.y + 0.3 * diag),
         )
     };
+    // Nearest-site queries against the brute force.
+    for _ in 0..probes {
+        let p = pt();
+        if inside_region(sites, p) {
+            continue;
+        }
+        let (s, d, second) = nearest(ball, sites, p);
+        let (got, gd, foot) = vd.nearest_site(p).expect("a nearest site");
+        assert!((gd - d).abs() < tol, "nearest site of {p:?}: {got} at {gd}, brute force {s} at {d}");
+        assert!(got == s || second - d < tol, "nearest site of {p:?}: {got}, brute force {s} ({d} vs {second})");
+        assert!((ball.distance(p, foot) - gd).abs() < tol, "foot {foot:?} of {p:?} is not at the distance {gd}");
+        assert!(site_distance(ball, sites, got, foot) < tol, "foot {foot:?} is not on {got}");
+    }
+    // Regions: each edge between sites once on each side's walk, in the
+    // direction that keeps the site on the left; one closed walk each.
+    for i in vd.site_edges() {
+        let [l, r] = vd.edges[i].sides;
+        for (site, fwd) in [(l, true), (r, false)] {
+            if site == SiteId::Frame && vd.auto_frame {
+                continue;
+            }
+            let region = vd.region(site).unwrap_or_else(|| panic!("no region for {site}"));
+            let n = region.boundary.iter().filter(|&&b| b == (i, fwd)).count();
+            assert_eq!(n, 1, "edge {i} appears {n} times on the walk of {site}");
+        }
+    }
+    for region in &vd.regions {
+        assert!(region.walks <= 1, "region of {} is {} walks", region.site, region.walks);
+        for w in region.boundary.windows(2) {
+            let end = |(i, fwd): (usize, bool)| if fwd { vd.axis.edges[i].to } else { vd.axis.edges[i].from };
+            let start = |(i, fwd): (usize, bool)| if fwd { vd.axis.edges[i].from } else { vd.axis.edges[i].to };
+            assert_eq!(end(w[0]), start(w[1]), "the walk of {} breaks", region.site);
+        }
+    }
     let mut crossings = 0;
     for _ in 0..probes {
         let (p, q) = (pt(), pt());

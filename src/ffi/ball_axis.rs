@@ -14,11 +14,14 @@ use super::offset::{mx_offset_layer, offset_error};
 use super::shape2d::mx_shape2d;
 use super::status::mx_status;
 use crate::kernel::Disk;
-use crate::plane::{medial_axis, AxisOptions, OffsetLayer, OffsetLoop, OffsetRegion, Offsets};
-use crate::polymetric::{medial_axis_with_ball, BallAxis, BallAxisError, BallNodeKind, ClassKind, ShapeFeature};
+use crate::plane::{medial_axis, AxisOptions, OffsetLayer, OffsetLoop, OffsetOptions, OffsetRegion, Offsets};
+use crate::polymetric::{
+    medial_axis_with_ball, outer_offset, BallAxis, BallAxisError, BallNodeKind, BallOffsetLayer, ClassKind,
+    ShapeFeature,
+};
 use crate::shape::{Feature, Shape2d, Vertex};
 
-fn ball_axis_error(e: BallAxisError) -> FfiError {
+pub(crate) fn ball_axis_error(e: BallAxisError) -> FfiError {
     let message = e.to_string();
     match e {
         BallAxisError::Arc { l, i } => {
@@ -227,21 +230,71 @@ pub unsafe extern "C" fn mx_axis_offset_layer(
         }
         let layer = match &a.ball {
             None => Offsets::from_axis(&a.shape, &a.axis).and_then(|o| o.layer(distance)).map_err(offset_error)?,
-            Some(b) => {
-                let l = b.offset(&a.shape, distance).map_err(ball_axis_error)?;
-                let loops = l
-                    .loops
-                    .iter()
-                    .map(|lp| OffsetLoop {
-                        vertices: lp.points.iter().map(|&p| Vertex { p, bulge: 0.0 }).collect(),
-                        area: lp.area,
-                        region: lp.region,
-                    })
-                    .collect();
-                let regions =
-                    l.regions.iter().map(|r| OffsetRegion { outer: r.outer, holes: r.holes.clone() }).collect();
-                OffsetLayer::from_loops(distance, loops, regions)
-            }
+            Some(b) => layer_c(distance, b.offset(&a.shape, distance).map_err(ball_axis_error)?),
+        };
+        // SAFETY: checked non-NULL above.
+        unsafe { write_out(out, into_raw(mx_offset_layer::new(layer))) };
+        Ok(())
+    })
+}
+
+/// A ball offset layer as the C API's layer (straight loops).
+fn layer_c(distance: f64, l: BallOffsetLayer) -> OffsetLayer {
+    let loops = l
+        .loops
+        .iter()
+        .map(|lp| OffsetLoop {
+            vertices: lp.points.iter().map(|&p| Vertex { p, bulge: 0.0 }).collect(),
+            area: lp.area,
+            region: lp.region,
+        })
+        .collect();
+    let regions = l.regions.iter().map(|r| OffsetRegion { outer: r.outer, holes: r.holes.clone() }).collect();
+    OffsetLayer::from_loops(distance, loops, regions)
+}
+
+/// The outer offset of `shape` at `distance` (> 0, model units) under the
+/// unit ball `ball`, as a new layer handle in `*out` (`mx_offset_layer_*`;
+/// free with `mx_offset_layer_free`; its distance is −`distance`): the
+/// loops where the centre of the tool `c + distance·B` touches the shape
+/// from outside (outer loops counter-clockwise, the holes of the grown
+/// shape clockwise). Computed from the axes of the shape's complement
+/// under the ball. `ball` NULL gives the Euclidean outer offset (as
+/// `mx_offsets_compute` with `outer_reach` = `distance`, then
+/// `mx_offsets_layer` at −`distance`). The shape must be polygonal under
+/// a ball (`MX_ERR_UNSUPPORTED` names the arc); `MX_ERR_INVALID_ARGUMENT`
+/// for a distance that is not finite and positive; `*out` is then
+/// untouched.
+///
+/// # Safety
+/// `shape` NULL or a live handle; `ball` NULL or a live handle; `out` NULL
+/// or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_shape2d_outer_offset_with_ball(
+    shape: *const mx_shape2d,
+    ball: *const mx_ball,
+    distance: f64,
+    out: *mut *mut mx_offset_layer,
+) -> mx_status {
+    guard(|| {
+        if out.is_null() {
+            return Err(super::boundary::null_arg("out"));
+        }
+        // SAFETY: caller contract.
+        let s = unsafe { arg(shape)? };
+        if !(distance.is_finite() && distance > 0.0) {
+            return Err(FfiError::new(
+                mx_status::MX_ERR_INVALID_ARGUMENT,
+                format!("distance = {distance}: use a finite distance > 0"),
+            ));
+        }
+        let layer = if ball.is_null() {
+            let opts = OffsetOptions { outer_reach: distance, ..OffsetOptions::default() };
+            Offsets::new(&s.inner, &opts).and_then(|o| o.layer(-distance)).map_err(offset_error)?
+        } else {
+            // SAFETY: non-NULL, a live handle per the contract.
+            let b = unsafe { &arg(ball)?.inner };
+            layer_c(-distance, outer_offset(&s.inner, b, distance).map_err(ball_axis_error)?)
         };
         // SAFETY: checked non-NULL above.
         unsafe { write_out(out, into_raw(mx_offset_layer::new(layer))) };

@@ -30,14 +30,6 @@ use crate::shape::index::chain_tree::RunBounds;
 use crate::shape::model::error::ElementRef;
 use std::cmp::Ordering;
 
-/// Distance from `p` to the segment `a`–`b`.
-fn segment_distance(p: Point, a: Point, b: Point) -> f64 {
-    let d = b - a;
-    let l2 = d.norm2();
-    let t = if l2 > 0.0 { ((p - a).dot(d) / l2).clamp(0.0, 1.0) } else { 0.0 };
-    (p - (a + d * t)).norm()
-}
-
 /// The ray's start in `f64`: position, unit direction, radius and its slope.
 struct Walk {
     at: Point,
@@ -87,8 +79,7 @@ impl Walk {
     /// box bound is the tight one for balls that fill their box (the
     /// square exactly), the other two among long thin spikes.
     fn run_bound(&self, reach: f64, extent: &[f64; 4], run: RunBounds) -> Option<f64> {
-        let (a, b, stray) = run.capsule();
-        let gap = segment_distance(self.at, a, b) - stray - self.r * reach * (1.0 + 1e-9) - self.eps;
+        let gap = run.distance_to(self.at) - self.r * reach * (1.0 + 1e-9) - self.eps;
         let speed = 1.0 + self.slope * reach * (1.0 + 1e-9);
         let mut t = match (gap <= 0.0, speed > 0.0) {
             (true, _) => 0.0,

@@ -28,7 +28,10 @@ use super::error::BallAxisError;
 use super::graph::BallAxis;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{BBox, Point};
-use crate::shape::{Ball2, Shape2d, ShapeError, ShapeOptions, SiteId, Sites, Vertex, VoronoiEdge};
+use crate::plane::voronoi::regions::{site_regions, SiteRegion};
+use crate::shape::index::chain_tree::RunBounds;
+use crate::shape::model::error::ElementRef;
+use crate::shape::{Ball2, ChainTree, Shape2d, ShapeError, ShapeOptions, SiteId, Sites, Vertex, VoronoiEdge};
 
 /// Options for [`voronoi_with_ball`].
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -98,7 +101,12 @@ pub struct BallVoronoi {
     pub frontier: Vec<bool>,
     /// The frame was chosen by the library.
     pub auto_frame: bool,
+    /// The region of every site, in loop order (regions first); the
+    /// library's frame has none.
+    pub regions: Vec<SiteRegion>,
     loop_sites: Vec<SiteId>,
+    /// The site loops (the library's frame left out), for nearest sites.
+    site_index: ChainTree,
     /// The frame with the sites as holes: what the axis's classes index.
     shape: Shape2d,
 }
@@ -112,6 +120,37 @@ impl BallVoronoi {
     /// The frame with the sites as holes, whose axis this is.
     pub fn shape(&self) -> &Shape2d {
         &self.shape
+    }
+
+    /// The region of `site` (`None` for a site that does not exist, or the
+    /// library's frame).
+    pub fn region(&self, site: SiteId) -> Option<&SiteRegion> {
+        self.regions.iter().find(|r| r.site == site)
+    }
+
+    /// The site nearest to `p` under the ball (the least r with `p + r·B`
+    /// touching it), that distance and a point of the site where the ball
+    /// touches; the first in input order among equally near sites within
+    /// rounding. The library's frame is never the answer; a caller's
+    /// boundary is, where it is nearest. `None` only for a point too far
+    /// away for `f64`.
+    pub fn nearest_site(&self, p: Point) -> Option<(SiteId, f64, Point)> {
+        let first = usize::from(self.auto_frame);
+        let loops = &self.shape.loops()[first..];
+        let ball = &self.axis.ball;
+        let reach = ball.vertices().iter().map(|v| v.norm()).fold(0.0, f64::max);
+        // The ball lies in the disk of radius `reach`, so the gauge
+        // distance is at least the Euclidean one over `reach`.
+        let bound = |run: RunBounds, _| Some(run.distance_to(p).max(0.0) / reach);
+        let element = |r: ElementRef| loops[r.loop_index].element(r.element);
+        let key = |r: ElementRef| {
+            let e = element(r);
+            Some(ball.distance_to_segment(p, e.start(), e.end())).filter(|d| d.is_finite())
+        };
+        let &(r, d) = self.site_index.first_by_bound(f64::INFINITY, 0.0, bound, key).first()?;
+        let e = element(r);
+        let (_, foot) = ball.nearest_on_segment(p, e.start(), e.end());
+        Some((self.loop_sites[r.loop_index + first], d, foot))
     }
 
     /// The diagram as JSON: the ball, then the kept edges (between
@@ -283,7 +322,18 @@ pub fn voronoi_with_ball(
             *f = *a && *b;
         }
     }
-    Ok(BallVoronoi { axis, edges, frontier, auto_frame, loop_sites, shape })
+    let toward = |i: usize, from_start: bool| {
+        let e = &axis.edges[i];
+        let (a, b) = (axis.nodes[e.from].at, axis.nodes[e.to].at);
+        if from_start {
+            (b - a).unit()
+        } else {
+            (a - b).unit()
+        }
+    };
+    let regions = site_regions(|i| (axis.edges[i].from, axis.edges[i].to), &edges, &loop_sites, auto_frame, toward);
+    let site_index = ChainTree::new(&shape.loops()[usize::from(auto_frame)..]);
+    Ok(BallVoronoi { axis, edges, frontier, auto_frame, regions, loop_sites, site_index, shape })
 }
 
 /// Refuses arcs, naming the site and element.

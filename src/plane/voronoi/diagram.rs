@@ -86,7 +86,7 @@ impl VoronoiDiagram {
             let near = e.eval(&shape, &axis.nodes, s).map_or(a + (b - a) * s, |d| d.center);
             (near - at).unit()
         };
-        let regions = site_regions(&axis, &edges, &loop_sites, auto_frame, toward);
+        let regions = site_regions(|i| (axis.edges[i].from, axis.edges[i].to), &edges, &loop_sites, auto_frame, toward);
         let first_site_loop = usize::from(auto_frame);
         let site_index = ChainTree::new(&shape.loops()[first_site_loop..]);
         VoronoiDiagram {

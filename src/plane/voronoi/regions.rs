@@ -6,7 +6,6 @@
 
 use crate::kernel::fan::cw_angle;
 use crate::kernel::Point;
-use crate::plane::axis::MedialAxis2d;
 use crate::shape::{SiteId, VoronoiEdge};
 
 /// The region of one site.
@@ -32,8 +31,10 @@ pub struct SiteRegion {
 
 /// The regions of every site but the library's frame (`loop_sites[0]`
 /// when it is [`SiteId::Frame`] and `skip_frame`), in loop order.
+/// `ends(i)` gives the `from` and `to` nodes of axis edge `i` (any axis:
+/// Euclidean or under a ball).
 pub(crate) fn site_regions(
-    axis: &MedialAxis2d,
+    ends: impl Fn(usize) -> (usize, usize),
     edges: &[VoronoiEdge],
     loop_sites: &[SiteId],
     skip_frame: bool,
@@ -58,7 +59,7 @@ pub(crate) fn site_regions(
         .map(|&site| {
             let directed = by_site.remove(&site).unwrap_or_default();
             let unbounded = skip_frame && directed.iter().any(|&(i, _)| edges[i].sides.contains(&SiteId::Frame));
-            let (boundary, walks) = closed_walks(axis, &directed, &toward);
+            let (boundary, walks) = closed_walks(&ends, &directed, &toward);
             SiteRegion { site, boundary, walks, self_edges: selfs.remove(&site).unwrap_or_default(), unbounded }
         })
         .collect()
@@ -69,16 +70,16 @@ pub(crate) fn site_regions(
 /// separate walks it is made of. `toward(i, from_start)` is the direction
 /// in which edge `i` leaves its `from` node (`true`) or its `to` node.
 fn closed_walks(
-    axis: &MedialAxis2d,
+    edge_ends: &impl Fn(usize) -> (usize, usize),
     directed: &[(usize, bool)],
     toward: &impl Fn(usize, bool) -> Point,
 ) -> (Vec<(usize, bool)>, usize) {
     let ends = |&(i, fwd): &(usize, bool)| {
-        let e = &axis.edges[i];
+        let (from, to) = edge_ends(i);
         if fwd {
-            (e.from, e.to)
+            (from, to)
         } else {
-            (e.to, e.from)
+            (to, from)
         }
     };
     let mut out_of: std::collections::HashMap<usize, Vec<usize>> = Default::default();

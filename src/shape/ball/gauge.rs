@@ -38,18 +38,33 @@ impl Ball2 {
     /// through the ball's vertices: its minimum is at an end or at one of
     /// those crossings (O(k) for a ball of k vertices).
     pub fn distance_to_segment(&self, c: Point, a: Point, b: Point) -> f64 {
+        self.nearest_on_segment(c, a, b).0
+    }
+
+    /// [`distance_to_segment`](Self::distance_to_segment) with the point of
+    /// the segment where it is attained (one of them, where the least
+    /// distance is attained along a piece of the segment).
+    pub fn nearest_on_segment(&self, c: Point, a: Point, b: Point) -> (f64, Point) {
         let (ac, d) = (a - c, b - a);
-        let mut best = self.gauge(ac).min(self.gauge(b - c));
+        let mut best = (self.gauge(ac), 0.0);
+        let mut offer = |t: f64| {
+            let g = self.gauge(ac + d * t);
+            if g < best.0 {
+                best = (g, t);
+            }
+        };
         for &v in self.vertices() {
             let denominator = v.cross(d);
             if denominator != 0.0 {
                 let t = -v.cross(ac) / denominator;
                 if t > 0.0 && t < 1.0 {
-                    best = best.min(self.gauge(ac + d * t));
+                    offer(t);
                 }
             }
         }
-        best
+        offer(1.0);
+        let foot = if best.1 == 1.0 { b } else { a + d * best.1 };
+        (best.0, foot)
     }
 
     /// The feature of the ball furthest in direction `n` (non-zero): the

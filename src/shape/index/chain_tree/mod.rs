@@ -562,9 +562,13 @@ impl RunBounds<'_> {
         &self.0.bbox
     }
 
-    /// The run's chord `a`–`b` and how far its elements stray from it.
-    pub fn capsule(&self) -> (Point, Point, f64) {
-        (self.0.a, self.0.b, self.0.reach)
+    /// A lower bound on the distance from `p` to every point of the run:
+    /// the largest of its distances to the run's box, oriented box and
+    /// capsule.
+    pub fn distance_to(&self, p: Point) -> f64 {
+        let n = self.0;
+        let boxes = n.bbox.distance2_to(p).max(n.obb.distance2_to(p)).sqrt();
+        boxes.max(segment_distance(p, n.a, n.b) - n.reach)
     }
 
     /// The oriented box: unit axis `u`, and the ranges `[lo.x, hi.x]` of
