@@ -5,8 +5,10 @@
 //! a Euclidean axis asked for contacts, a ball axis given to the
 //! Euclidean-only calls, bad distances) writing nothing.
 
+mod common;
+
+use common::ffi::{ball, ball_vertices, gauge, last_message};
 use medax::ffi::*;
-use std::ffi::CStr;
 use std::ptr::{null, null_mut};
 
 fn shape(loops: &[&[(f64, f64, f64)]]) -> *mut mx_shape2d {
@@ -16,20 +18,6 @@ fn shape(loops: &[&[(f64, f64, f64)]]) -> *mut mx_shape2d {
     let st = unsafe { mx_shape2d_from_bulges(xyb.as_ptr(), xyb.len(), lens.as_ptr(), lens.len(), null(), &mut s) };
     assert_eq!(st, mx_status::MX_OK, "{}", last_message());
     s
-}
-
-fn last_message() -> String {
-    let n = unsafe { mx_last_error_message(null_mut(), 0) };
-    let mut buf = vec![0 as std::ffi::c_char; n.max(1)];
-    unsafe { mx_last_error_message(buf.as_mut_ptr(), buf.len()) };
-    unsafe { CStr::from_ptr(buf.as_ptr()) }.to_string_lossy().into_owned()
-}
-
-fn ball(spec: &str) -> *mut mx_ball {
-    let text = std::ffi::CString::new(spec).unwrap();
-    let mut b = null_mut();
-    assert_eq!(unsafe { mx_ball_parse(text.as_ptr(), &mut b) }, mx_status::MX_OK);
-    b
 }
 
 fn with_ball(s: *const mx_shape2d, b: *const mx_ball) -> *mut mx_axis {
@@ -66,21 +54,6 @@ fn edges(a: *const mx_axis) -> Vec<(mx_axis_edge, mx_axis_contacts)> {
         .collect()
 }
 
-/// The gauge of `x` under the ball with CCW vertices `v`.
-fn gauge(v: &[(f64, f64)], x: (f64, f64)) -> f64 {
-    let k = v.len();
-    (0..k)
-        .map(|i| {
-            let (p, q) = (v[i], v[(i + 1) % k]);
-            let (dx, dy) = (q.0 - p.0, q.1 - p.1);
-            // Facet a with a·p = 1.
-            let (ax, ay) = (dy, -dx);
-            let s = ax * p.0 + ay * p.1;
-            (ax * x.0 + ay * x.1) / s
-        })
-        .fold(0.0, f64::max)
-}
-
 /// The largest ball at `c` inside a polygon: the least gauge to points of
 /// its edges, each edge sampled densely (the oracle shares nothing with
 /// the library).
@@ -95,14 +68,6 @@ fn brute_radius(poly: &[(f64, f64)], v: &[(f64, f64)], c: (f64, f64)) -> f64 {
         }
     }
     best
-}
-
-fn ball_vertices(b: *const mx_ball) -> Vec<(f64, f64)> {
-    let mut n = 0;
-    assert_eq!(unsafe { mx_ball_vertex_count(b, &mut n) }, mx_status::MX_OK);
-    let mut xy = vec![0.0; 2 * n];
-    assert_eq!(unsafe { mx_ball_vertices(b, xy.as_mut_ptr(), xy.len()) }, mx_status::MX_OK);
-    xy.chunks_exact(2).map(|c| (c[0], c[1])).collect()
 }
 
 #[test]

@@ -4,23 +4,11 @@
 //! rectangle's area by hand, NULL balls falling back to the Euclidean
 //! calls, and errors writing nothing.
 
+mod common;
+
+use common::ffi::{ball, ball_vertices, gauge, last_message};
 use medax::ffi::*;
-use std::ffi::CStr;
 use std::ptr::{null, null_mut};
-
-fn last_message() -> String {
-    let n = unsafe { mx_last_error_message(null_mut(), 0) };
-    let mut buf = vec![0 as std::ffi::c_char; n.max(1)];
-    unsafe { mx_last_error_message(buf.as_mut_ptr(), buf.len()) };
-    unsafe { CStr::from_ptr(buf.as_ptr()) }.to_string_lossy().into_owned()
-}
-
-fn ball(spec: &str) -> *mut mx_ball {
-    let text = std::ffi::CString::new(spec).unwrap();
-    let mut b = null_mut();
-    assert_eq!(unsafe { mx_ball_parse(text.as_ptr(), &mut b) }, mx_status::MX_OK);
-    b
-}
 
 fn shape(loops: &[&[(f64, f64)]]) -> *mut mx_shape2d {
     let xyb: Vec<f64> = loops.iter().flat_map(|l| l.iter().flat_map(|&(x, y)| [x, y, 0.0])).collect();
@@ -46,27 +34,6 @@ fn point_sites(xy: &[f64]) -> mx_sites {
         boundary_xyb: null(),
         boundary_length: 0,
     }
-}
-
-/// The gauge of `x` under the ball with these vertices (counter-clockwise).
-fn gauge(v: &[(f64, f64)], x: (f64, f64)) -> f64 {
-    (0..v.len())
-        .map(|i| {
-            let (a, b) = (v[i], v[(i + 1) % v.len()]);
-            // Facet normal n with n·a = n·b = 1: the gauge is max n·x.
-            let (nx, ny) = (b.1 - a.1, a.0 - b.0);
-            let h = nx * a.0 + ny * a.1;
-            (nx * x.0 + ny * x.1) / h
-        })
-        .fold(0.0, f64::max)
-}
-
-fn ball_vertices(b: *const mx_ball) -> Vec<(f64, f64)> {
-    let mut n = 0;
-    assert_eq!(unsafe { mx_ball_vertex_count(b, &mut n) }, mx_status::MX_OK);
-    let mut xy = vec![0.0; 2 * n];
-    assert_eq!(unsafe { mx_ball_vertices(b, xy.as_mut_ptr(), xy.len()) }, mx_status::MX_OK);
-    xy.chunks_exact(2).map(|c| (c[0], c[1])).collect()
 }
 
 #[test]

@@ -14,12 +14,11 @@ use super::offset::{mx_offset_layer, offset_error};
 use super::shape2d::mx_shape2d;
 use super::status::mx_status;
 use crate::kernel::Disk;
-use crate::plane::{medial_axis, AxisOptions, OffsetLayer, OffsetLoop, OffsetOptions, OffsetRegion, Offsets};
+use crate::plane::{medial_axis, AxisOptions, OffsetLayer, OffsetOptions, Offsets};
 use crate::polymetric::{
-    medial_axis_with_ball, outer_offset, BallAxis, BallAxisError, BallNodeKind, BallOffsetLayer, ClassKind,
-    ShapeFeature,
+    medial_axis_with_ball, outer_offset, BallAxis, BallAxisError, BallNodeKind, ClassKind, ShapeFeature,
 };
-use crate::shape::{Feature, Shape2d, Vertex};
+use crate::shape::{Feature, Shape2d};
 
 pub(crate) fn ball_axis_error(e: BallAxisError) -> FfiError {
     let message = e.to_string();
@@ -216,41 +215,38 @@ pub unsafe extern "C" fn mx_axis_offset_layer(
     distance: f64,
     out: *mut *mut mx_offset_layer,
 ) -> mx_status {
+    // SAFETY: forwarded contract.
+    unsafe {
+        new_layer(out, distance, || {
+            let a = arg(axis)?;
+            match &a.ball {
+                None => Offsets::from_axis(&a.shape, &a.axis).and_then(|o| o.layer(distance)).map_err(offset_error),
+                Some(b) => Ok(b.offset(&a.shape, distance).map_err(ball_axis_error)?.to_offset_layer()),
+            }
+        })
+    }
+}
+
+/// Checks `out` and `distance`, makes the layer and writes a new handle
+/// to `*out` (nothing on failure).
+///
+/// # Safety
+/// `out` NULL or writable; `make` upholds its handles' contracts.
+unsafe fn new_layer(
+    out: *mut *mut mx_offset_layer,
+    distance: f64,
+    make: impl FnOnce() -> Result<OffsetLayer, FfiError>,
+) -> mx_status {
     guard(|| {
         if out.is_null() {
             return Err(super::boundary::null_arg("out"));
         }
-        // SAFETY: caller contract.
-        let a = unsafe { arg(axis)? };
-        if !(distance.is_finite() && distance > 0.0) {
-            return Err(FfiError::new(
-                mx_status::MX_ERR_INVALID_ARGUMENT,
-                format!("distance = {distance}: use a finite distance > 0"),
-            ));
-        }
-        let layer = match &a.ball {
-            None => Offsets::from_axis(&a.shape, &a.axis).and_then(|o| o.layer(distance)).map_err(offset_error)?,
-            Some(b) => layer_c(distance, b.offset(&a.shape, distance).map_err(ball_axis_error)?),
-        };
+        check_distance(distance)?;
+        let layer = make()?;
         // SAFETY: checked non-NULL above.
         unsafe { write_out(out, into_raw(mx_offset_layer::new(layer))) };
         Ok(())
     })
-}
-
-/// A ball offset layer as the C API's layer (straight loops).
-fn layer_c(distance: f64, l: BallOffsetLayer) -> OffsetLayer {
-    let loops = l
-        .loops
-        .iter()
-        .map(|lp| OffsetLoop {
-            vertices: lp.points.iter().map(|&p| Vertex { p, bulge: 0.0 }).collect(),
-            area: lp.area,
-            region: lp.region,
-        })
-        .collect();
-    let regions = l.regions.iter().map(|r| OffsetRegion { outer: r.outer, holes: r.holes.clone() }).collect();
-    OffsetLayer::from_loops(distance, loops, regions)
 }
 
 /// The outer offset of `shape` at `distance` (> 0, model units) under the
@@ -276,28 +272,29 @@ pub unsafe extern "C" fn mx_shape2d_outer_offset_with_ball(
     distance: f64,
     out: *mut *mut mx_offset_layer,
 ) -> mx_status {
-    guard(|| {
-        if out.is_null() {
-            return Err(super::boundary::null_arg("out"));
-        }
-        // SAFETY: caller contract.
-        let s = unsafe { arg(shape)? };
-        if !(distance.is_finite() && distance > 0.0) {
-            return Err(FfiError::new(
-                mx_status::MX_ERR_INVALID_ARGUMENT,
-                format!("distance = {distance}: use a finite distance > 0"),
-            ));
-        }
-        let layer = if ball.is_null() {
-            let opts = OffsetOptions { outer_reach: distance, ..OffsetOptions::default() };
-            Offsets::new(&s.inner, &opts).and_then(|o| o.layer(-distance)).map_err(offset_error)?
-        } else {
-            // SAFETY: non-NULL, a live handle per the contract.
-            let b = unsafe { &arg(ball)?.inner };
-            layer_c(-distance, outer_offset(&s.inner, b, distance).map_err(ball_axis_error)?)
-        };
-        // SAFETY: checked non-NULL above.
-        unsafe { write_out(out, into_raw(mx_offset_layer::new(layer))) };
+    // SAFETY: forwarded contract.
+    unsafe {
+        new_layer(out, distance, || {
+            let s = arg(shape)?;
+            if ball.is_null() {
+                let opts = OffsetOptions { outer_reach: distance, ..OffsetOptions::default() };
+                Offsets::new(&s.inner, &opts).and_then(|o| o.layer(-distance)).map_err(offset_error)
+            } else {
+                let b = &arg(ball)?.inner;
+                Ok(outer_offset(&s.inner, b, distance).map_err(ball_axis_error)?.to_offset_layer())
+            }
+        })
+    }
+}
+
+/// A distance argument: finite and positive.
+fn check_distance(distance: f64) -> Result<(), FfiError> {
+    if distance.is_finite() && distance > 0.0 {
         Ok(())
-    })
+    } else {
+        Err(FfiError::new(
+            mx_status::MX_ERR_INVALID_ARGUMENT,
+            format!("distance = {distance}: use a finite distance > 0"),
+        ))
+    }
 }

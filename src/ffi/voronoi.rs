@@ -378,21 +378,9 @@ pub unsafe extern "C" fn mx_voronoi_compute(
     unsafe {
         create(out, || {
             let (s, o) = (deref(sites, "sites")?, mx_voronoi_options::read_or_default(options)?);
-            if !(o.tolerance.is_finite() && o.tolerance >= 0.0) {
-                return Err(FfiError::new(
-                    mx_status::MX_ERR_INVALID_ARGUMENT,
-                    format!("mx_voronoi_options.tolerance = {}: use a finite value >= 0", o.tolerance),
-                ));
-            }
+            let shape = shape_options(&o)?;
             let (sites, boundary) = read_sites(s)?;
-            let opts = VoronoiOptions {
-                axis: AxisOptions { seed: o.seed, ..AxisOptions::default() },
-                shape: ShapeOptions {
-                    tolerance: (o.tolerance > 0.0).then_some(o.tolerance),
-                    ..ShapeOptions::default()
-                },
-                boundary,
-            };
+            let opts = VoronoiOptions { axis: AxisOptions { seed: o.seed, ..AxisOptions::default() }, shape, boundary };
             let mut diagram =
                 run_with_progress("mx_voronoi_compute", "mx_voronoi_options", o.threads, o.progress, o.user, || {
                     voronoi(&sites, &opts).map_err(voronoi_error)
@@ -435,21 +423,10 @@ pub unsafe extern "C" fn mx_voronoi_compute_with_ball(
     unsafe {
         create(out, || {
             let (s, o) = (deref(sites, "sites")?, mx_voronoi_options::read_or_default(options)?);
-            if !(o.tolerance.is_finite() && o.tolerance >= 0.0) {
-                return Err(FfiError::new(
-                    mx_status::MX_ERR_INVALID_ARGUMENT,
-                    format!("mx_voronoi_options.tolerance = {}: use a finite value >= 0", o.tolerance),
-                ));
-            }
+            let shape = shape_options(&o)?;
             let b = &arg(ball)?.inner;
             let (sites, boundary) = read_sites(s)?;
-            let opts = BallVoronoiOptions {
-                shape: ShapeOptions {
-                    tolerance: (o.tolerance > 0.0).then_some(o.tolerance),
-                    ..ShapeOptions::default()
-                },
-                boundary,
-            };
+            let opts = BallVoronoiOptions { shape, boundary };
             let export = "mx_voronoi_compute_with_ball";
             let diagram = run_with_progress(export, "mx_voronoi_options", o.threads, o.progress, o.user, || {
                 voronoi_with_ball(&sites, b, &opts).map_err(ball_voronoi_error)
@@ -459,6 +436,17 @@ pub unsafe extern "C" fn mx_voronoi_compute_with_ball(
             Ok(mx_voronoi { axis, diagram: Diagram::Ball(diagram) })
         })
     }
+}
+
+/// The shape options `o` asks for (its tolerance checked).
+fn shape_options(o: &mx_voronoi_options) -> Result<ShapeOptions, FfiError> {
+    if !(o.tolerance.is_finite() && o.tolerance >= 0.0) {
+        return Err(FfiError::new(
+            mx_status::MX_ERR_INVALID_ARGUMENT,
+            format!("mx_voronoi_options.tolerance = {}: use a finite value >= 0", o.tolerance),
+        ));
+    }
+    Ok(ShapeOptions { tolerance: (o.tolerance > 0.0).then_some(o.tolerance), ..ShapeOptions::default() })
 }
 
 fn ball_voronoi_error(e: BallVoronoiError) -> FfiError {
