@@ -117,10 +117,9 @@ void table(const char* name, const std::vector<size_t>& sizes, size_t runs, Make
 }  // namespace
 
 int main(int argc, char** argv) {
-    const size_t runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
-    std::vector<size_t> sizes;
-    for (int i = 2; i < argc; ++i) sizes.push_back(static_cast<size_t>(std::atol(argv[i])));
-    if (sizes.empty()) sizes = {1000, 10000, 100000};
+    const mt::BenchArgs args = mt::bench_args(argc, argv);
+    const size_t runs = args.runs;
+    const std::vector<size_t>& sizes = args.sizes;
 
     std::cout << "bench_peers: medax " << mx_version() << ", CGAL " << CGAL_VERSION_STR << ", Boost "
               << BOOST_VERSION / 100000 << "." << BOOST_VERSION / 100 % 1000 << "; median of " << runs

@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <functional>
 #include <string>
@@ -54,6 +55,21 @@ inline Times median_times(size_t runs, const std::function<void()>& f, double ca
     std::sort(wall.begin(), wall.end());
     std::sort(cpu.begin(), cpu.end());
     return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
+}
+
+// The command line every bench takes: `[runs] [sizes...]` (default 3 runs,
+// sizes 10^3, 10^4, 10^5).
+struct BenchArgs {
+    size_t runs = 3;
+    std::vector<size_t> sizes;
+};
+
+inline BenchArgs bench_args(int argc, char** argv) {
+    BenchArgs a;
+    if (argc > 1) a.runs = static_cast<size_t>(std::max(1, std::atoi(argv[1])));
+    for (int i = 2; i < argc; ++i) a.sizes.push_back(static_cast<size_t>(std::atol(argv[i])));
+    if (a.sizes.empty()) a.sizes = {1000, 10000, 100000};
+    return a;
 }
 
 inline double median_seconds(size_t runs, const std::function<void()>& f) {

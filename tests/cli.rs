@@ -472,11 +472,23 @@ fn voronoi_under_a_ball() {
     // Two points under the square: split by x = 1 (one edge or a few on
     // that line, the region beyond |y| = 1 where they tie given to one).
     std::fs::write(&sites, r#"{"points": [[0, 0], [2, 0]], "curves": [[[0, 3, 0], [2, 3, 0]]]}"#).unwrap();
-    let json = dir.join("vd.json");
-    let out = medax().arg("voronoi").arg(&sites).args(["--ball", "square", "--json"]).arg(&json).output().unwrap();
+    let (json, svg) = (dir.join("vd.json"), dir.join("vd.svg"));
+    let out = medax()
+        .arg("voronoi")
+        .arg(&sites)
+        .args(["--ball", "square", "--json"])
+        .arg(&json)
+        .arg("--svg")
+        .arg(&svg)
+        .output()
+        .unwrap();
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     assert!(stdout.contains("4-gon ball") && stdout.contains("3 sites"), "{stdout}");
+    // The picture: the sites, a ball at the vertex, the edges between sites.
+    let picture = std::fs::read_to_string(&svg).unwrap();
+    assert!(picture.contains("under a 4-gon ball: 3 sites"), "{picture}");
+    assert!(picture.matches("<path").count() >= 4, "{picture}");
     let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
     let edges = doc["edges"].as_array().unwrap();
     let nodes = doc["nodes"].as_array().unwrap();

@@ -165,10 +165,6 @@ pub fn run(args: &VoronoiArgs) -> Result<(), ExitCode> {
 /// The diagram under a polygon ball (thesis chapter 3's distance).
 fn run_ball(args: &VoronoiArgs, sites: &Sites, boundary: Option<Vec<Vertex>>, ball: &Ball2) -> Result<(), ExitCode> {
     let name = args.sites.display();
-    if args.svg.is_some() {
-        eprintln!("medax: --svg is not drawn under --ball yet; --json writes the diagram");
-        return Err(ExitCode::from(2));
-    }
     let opts =
         BallVoronoiOptions { shape: ShapeOptions { tolerance: args.tolerance, ..ShapeOptions::default() }, boundary };
     let t = Instant::now();
@@ -189,6 +185,10 @@ fn run_ball(args: &VoronoiArgs, sites: &Sites, boundary: Option<Vec<Vertex>>, ba
     out!("computed in {took:.3} s ({} elements)", vd.shape().element_count());
     if let Some(path) = &args.json {
         write_streamed(path, |w| vd.write_json(!args.no_self_edges, w))?;
+        out!("wrote {}", path.display());
+    }
+    if let Some(path) = &args.svg {
+        write_file(path, &vd.to_svg(900.0, !args.no_self_edges))?;
         out!("wrote {}", path.display());
     }
     Ok(())

@@ -8,6 +8,7 @@
 //! in-circle determinant, of degree 4, about 8500 bits (~135 limbs), so
 //! schoolbook multiplication is the right algorithm.
 
+use super::limbs::Limbs;
 use std::cmp::Ordering;
 use std::ops::{Add, Mul, Neg, Sub};
 
@@ -17,14 +18,14 @@ use std::ops::{Add, Mul, Neg, Sub};
 pub(crate) struct BigInt {
     negative: bool,
     /// Little-endian limbs without trailing (most significant) zeros.
-    mag: Vec<u64>,
+    mag: Limbs,
 }
 
 impl BigInt {
     /// `(-1)^negative · magnitude · 2^shift`.
     pub(crate) fn from_shifted(negative: bool, magnitude: u64, shift: u32) -> Self {
         let (limbs, bits) = ((shift / 64) as usize, shift % 64);
-        let mut mag = vec![0; limbs];
+        let mut mag = Limbs::zeroed(limbs);
         mag.push(magnitude << bits);
         if bits > 0 {
             mag.push(magnitude >> (64 - bits));
@@ -95,10 +96,24 @@ impl BigInt {
         (mn / md) * 2f64.powi(half) * 2f64.powi(e - half)
     }
 
-    fn normalized(negative: bool, mut mag: Vec<u64>) -> Self {
-        while mag.last() == Some(&0) {
-            mag.pop();
+    /// `self · 2^k`, exact.
+    pub(crate) fn shl(&self, k: u32) -> BigInt {
+        if self.is_zero() {
+            return BigInt::default();
         }
+        let (limbs, bits) = ((k / 64) as usize, k % 64);
+        let mut mag = Limbs::zeroed(limbs);
+        let mut carry = 0u64;
+        for &x in self.mag.iter() {
+            mag.push(if bits == 0 { x } else { (x << bits) | carry });
+            carry = if bits == 0 { 0 } else { x >> (64 - bits) };
+        }
+        mag.push(carry);
+        Self::normalized(self.negative, mag)
+    }
+
+    fn normalized(negative: bool, mut mag: Limbs) -> Self {
+        mag.trim();
         let negative = negative && !mag.is_empty();
         BigInt { negative, mag }
     }
@@ -134,9 +149,9 @@ fn cmp_mag(a: &[u64], b: &[u64]) -> Ordering {
     a.len().cmp(&b.len()).then_with(|| a.iter().rev().cmp(b.iter().rev()))
 }
 
-fn add_mag(a: &[u64], b: &[u64]) -> Vec<u64> {
+fn add_mag(a: &[u64], b: &[u64]) -> Limbs {
     let (long, short) = if a.len() >= b.len() { (a, b) } else { (b, a) };
-    let mut out = Vec::with_capacity(long.len() + 1);
+    let mut out = Limbs::with_capacity(long.len() + 1);
     let mut carry = false;
     for (i, &x) in long.iter().enumerate() {
         let (s, c1) = x.overflowing_add(short.get(i).copied().unwrap_or(0));
@@ -149,8 +164,8 @@ fn add_mag(a: &[u64], b: &[u64]) -> Vec<u64> {
 }
 
 /// `a - b` for `|a| >= |b|`.
-fn sub_mag(a: &[u64], b: &[u64]) -> Vec<u64> {
-    let mut out = Vec::with_capacity(a.len());
+fn sub_mag(a: &[u64], b: &[u64]) -> Limbs {
+    let mut out = Limbs::with_capacity(a.len());
     let mut borrow = false;
     for (i, &x) in a.iter().enumerate() {
         let (d, b1) = x.overflowing_sub(b.get(i).copied().unwrap_or(0));
@@ -162,8 +177,8 @@ fn sub_mag(a: &[u64], b: &[u64]) -> Vec<u64> {
     out
 }
 
-fn mul_mag(a: &[u64], b: &[u64]) -> Vec<u64> {
-    let mut out = vec![0u64; a.len() + b.len()];
+fn mul_mag(a: &[u64], b: &[u64]) -> Limbs {
+    let mut out = Limbs::zeroed(a.len() + b.len());
     for (i, &x) in a.iter().enumerate() {
         let mut carry: u128 = 0;
         for (j, &y) in b.iter().enumerate() {
@@ -177,17 +192,23 @@ fn mul_mag(a: &[u64], b: &[u64]) -> Vec<u64> {
     out
 }
 
+/// `a + b` with `b` negated when `flip` (no copy of `b` for a difference).
+fn add_signed(a: &BigInt, b: &BigInt, flip: bool) -> BigInt {
+    let b_negative = b.negative != flip && !b.is_zero();
+    if a.negative == b_negative {
+        return BigInt::normalized(a.negative, add_mag(&a.mag, &b.mag));
+    }
+    // Opposite signs: the larger magnitude decides the sign.
+    match cmp_mag(&a.mag, &b.mag) {
+        Ordering::Less => BigInt::normalized(b_negative, sub_mag(&b.mag, &a.mag)),
+        _ => BigInt::normalized(a.negative, sub_mag(&a.mag, &b.mag)),
+    }
+}
+
 impl Add for &BigInt {
     type Output = BigInt;
     fn add(self, rhs: &BigInt) -> BigInt {
-        if self.negative == rhs.negative {
-            return BigInt::normalized(self.negative, add_mag(&self.mag, &rhs.mag));
-        }
-        // Opposite signs: the larger magnitude decides the sign.
-        match cmp_mag(&self.mag, &rhs.mag) {
-            Ordering::Less => BigInt::normalized(rhs.negative, sub_mag(&rhs.mag, &self.mag)),
-            _ => BigInt::normalized(self.negative, sub_mag(&self.mag, &rhs.mag)),
-        }
+        add_signed(self, rhs, false)
     }
 }
 
@@ -201,7 +222,7 @@ impl Neg for &BigInt {
 impl Sub for &BigInt {
     type Output = BigInt;
     fn sub(self, rhs: &BigInt) -> BigInt {
-        self + &(-rhs)
+        add_signed(self, rhs, true)
     }
 }
 
@@ -242,7 +263,7 @@ mod tests {
     fn carries_and_borrows_across_many_limbs() {
         // (2^640 - 1) + 1 = 2^640 and back: every limb carries, then borrows.
         let ones = &BigInt::from_shifted(false, 1, 640) - &BigInt::from_shifted(false, 1, 0);
-        assert_eq!(ones.mag, vec![u64::MAX; 10]);
+        assert_eq!(&ones.mag[..], &[u64::MAX; 10][..]);
         let one = BigInt::from_shifted(false, 1, 0);
         assert_eq!(&ones + &one, BigInt::from_shifted(false, 1, 640));
         // (2^640 - 1)^2 = 2^1280 - 2^641 + 1.
@@ -251,5 +272,8 @@ mod tests {
         assert_eq!(square, expected);
         assert_eq!((&ones - &ones).signum(), Ordering::Equal);
         assert_eq!(-&BigInt::default(), BigInt::default());
+        assert_eq!(ones.shl(130), &ones * &BigInt::from_shifted(false, 1, 130));
+        assert_eq!((-&ones).shl(64), -&(&ones * &BigInt::from_shifted(false, 1, 64)));
+        assert_eq!(one.shl(0), one);
     }
 }

@@ -106,7 +106,7 @@ impl IVec {
     /// it is nearly a tie and only the exact fallback decides.
     pub(crate) fn add_balanced(&self, o: &IVec) -> IVec {
         let (a, b) = (self.magnitude_bits(), o.magnitude_bits());
-        let up = |v: &IVec, k: i64| if k > 0 { v.scale(&BigInt::from_shifted(false, 1, k as u32)) } else { v.clone() };
+        let up = |v: &IVec, k: i64| if k > 0 { IVec::new(v.x.shl(k as u32), v.y.shl(k as u32)) } else { v.clone() };
         up(self, b - a).add(&up(o, a - b))
     }
 

@@ -42,6 +42,7 @@ mod exact_int;
 pub(crate) mod exact_line;
 pub mod fan;
 pub mod growing_disk;
+mod limbs;
 mod point;
 mod site_piece;
 pub mod tolerance;

@@ -28,11 +28,7 @@ impl BallAxis {
         big.sort_by(|&a, &b| self.nodes[b].r.total_cmp(&self.nodes[a].r));
         for &i in big.iter().take(BALLS_DRAWN) {
             let n = &self.nodes[i];
-            let ring = self.ball.placed(n.at, n.r);
-            let mut cmds: Vec<PathCmd> = ring.iter().map(|p| PathCmd::LineTo([p.x, p.y])).collect();
-            cmds[0] = PathCmd::MoveTo([ring[0].x, ring[0].y]);
-            cmds.push(PathCmd::Close);
-            doc.path(&cmds, &Style::filled("#7f8c8d", "#bdc3c7", 0.8, 0.35));
+            doc.path(&ball_path(&self.ball, n.at, n.r), &Style::filled("#7f8c8d", "#bdc3c7", 0.8, 0.35));
         }
         let solid = Style::stroke("#1f5fbf", 1.6);
         let dashed = Style::stroke("#c0392b", 1.2);
@@ -67,6 +63,15 @@ impl BallAxis {
         );
         doc.finish()
     }
+}
+
+/// The outline of the ball `at + r·B`, closed.
+pub(super) fn ball_path(ball: &crate::shape::Ball2, at: Point, r: f64) -> Vec<PathCmd> {
+    let ring = ball.placed(at, r);
+    let mut cmds: Vec<PathCmd> = ring.iter().map(|p| PathCmd::LineTo([p.x, p.y])).collect();
+    cmds[0] = PathCmd::MoveTo([ring[0].x, ring[0].y]);
+    cmds.push(PathCmd::Close);
+    cmds
 }
 
 /// Colours of successive offset layers.

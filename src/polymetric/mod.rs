@@ -50,6 +50,7 @@ mod outer;
 mod problem;
 mod trace;
 mod voronoi;
+mod voronoi_draw;
 
 pub use build::medial_axis_with_ball;
 pub use classes::{BallFeature, ClassKind, ContactClass, ShapeFeature};

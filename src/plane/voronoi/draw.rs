@@ -6,39 +6,14 @@
 use crate::io::svg_writer::{PathCmd, Style, SvgDocument};
 use crate::kernel::Point;
 use crate::plane::voronoi::{SiteId, VoronoiDiagram};
-use crate::shape::{shape_path, LoopKind};
+use crate::shape::{shape_path, LoopKind, Shape2d};
 
 impl VoronoiDiagram {
     /// An SVG picture `width_px` wide, edges drawn to chordal tolerance
     /// `tol` (model units), self-edges when `self_edges`.
     pub fn to_svg(&self, width_px: f64, tol: f64, self_edges: bool) -> String {
         let shape = self.shape();
-        let loops = shape.loops();
-        let view = if self.auto_frame {
-            let b = loops[1..].iter().fold(crate::kernel::BBox::EMPTY, |b, l| b.union(&l.bbox()));
-            let m = 0.25 * b.diagonal().max(f64::MIN_POSITIVE);
-            [b.min.x - m, b.min.y - m, b.max.x + m, b.max.y + m]
-        } else {
-            let b = shape.bbox();
-            [b.min.x, b.min.y, b.max.x, b.max.y]
-        };
-        let mut doc = SvgDocument::new(view, width_px);
-        let mut cmds = shape_path(shape);
-        if self.auto_frame {
-            // The frame is the first loop: drop its commands (up to its Close).
-            let first_close = cmds.iter().position(|c| *c == PathCmd::Close).map_or(0, |i| i + 1);
-            cmds.drain(..first_close);
-        } else {
-            let frame_end = cmds.iter().position(|c| *c == PathCmd::Close).map_or(0, |i| i + 1);
-            doc.path(&cmds[..frame_end], &Style::stroke("#1f3b73", 1.5));
-            cmds.drain(..frame_end);
-        }
-        doc.path(&cmds, &Style::filled("#1f3b73", "#dfe8f6", 1.2, 1.0));
-        // A point site's loop draws nothing: a dot instead.
-        for l in loops.iter().filter(|l| l.kind() == LoopKind::Point) {
-            let p = l.vertices()[0].p;
-            doc.dot([p.x, p.y], 3.0, "#1f3b73");
-        }
+        let (mut doc, view) = sites_document(shape, self.auto_frame, width_px);
         let mut shown = 0;
         for i in self.diagram_edges(self_edges) {
             let e = &self.axis.edges[i];
@@ -73,10 +48,41 @@ impl VoronoiDiagram {
     }
 }
 
+/// A picture of the sites of a Voronoi diagram (`shape`: the frame, then
+/// the sites as loops), `width_px` wide, and its view box: round the sites
+/// with a margin when the library chose the frame (which is not drawn),
+/// the caller's boundary otherwise.
+pub(crate) fn sites_document(shape: &Shape2d, auto_frame: bool, width_px: f64) -> (SvgDocument, [f64; 4]) {
+    let loops = shape.loops();
+    let view = if auto_frame {
+        let b = loops[1..].iter().fold(crate::kernel::BBox::EMPTY, |b, l| b.union(&l.bbox()));
+        let m = 0.25 * b.diagonal().max(f64::MIN_POSITIVE);
+        [b.min.x - m, b.min.y - m, b.max.x + m, b.max.y + m]
+    } else {
+        let b = shape.bbox();
+        [b.min.x, b.min.y, b.max.x, b.max.y]
+    };
+    let mut doc = SvgDocument::new(view, width_px);
+    let mut cmds = shape_path(shape);
+    // The frame is the first loop: its commands run up to its Close.
+    let frame_end = cmds.iter().position(|c| *c == PathCmd::Close).map_or(0, |i| i + 1);
+    if !auto_frame {
+        doc.path(&cmds[..frame_end], &Style::stroke("#1f3b73", 1.5));
+    }
+    cmds.drain(..frame_end);
+    doc.path(&cmds, &Style::filled("#1f3b73", "#dfe8f6", 1.2, 1.0));
+    // A point site's loop draws nothing: a dot instead.
+    for l in loops.iter().filter(|l| l.kind() == LoopKind::Point) {
+        let p = l.vertices()[0].p;
+        doc.dot([p.x, p.y], 3.0, "#1f3b73");
+    }
+    (doc, view)
+}
+
 /// Path commands for the parts of `pts` inside the box `view` (min x, min
 /// y, max x, max y): edges run on to a frame far outside the picture, and
 /// renderers draw strokes reaching that far with artefacts.
-fn clipped(pts: &[Point], view: &[f64; 4]) -> Vec<PathCmd> {
+pub(crate) fn clipped(pts: &[Point], view: &[f64; 4]) -> Vec<PathCmd> {
     let mut out = Vec::new();
     let mut open = false;
     for w in pts.windows(2) {

@@ -37,6 +37,34 @@ fn first_contacts_agree_with_a_scan() {
     }
 }
 
+#[test]
+fn first_by_bound_agrees_with_a_scan_and_respects_its_cutoff() {
+    // Key: the distance from a point to an element; bound: the run's
+    // distance lower bound. Half the queries carry a cutoff below the
+    // answer, where nothing may come back.
+    let mut rng = crate::util::mix::Mix(12);
+    for (s, t) in fixtures() {
+        let lp = &s.loops()[0];
+        for q in 0..300 {
+            let (p, d) = probe(&s, &mut rng);
+            let key = |r: ElementRef| Some(lp.element(r.element).closest_point(p).0);
+            let cutoff = if q % 2 == 0 { f64::INFINITY } else { d * 0.999 };
+            let slack = 1e-2 * d;
+            let got = t.first_by_bound(cutoff, slack, |run, _| Some(run.distance_to(p)), key);
+            let mut scan: Vec<(ElementRef, f64)> = (0..lp.len())
+                .map(|i| ElementRef { loop_index: 0, element: i })
+                .filter_map(|r| key(r).map(|k| (r, k)))
+                .filter(|x| x.1 <= cutoff)
+                .collect();
+            let least = scan.iter().map(|x| x.1).fold(f64::INFINITY, f64::min);
+            scan.retain(|x| x.1 <= least + slack);
+            scan.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
+            assert_eq!(got, scan, "{p:?} cutoff {cutoff}");
+            assert_eq!(got.is_empty(), cutoff < d);
+        }
+    }
+}
+
 /// The test shapes (smooth arcs, spikes) with their trees.
 fn fixtures() -> Vec<(Shape2d, ChainTree)> {
     [samples::flower_arcs(500), samples::star_polygon(300, 2)]
