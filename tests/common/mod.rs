@@ -1,6 +1,7 @@
 //! Shape builders shared by the integration tests.
 #![allow(dead_code)]
 
+pub mod ball_oracle;
 pub mod ffi;
 pub mod offset_oracle;
 pub mod oracle;
