@@ -3,7 +3,9 @@
 //! balls: the Voronoi diagram or a typed error, never a panic; a diagram
 //! returned is sound (at both ends of every edge between sites, both
 //! sites lie at the edge's radius by brute-force gauge distance, and none
-//! nearer), and its JSON is written.
+//! nearer), the nearest site of a few points is at the brute-force
+//! distance, every region's walk is closed, and its JSON and SVG are
+//! written.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
@@ -49,6 +51,17 @@ fuzz_target!(|input: (Vec<(i8, i8)>, Vec<(i8, i8, i8, i8)>, Vec<(i8, i8)>)| {
             }
         }
     }
+    for &(x, y) in points.iter().take(4) {
+        let p = grid(y, x) + Point::new(0.1, -0.05);
+        let (s, d, _) = vd.nearest_site(p).expect("a nearest site");
+        let best = all.iter().map(|&t| dist(t, p)).fold(f64::INFINITY, f64::min);
+        let tol = 1e-9 * (p.norm() + best + 1.0) / inradius.min(1.0);
+        assert!((d - best).abs() <= tol && (dist(s, p) - best).abs() <= tol, "nearest to {p:?}: {s} at {d}, best {best}");
+    }
+    for r in &vd.regions {
+        assert!(r.walks <= 1, "region of {} in {} walks", r.site, r.walks);
+    }
     let mut out = Vec::new();
     vd.write_json(true, &mut out).expect("JSON to memory");
+    let _ = vd.to_svg(300.0, true);
 });
