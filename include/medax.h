@@ -161,12 +161,6 @@
 #define MEDAX_VERSION_PATCH 0
 
 /**
- * The finest sampling tolerance [`AxisEdge::sample`] accepts, relative to
- * the shape's bounding-box diagonal.
- */
-#define MIN_RELATIVE_SAMPLE_TOLERANCE 1e-12
-
-/**
  * Largest absolute coordinate medax accepts, in model units (vertices and
  * arc extents). Within it, products of coordinates stay far from `f64`
  * overflow and a relative tolerance of 1e-9 still resolves 1e-6 units at
@@ -581,6 +575,99 @@ typedef struct mx_axis_contacts {
    */
   int32_t jump;
 } mx_axis_contacts;
+
+/**
+ * The input sites, as plain arrays (model units). Every array may be NULL
+ * when its count is 0. Sites must be pairwise disjoint.
+ */
+typedef struct mx_sites {
+  /**
+   * `x, y` pairs, `2 × point_count` doubles.
+   */
+  const double *points_xy;
+  /**
+   * Number of point sites.
+   */
+  size_t point_count;
+  /**
+   * `x, y, bulge` triples of every open curve back to back (the bulge of
+   * a curve's last vertex is ignored).
+   */
+  const double *curves_xyb;
+  /**
+   * Doubles in `curves_xyb`: 3 × the curve lengths' sum.
+   */
+  size_t curves_xyb_len;
+  /**
+   * Vertex count of each curve.
+   */
+  const size_t *curve_lengths;
+  /**
+   * Number of curve sites.
+   */
+  size_t curve_count;
+  /**
+   * `x, y, bulge` triples of every closed region back to back, as the
+   * holes of `mx_shape2d_from_bulges`.
+   */
+  const double *regions_xyb;
+  /**
+   * Doubles in `regions_xyb`: 3 × the region lengths' sum.
+   */
+  size_t regions_xyb_len;
+  /**
+   * Vertex count of each region.
+   */
+  const size_t *region_lengths;
+  /**
+   * Number of region sites.
+   */
+  size_t region_count;
+  /**
+   * The caller's outer boundary Γ as `x, y, bulge` triples enclosing
+   * every site (a site itself then), or NULL to let the library choose
+   * a frame that keeps every Voronoi vertex.
+   */
+  const double *boundary_xyb;
+  /**
+   * Vertex count of the boundary (0 with NULL); the array holds 3 ×
+   * this many doubles.
+   */
+  size_t boundary_length;
+} mx_sites;
+
+/**
+ * Options for `mx_voronoi_compute`. Initialise with
+ * `mx_voronoi_options_init(&o, sizeof o)` (which sets `struct_size`).
+ */
+typedef struct mx_voronoi_options {
+  /**
+   * `sizeof(mx_voronoi_options)` as the caller was compiled.
+   */
+  size_t struct_size;
+  /**
+   * Seed of the divide step's random choices (as `mx_axis_options.seed`).
+   */
+  uint64_t seed;
+  /**
+   * Worker threads, as `mx_axis_options.threads`.
+   */
+  size_t threads;
+  /**
+   * Absolute touching tolerance, model units; 0 = 1e-9 × the sites'
+   * bounding-box diagonal.
+   */
+  double tolerance;
+  /**
+   * Optional progress callback, as `mx_axis_options.progress` (called
+   * with 0 before and 1 after; nonzero at 0 cancels).
+   */
+  mx_progress_fn progress;
+  /**
+   * Passed unchanged to `progress`.
+   */
+  void *user;
+} mx_voronoi_options;
 
 /**
  * What to take out of a drawing. Initialise with
@@ -1172,99 +1259,6 @@ typedef struct mx_vcarve_path {
 } mx_vcarve_path;
 
 /**
- * Options for `mx_voronoi_compute`. Initialise with
- * `mx_voronoi_options_init(&o, sizeof o)` (which sets `struct_size`).
- */
-typedef struct mx_voronoi_options {
-  /**
-   * `sizeof(mx_voronoi_options)` as the caller was compiled.
-   */
-  size_t struct_size;
-  /**
-   * Seed of the divide step's random choices (as `mx_axis_options.seed`).
-   */
-  uint64_t seed;
-  /**
-   * Worker threads, as `mx_axis_options.threads`.
-   */
-  size_t threads;
-  /**
-   * Absolute touching tolerance, model units; 0 = 1e-9 × the sites'
-   * bounding-box diagonal.
-   */
-  double tolerance;
-  /**
-   * Optional progress callback, as `mx_axis_options.progress` (called
-   * with 0 before and 1 after; nonzero at 0 cancels).
-   */
-  mx_progress_fn progress;
-  /**
-   * Passed unchanged to `progress`.
-   */
-  void *user;
-} mx_voronoi_options;
-
-/**
- * The input sites, as plain arrays (model units). Every array may be NULL
- * when its count is 0. Sites must be pairwise disjoint.
- */
-typedef struct mx_sites {
-  /**
-   * `x, y` pairs, `2 × point_count` doubles.
-   */
-  const double *points_xy;
-  /**
-   * Number of point sites.
-   */
-  size_t point_count;
-  /**
-   * `x, y, bulge` triples of every open curve back to back (the bulge of
-   * a curve's last vertex is ignored).
-   */
-  const double *curves_xyb;
-  /**
-   * Doubles in `curves_xyb`: 3 × the curve lengths' sum.
-   */
-  size_t curves_xyb_len;
-  /**
-   * Vertex count of each curve.
-   */
-  const size_t *curve_lengths;
-  /**
-   * Number of curve sites.
-   */
-  size_t curve_count;
-  /**
-   * `x, y, bulge` triples of every closed region back to back, as the
-   * holes of `mx_shape2d_from_bulges`.
-   */
-  const double *regions_xyb;
-  /**
-   * Doubles in `regions_xyb`: 3 × the region lengths' sum.
-   */
-  size_t regions_xyb_len;
-  /**
-   * Vertex count of each region.
-   */
-  const size_t *region_lengths;
-  /**
-   * Number of region sites.
-   */
-  size_t region_count;
-  /**
-   * The caller's outer boundary Γ as `x, y, bulge` triples enclosing
-   * every site (a site itself then), or NULL to let the library choose
-   * a frame that keeps every Voronoi vertex.
-   */
-  const double *boundary_xyb;
-  /**
-   * Vertex count of the boundary (0 with NULL); the array holds 3 ×
-   * this many doubles.
-   */
-  size_t boundary_length;
-} mx_sites;
-
-/**
  * Facts about a whole diagram.
  */
 typedef struct mx_voronoi_info {
@@ -1671,6 +1665,30 @@ enum mx_status mx_shape2d_outer_offset_with_ball(const struct mx_shape2d *shape,
                                                  const struct mx_ball *ball,
                                                  double distance,
                                                  struct mx_offset_layer **out);
+
+/**
+ * Computes the Voronoi diagram of `sites` under the unit ball `ball`
+ * (thesis chapter 3: the distance from a point p to a site is the least r
+ * with the ball `p + r·B` touching it) and writes a new handle to `*out`;
+ * `ball` NULL computes the Euclidean diagram (`mx_voronoi_compute`).
+ * Sites must be polygonal (points, polylines, polygons: a bulge gives
+ * `MX_ERR_UNSUPPORTED` naming the site). The library's frame lies past
+ * every Voronoi vertex by a proven margin, so `complete` is always 1. The
+ * geometry is read through `mx_voronoi_axis` (an axis under the ball:
+ * straight edges, `mx_axis_edge_contacts`), the labels, regions and
+ * nearest site (under the ball's distance) through the other
+ * `mx_voronoi_*` functions. `options` may be NULL; its `seed` does not
+ * apply (the construction is deterministic). Fails as
+ * `mx_voronoi_compute`; `*out` is then untouched.
+ *
+ * # Safety
+ * `sites` NULL or valid with arrays valid for their counts; `ball` NULL
+ * or a live handle; `options` NULL or valid; `out` NULL or writable.
+ */
+enum mx_status mx_voronoi_compute_with_ball(const struct mx_sites *sites,
+                                            const struct mx_ball *ball,
+                                            const struct mx_voronoi_options *options,
+                                            struct mx_voronoi **out);
 
 /**
  * Fills the caller's `mx_drawing_select` with the defaults: `size` is its
@@ -2357,30 +2375,6 @@ enum mx_status mx_voronoi_options_init(struct mx_voronoi_options *out, size_t si
 enum mx_status mx_voronoi_compute(const struct mx_sites *sites,
                                   const struct mx_voronoi_options *options,
                                   struct mx_voronoi **out);
-
-/**
- * Computes the Voronoi diagram of `sites` under the unit ball `ball`
- * (thesis chapter 3: the distance from a point p to a site is the least r
- * with the ball `p + r·B` touching it) and writes a new handle to `*out`;
- * `ball` NULL computes the Euclidean diagram (`mx_voronoi_compute`).
- * Sites must be polygonal (points, polylines, polygons: a bulge gives
- * `MX_ERR_UNSUPPORTED` naming the site). The library's frame lies past
- * every Voronoi vertex by a proven margin, so `complete` is always 1. The
- * geometry is read through `mx_voronoi_axis` (an axis under the ball:
- * straight edges, `mx_axis_edge_contacts`), the labels, regions and
- * nearest site (under the ball's distance) through the other
- * `mx_voronoi_*` functions. `options` may be NULL; its `seed` does not
- * apply (the construction is deterministic). Fails as
- * `mx_voronoi_compute`; `*out` is then untouched.
- *
- * # Safety
- * `sites` NULL or valid with arrays valid for their counts; `ball` NULL
- * or a live handle; `options` NULL or valid; `out` NULL or writable.
- */
-enum mx_status mx_voronoi_compute_with_ball(const struct mx_sites *sites,
-                                            const struct mx_ball *ball,
-                                            const struct mx_voronoi_options *options,
-                                            struct mx_voronoi **out);
 
 /**
  * Releases a diagram (and its axis). NULL is a no-op.

@@ -6,9 +6,11 @@ use medax::cam::{pocket, vcarve, CamError, Pocket, PocketOptions, PocketOrder, V
 use medax::plane::offsets_to_dxf;
 use medax::plane::offsets_to_svg;
 use medax::plane::write_offsets_json;
-use medax::plane::{medial_axis, AxisOptions, MedialAxis2d, OffsetLayer, OffsetOptions, Offsets};
+use medax::plane::{
+    medial_axis, AxisOptions, MedialAxis2d, OffsetLayer, OffsetLoop, OffsetOptions, OffsetRegion, Offsets,
+};
 use medax::polymetric::{medial_axis_with_ball, outer_offset, BallOffsetLayer};
-use medax::shape::{Ball2, Shape2d};
+use medax::shape::{Ball2, Shape2d, Vertex};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -181,7 +183,7 @@ fn run_ball(args: &OffsetArgs, shape: &Shape2d, ball: &Ball2, ds: &[f64], k: Opt
         out!("  distance {}: {} loop(s), {} region(s), area {}", l.distance, l.loops.len(), l.regions.len(), l.area());
     }
     // As the Euclidean layers (straight elements), for the same writers.
-    let plain: Vec<OffsetLayer> = layers.iter().map(BallOffsetLayer::to_offset_layer).collect();
+    let plain: Vec<OffsetLayer> = layers.iter().map(plain_layer).collect();
     if let Some(path) = &args.json {
         let path = per_shape(path, k);
         write_streamed(&path, |w| write_offsets_json(&plain, w))?;
@@ -294,4 +296,20 @@ fn vcarve_paths(ctx: &Context, angle_deg: f64, max_depth: f64) -> Result<Compute
     out!("v-carve: {} path(s), deepest {}", v.paths.len(), v.deepest());
     out!("flat bottom: {} ring(s) at radius {}", v.flat.loops.len(), v.flat_radius());
     Ok(Computed::VCarve(v))
+}
+
+/// A layer under a ball as the Euclidean layers' type (straight elements),
+/// for the same writers.
+fn plain_layer(l: &BallOffsetLayer) -> OffsetLayer {
+    let loops = l
+        .loops
+        .iter()
+        .map(|lp| OffsetLoop {
+            vertices: lp.points.iter().map(|&p| Vertex { p, bulge: 0.0 }).collect(),
+            area: lp.area,
+            region: lp.region,
+        })
+        .collect();
+    let regions = l.regions.iter().map(|r| OffsetRegion { outer: r.outer, holes: r.holes.clone() }).collect();
+    OffsetLayer::from_loops(l.distance, loops, regions)
 }

@@ -14,11 +14,12 @@ use super::offset::{mx_offset_layer, offset_error};
 use super::shape2d::mx_shape2d;
 use super::status::mx_status;
 use crate::kernel::Disk;
-use crate::plane::{medial_axis, AxisOptions, OffsetLayer, OffsetOptions, Offsets};
+use crate::plane::{medial_axis, AxisOptions, OffsetLayer, OffsetLoop, OffsetOptions, OffsetRegion, Offsets};
 use crate::polymetric::{
-    medial_axis_with_ball, outer_offset, BallAxis, BallAxisError, BallNodeKind, ClassKind, ShapeFeature,
+    medial_axis_with_ball, outer_offset, BallAxis, BallAxisError, BallNodeKind, BallOffsetLayer, ClassKind,
+    ShapeFeature,
 };
-use crate::shape::{Feature, Shape2d};
+use crate::shape::{Feature, Shape2d, Vertex};
 
 pub(crate) fn ball_axis_error(e: BallAxisError) -> FfiError {
     let message = e.to_string();
@@ -221,7 +222,7 @@ pub unsafe extern "C" fn mx_axis_offset_layer(
             let a = arg(axis)?;
             match &a.ball {
                 None => Offsets::from_axis(&a.shape, &a.axis).and_then(|o| o.layer(distance)).map_err(offset_error),
-                Some(b) => Ok(b.offset(&a.shape, distance).map_err(ball_axis_error)?.to_offset_layer()),
+                Some(b) => Ok(plain_layer(&b.offset(&a.shape, distance).map_err(ball_axis_error)?)),
             }
         })
     }
@@ -281,10 +282,27 @@ pub unsafe extern "C" fn mx_shape2d_outer_offset_with_ball(
                 Offsets::new(&s.inner, &opts).and_then(|o| o.layer(-distance)).map_err(offset_error)
             } else {
                 let b = &arg(ball)?.inner;
-                Ok(outer_offset(&s.inner, b, distance).map_err(ball_axis_error)?.to_offset_layer())
+                Ok(plain_layer(&outer_offset(&s.inner, b, distance).map_err(ball_axis_error)?))
             }
         })
     }
+}
+
+/// A layer under a ball as the C API's layer type (straight elements).
+/// (The CLI converts the same way; the two algorithm layers do not see
+/// each other's types.)
+pub(crate) fn plain_layer(l: &BallOffsetLayer) -> OffsetLayer {
+    let loops = l
+        .loops
+        .iter()
+        .map(|lp| OffsetLoop {
+            vertices: lp.points.iter().map(|&p| Vertex { p, bulge: 0.0 }).collect(),
+            area: lp.area,
+            region: lp.region,
+        })
+        .collect();
+    let regions = l.regions.iter().map(|r| OffsetRegion { outer: r.outer, holes: r.holes.clone() }).collect();
+    OffsetLayer::from_loops(l.distance, loops, regions)
 }
 
 /// A distance argument: finite and positive.

@@ -15,6 +15,7 @@
 mod axis;
 mod ball;
 mod ball_axis;
+mod ball_voronoi;
 mod boundary;
 mod drawing;
 mod drawing_report;
@@ -31,6 +32,7 @@ mod voronoi;
 pub use axis::*;
 pub use ball::*;
 pub use ball_axis::*;
+pub use ball_voronoi::mx_voronoi_compute_with_ball;
 pub use drawing::*;
 pub use drawing_report::*;
 pub use handles::*;

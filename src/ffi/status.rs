@@ -83,6 +83,37 @@ impl mx_status {
         }
     }
 
+    /// Every status, for `mx_status_str`; `text` matches every variant
+    /// exhaustively, and `tests/header.rs` checks this list against the
+    /// header's enum, so a new status cannot be left without a string.
+    pub(crate) const ALL: [mx_status; 22] = {
+        use mx_status::*;
+        [
+            MX_OK,
+            MX_ERR_NULL_ARGUMENT,
+            MX_ERR_INVALID_ARGUMENT,
+            MX_ERR_BUFFER_TOO_SMALL,
+            MX_ERR_IO,
+            MX_ERR_PARSE,
+            MX_ERR_UNSUPPORTED,
+            MX_ERR_INDEX_OUT_OF_RANGE,
+            MX_ERR_CANCELLED,
+            MX_ERR_NUMERICAL,
+            MX_ERR_EMPTY,
+            MX_ERR_TOO_FEW_ELEMENTS,
+            MX_ERR_NON_FINITE,
+            MX_ERR_OUT_OF_RANGE,
+            MX_ERR_NOT_CLOSED,
+            MX_ERR_DEGENERATE,
+            MX_ERR_INTERSECTION,
+            MX_ERR_HOLE_OUTSIDE,
+            MX_ERR_HOLE_INSIDE_HOLE,
+            MX_ERR_INCONSISTENT_ARC,
+            MX_ERR_INVALID_BALL,
+            MX_ERR_PANIC,
+        ]
+    };
+
     fn text(self) -> &'static std::ffi::CStr {
         use mx_status::*;
         match self {
@@ -116,29 +147,5 @@ impl mx_status {
 /// give "unknown status". Never NULL; do not free.
 #[no_mangle]
 pub extern "C" fn mx_status_str(status: i32) -> *const c_char {
-    use mx_status::*;
-    let all = [
-        MX_OK,
-        MX_ERR_NULL_ARGUMENT,
-        MX_ERR_INVALID_ARGUMENT,
-        MX_ERR_BUFFER_TOO_SMALL,
-        MX_ERR_IO,
-        MX_ERR_PARSE,
-        MX_ERR_UNSUPPORTED,
-        MX_ERR_INDEX_OUT_OF_RANGE,
-        MX_ERR_CANCELLED,
-        MX_ERR_NUMERICAL,
-        MX_ERR_EMPTY,
-        MX_ERR_TOO_FEW_ELEMENTS,
-        MX_ERR_NON_FINITE,
-        MX_ERR_OUT_OF_RANGE,
-        MX_ERR_NOT_CLOSED,
-        MX_ERR_DEGENERATE,
-        MX_ERR_INTERSECTION,
-        MX_ERR_HOLE_OUTSIDE,
-        MX_ERR_HOLE_INSIDE_HOLE,
-        MX_ERR_INCONSISTENT_ARC,
-        MX_ERR_PANIC,
-    ];
-    all.iter().find(|s| **s as i32 == status).map_or(c"unknown status".as_ptr(), |s| s.text().as_ptr())
+    mx_status::ALL.iter().find(|s| **s as i32 == status).map_or(c"unknown status".as_ptr(), |s| s.text().as_ptr())
 }

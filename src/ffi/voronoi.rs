@@ -4,8 +4,7 @@
 //! (`mx_voronoi_axis`), whose node and edge indices these functions use.
 
 use super::axis::{axis_error, mx_axis, mx_progress_fn};
-use super::ball::mx_ball;
-use super::ball_axis::ball_axis_error;
+use super::ball_voronoi::Diagram;
 use super::boundary::{check_out, deref, fill, guard, nth, run_with_progress, slice, write_out};
 use super::handles::{
     arg, create, free, impl_options, lend, options_default, options_init, query, Boxed, Handle, Lends, Options,
@@ -14,11 +13,9 @@ use super::last_error::FfiError;
 use super::shape2d::split_bulges;
 use super::status::mx_status;
 use crate::kernel::Point;
-use crate::plane::voronoi::{voronoi, SiteId, Sites, VoronoiDiagram, VoronoiError, VoronoiOptions};
+use crate::plane::voronoi::{voronoi, SiteId, Sites, VoronoiError, VoronoiOptions};
 use crate::plane::{AxisOptions, SiteRegion};
-use crate::polymetric::{voronoi_with_ball, BallVoronoi, BallVoronoiError, BallVoronoiOptions};
 use crate::shape::ShapeOptions;
-use crate::shape::VoronoiEdge;
 use std::ffi::c_void;
 use std::mem::size_of;
 
@@ -29,64 +26,8 @@ pub struct mx_voronoi {
     /// The frame with the sites as holes and its medial axis (for a
     /// Euclidean diagram moved out of `diagram`, whose `axis` is left
     /// empty: the labels below index it).
-    axis: mx_axis,
-    diagram: Diagram,
-}
-
-/// A diagram under the Euclidean distance or under a polygon ball.
-enum Diagram {
-    Euclidean(VoronoiDiagram),
-    Ball(BallVoronoi),
-}
-
-impl Diagram {
-    fn auto_frame(&self) -> bool {
-        match self {
-            Diagram::Euclidean(d) => d.auto_frame,
-            Diagram::Ball(d) => d.auto_frame,
-        }
-    }
-
-    /// Every Voronoi vertex inside the frame: under a ball the frame's
-    /// margin is a proven bound, so always.
-    fn complete(&self) -> bool {
-        match self {
-            Diagram::Euclidean(d) => d.complete,
-            Diagram::Ball(_) => true,
-        }
-    }
-
-    fn regions(&self) -> &[SiteRegion] {
-        match self {
-            Diagram::Euclidean(d) => &d.regions,
-            Diagram::Ball(d) => &d.regions,
-        }
-    }
-
-    fn edges(&self) -> &[VoronoiEdge] {
-        match self {
-            Diagram::Euclidean(d) => &d.edges,
-            Diagram::Ball(d) => &d.edges,
-        }
-    }
-
-    fn frontier(&self) -> &[bool] {
-        match self {
-            Diagram::Euclidean(d) => &d.frontier,
-            Diagram::Ball(d) => &d.frontier,
-        }
-    }
-
-    fn region(&self, site: SiteId) -> Option<&SiteRegion> {
-        self.regions().iter().find(|r| r.site == site)
-    }
-
-    fn nearest_site(&self, p: Point) -> Option<(SiteId, f64, Point)> {
-        match self {
-            Diagram::Euclidean(d) => d.nearest_site(p),
-            Diagram::Ball(d) => d.nearest_site(p),
-        }
-    }
+    pub(super) axis: mx_axis,
+    pub(super) diagram: Diagram,
 }
 
 impl Handle for mx_voronoi {
@@ -319,7 +260,7 @@ fn voronoi_error(e: VoronoiError) -> FfiError {
 }
 
 /// The sites from C arrays, checked.
-unsafe fn read_sites(s: &mx_sites) -> Result<(Sites, Option<Vec<crate::shape::Vertex>>), FfiError> {
+pub(super) unsafe fn read_sites(s: &mx_sites) -> Result<(Sites, Option<Vec<crate::shape::Vertex>>), FfiError> {
     let two = s.point_count.checked_mul(2).ok_or_else(|| {
         FfiError::new(mx_status::MX_ERR_INVALID_ARGUMENT, format!("point_count = {} is too large", s.point_count))
     })?;
@@ -389,77 +330,6 @@ pub unsafe extern "C" fn mx_voronoi_compute(
             Ok(mx_voronoi { axis, diagram: Diagram::Euclidean(diagram) })
         })
     }
-}
-
-/// Computes the Voronoi diagram of `sites` under the unit ball `ball`
-/// (thesis chapter 3: the distance from a point p to a site is the least r
-/// with the ball `p + r·B` touching it) and writes a new handle to `*out`;
-/// `ball` NULL computes the Euclidean diagram (`mx_voronoi_compute`).
-/// Sites must be polygonal (points, polylines, polygons: a bulge gives
-/// `MX_ERR_UNSUPPORTED` naming the site). The library's frame lies past
-/// every Voronoi vertex by a proven margin, so `complete` is always 1. The
-/// geometry is read through `mx_voronoi_axis` (an axis under the ball:
-/// straight edges, `mx_axis_edge_contacts`), the labels, regions and
-/// nearest site (under the ball's distance) through the other
-/// `mx_voronoi_*` functions. `options` may be NULL; its `seed` does not
-/// apply (the construction is deterministic). Fails as
-/// `mx_voronoi_compute`; `*out` is then untouched.
-///
-/// # Safety
-/// `sites` NULL or valid with arrays valid for their counts; `ball` NULL
-/// or a live handle; `options` NULL or valid; `out` NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn mx_voronoi_compute_with_ball(
-    sites: *const mx_sites,
-    ball: *const mx_ball,
-    options: *const mx_voronoi_options,
-    out: *mut *mut mx_voronoi,
-) -> mx_status {
-    if ball.is_null() {
-        // SAFETY: forwarded contract.
-        return unsafe { mx_voronoi_compute(sites, options, out) };
-    }
-    // SAFETY: caller contract.
-    unsafe {
-        create(out, || {
-            let (s, o) = (deref(sites, "sites")?, mx_voronoi_options::read_or_default(options)?);
-            let shape = shape_options(&o)?;
-            let b = &arg(ball)?.inner;
-            let (sites, boundary) = read_sites(s)?;
-            let opts = BallVoronoiOptions { shape, boundary };
-            let export = "mx_voronoi_compute_with_ball";
-            let diagram = run_with_progress(export, "mx_voronoi_options", o.threads, o.progress, o.user, || {
-                voronoi_with_ball(&sites, b, &opts).map_err(ball_voronoi_error)
-            })?;
-            let axis =
-                mx_axis { shape: diagram.shape().clone(), axis: Default::default(), ball: Some(diagram.axis.clone()) };
-            Ok(mx_voronoi { axis, diagram: Diagram::Ball(diagram) })
-        })
-    }
-}
-
-/// The shape options `o` asks for (its tolerance checked).
-fn shape_options(o: &mx_voronoi_options) -> Result<ShapeOptions, FfiError> {
-    if !(o.tolerance.is_finite() && o.tolerance >= 0.0) {
-        return Err(FfiError::new(
-            mx_status::MX_ERR_INVALID_ARGUMENT,
-            format!("mx_voronoi_options.tolerance = {}: use a finite value >= 0", o.tolerance),
-        ));
-    }
-    Ok(ShapeOptions { tolerance: (o.tolerance > 0.0).then_some(o.tolerance), ..ShapeOptions::default() })
-}
-
-fn ball_voronoi_error(e: BallVoronoiError) -> FfiError {
-    let message = e.to_string();
-    let mut f = match e {
-        BallVoronoiError::NoSites => FfiError::new(mx_status::MX_ERR_EMPTY, String::new()),
-        BallVoronoiError::Invalid { error, .. } => FfiError::from(error),
-        BallVoronoiError::Arc { .. } => FfiError::new(mx_status::MX_ERR_UNSUPPORTED, String::new()),
-        BallVoronoiError::Axis(a) => ball_axis_error(a),
-    };
-    // The diagram's message names the site; the shape's would name a loop.
-    f.message = message;
-    f
 }
 
 /// Releases a diagram (and its axis). NULL is a no-op.
@@ -649,4 +519,15 @@ pub unsafe extern "C" fn mx_voronoi_nearest_site(
             Ok(mx_nearest_site { site: site_c(s), distance: d, foot_x: f.x, foot_y: f.y })
         })
     }
+}
+
+/// The shape options `o` asks for (its tolerance checked).
+pub(super) fn shape_options(o: &mx_voronoi_options) -> Result<ShapeOptions, FfiError> {
+    if !(o.tolerance.is_finite() && o.tolerance >= 0.0) {
+        return Err(FfiError::new(
+            mx_status::MX_ERR_INVALID_ARGUMENT,
+            format!("mx_voronoi_options.tolerance = {}: use a finite value >= 0", o.tolerance),
+        ));
+    }
+    Ok(ShapeOptions { tolerance: (o.tolerance > 0.0).then_some(o.tolerance), ..ShapeOptions::default() })
 }

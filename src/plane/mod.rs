@@ -23,6 +23,7 @@ pub(crate) mod medial;
 pub(crate) mod offset;
 pub(crate) mod voronoi;
 
+pub use crate::shape::SiteRegion;
 pub use axis::draw::AxisPicture;
 pub use axis::json::site_json;
 pub use axis::{AxisEdge, AxisNode, MedialAxis2d, NodeKind, Primitive, MIN_RELATIVE_SAMPLE_TOLERANCE};
@@ -34,7 +35,6 @@ pub use offset::dxf::offsets_to_dxf;
 pub use offset::json::{offsets_to_json, write_offsets_json};
 pub use offset::{OffsetError, OffsetLayer, OffsetLoop, OffsetOptions, OffsetRegion, Offsets};
 pub use voronoi::json::{read_sites, shape_or_sites, site_id_json};
-pub use voronoi::regions::SiteRegion;
 pub use voronoi::{voronoi, SiteId, Sites, VoronoiDiagram, VoronoiEdge, VoronoiError, VoronoiOptions};
 
 /// The algorithm's internal steps, for the project's own tests, fuzz

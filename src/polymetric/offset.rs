@@ -21,8 +21,7 @@ use super::classes::{ContactClass, ShapeFeature};
 use super::graph::BallAxis;
 use super::BallAxisError;
 use crate::kernel::Point;
-use crate::plane::{OffsetLayer, OffsetLoop, OffsetRegion};
-use crate::shape::{Feature, Shape2d, Vertex};
+use crate::shape::{Feature, Shape2d};
 
 /// One closed offset loop: straight elements between its points.
 #[derive(Debug, Clone, PartialEq)]
@@ -57,22 +56,6 @@ pub struct BallOffsetLayer {
 }
 
 impl BallOffsetLayer {
-    /// The same layer as the Euclidean offsets' type (straight elements),
-    /// for the writers and handles that take that one.
-    pub fn to_offset_layer(&self) -> OffsetLayer {
-        let loops = self
-            .loops
-            .iter()
-            .map(|lp| OffsetLoop {
-                vertices: lp.points.iter().map(|&p| Vertex { p, bulge: 0.0 }).collect(),
-                area: lp.area,
-                region: lp.region,
-            })
-            .collect();
-        let regions = self.regions.iter().map(|r| OffsetRegion { outer: r.outer, holes: r.holes.clone() }).collect();
-        OffsetLayer::from_loops(self.distance, loops, regions)
-    }
-
     /// Area of the offset region (outer loops less holes).
     pub fn area(&self) -> f64 {
         self.loops.iter().map(|l| l.area).sum()

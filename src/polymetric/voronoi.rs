@@ -28,9 +28,10 @@ use super::error::BallAxisError;
 use super::graph::BallAxis;
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{BBox, Point};
-use crate::plane::voronoi::regions::{site_regions, SiteRegion};
 use crate::shape::index::chain_tree::RunBounds;
 use crate::shape::model::error::ElementRef;
+use crate::shape::model::site_regions::site_regions;
+use crate::shape::SiteRegion;
 use crate::shape::{Ball2, ChainTree, Shape2d, ShapeError, ShapeOptions, SiteId, Sites, Vertex, VoronoiEdge};
 
 /// Options for [`voronoi_with_ball`].

@@ -9,7 +9,7 @@ use super::draw::ball_path;
 use super::voronoi::BallVoronoi;
 use crate::io::svg_writer::Style;
 use crate::kernel::Point;
-use crate::plane::voronoi::draw::{clipped, sites_document};
+use crate::shape::draw_sites::{clipped, sites_document};
 
 /// Balls drawn (at the vertices of largest radius inside the picture).
 const BALLS_DRAWN: usize = 3;

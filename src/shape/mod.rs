@@ -22,6 +22,7 @@
 pub(crate) mod ball;
 pub(crate) mod build;
 pub(crate) mod draw;
+pub(crate) mod draw_sites;
 pub(crate) mod index;
 pub(crate) mod model;
 pub(crate) mod shape2d;
@@ -41,6 +42,7 @@ pub use model::error::{Degeneracy, ElementRef, ShapeError};
 pub use model::joints::{classify, turning_angle, JointKind};
 pub use model::loose::LooseElement;
 pub use model::options::ShapeOptions;
+pub use model::site_regions::SiteRegion;
 pub use model::sites::{SiteId, Sites, VoronoiEdge};
 pub use shape2d::{ElementSpec, Shape2d};
 

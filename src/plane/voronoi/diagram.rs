@@ -5,7 +5,8 @@
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Point;
 use crate::plane::axis::{MedialAxis2d, Primitive};
-use crate::plane::voronoi::regions::{site_regions, SiteRegion};
+use crate::shape::model::site_regions::site_regions;
+use crate::shape::SiteRegion;
 use crate::shape::{ChainTree, Shape2d};
 use crate::shape::{SiteId, VoronoiEdge};
 

@@ -11,7 +11,7 @@
 //! primitives belong to one site is a *self-edge* (points with two nearest
 //! points on that site, Figure 2.15). The region of a site (Corollary 2) is
 //! bounded by one closed walk of the edges between it and other sites
-//! ([`regions`]).
+//! ([`crate::shape::SiteRegion`]).
 //!
 //! Sites are points, open curves and closed regions bounded by segments
 //! and arcs. Points and curves are holes of zero area
@@ -22,7 +22,6 @@ pub(crate) mod diagram;
 pub(crate) mod draw;
 pub(crate) mod frame;
 pub(crate) mod json;
-pub(crate) mod regions;
 
 pub use crate::shape::{SiteId, Sites, VoronoiEdge};
 pub use diagram::VoronoiDiagram;
