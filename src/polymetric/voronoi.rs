@@ -30,7 +30,7 @@ use crate::kernel::tolerance::Tolerance;
 use crate::kernel::{BBox, Point};
 use crate::shape::index::chain_tree::RunBounds;
 use crate::shape::model::error::ElementRef;
-use crate::shape::model::site_regions::site_regions;
+use crate::shape::model::site_regions::{frontier_nodes, site_regions};
 use crate::shape::SiteRegion;
 use crate::shape::{Ball2, ChainTree, Shape2d, ShapeError, ShapeOptions, SiteId, Sites, Vertex, VoronoiEdge};
 
@@ -311,18 +311,9 @@ pub fn voronoi_with_ball(
             VoronoiEdge { sides, self_edge: sides[0] == sides[1] }
         })
         .collect();
-    let mut frontier = vec![false; axis.nodes.len()];
-    if auto_frame {
-        let (mut at_frame, mut at_sites) = (vec![false; axis.nodes.len()], vec![false; axis.nodes.len()]);
-        for (e, v) in axis.edges.iter().zip(&edges) {
-            let seen = if v.sides.contains(&SiteId::Frame) { &mut at_frame } else { &mut at_sites };
-            seen[e.from] = true;
-            seen[e.to] = true;
-        }
-        for (f, (a, b)) in frontier.iter_mut().zip(at_frame.iter().zip(&at_sites)) {
-            *f = *a && *b;
-        }
-    }
+    let ends = |i: usize| (axis.edges[i].from, axis.edges[i].to);
+    let frontier =
+        if auto_frame { frontier_nodes(axis.nodes.len(), ends, &edges) } else { vec![false; axis.nodes.len()] };
     let toward = |i: usize, from_start: bool| {
         let e = &axis.edges[i];
         let (a, b) = (axis.nodes[e.from].at, axis.nodes[e.to].at);
@@ -332,7 +323,7 @@ pub fn voronoi_with_ball(
             (a - b).unit()
         }
     };
-    let regions = site_regions(|i| (axis.edges[i].from, axis.edges[i].to), &edges, &loop_sites, auto_frame, toward);
+    let regions = site_regions(ends, &edges, &loop_sites, auto_frame, toward);
     let site_index = ChainTree::new(&shape.loops()[usize::from(auto_frame)..]);
     Ok(BallVoronoi { axis, edges, frontier, auto_frame, regions, loop_sites, site_index, shape })
 }

@@ -5,7 +5,7 @@
 use crate::kernel::tolerance::Tolerance;
 use crate::kernel::Point;
 use crate::plane::axis::{MedialAxis2d, Primitive};
-use crate::shape::model::site_regions::site_regions;
+use crate::shape::model::site_regions::{frontier_nodes, site_regions};
 use crate::shape::SiteRegion;
 use crate::shape::{ChainTree, Shape2d};
 use crate::shape::{SiteId, VoronoiEdge};
@@ -63,19 +63,9 @@ impl VoronoiDiagram {
                 VoronoiEdge { sides, self_edge: sides[0] == sides[1] }
             })
             .collect();
-        let mut frontier = vec![false; axis.nodes.len()];
-        if auto_frame {
-            let mut at_frame = vec![false; axis.nodes.len()];
-            let mut at_sites = vec![false; axis.nodes.len()];
-            for (e, v) in axis.edges.iter().zip(&edges) {
-                let seen = if v.sides.contains(&SiteId::Frame) { &mut at_frame } else { &mut at_sites };
-                seen[e.from] = true;
-                seen[e.to] = true;
-            }
-            for (f, (a, b)) in frontier.iter_mut().zip(at_frame.iter().zip(&at_sites)) {
-                *f = *a && *b;
-            }
-        }
+        let ends = |i: usize| (axis.edges[i].from, axis.edges[i].to);
+        let n = axis.nodes.len();
+        let frontier = if auto_frame { frontier_nodes(n, ends, &edges) } else { vec![false; n] };
         // The direction an edge leaves a node in, from a point a little
         // way along it (its ends are the nodes themselves).
         let toward = |i: usize, from_start: bool| {
@@ -87,7 +77,7 @@ impl VoronoiDiagram {
             let near = e.eval(&shape, &axis.nodes, s).map_or(a + (b - a) * s, |d| d.center);
             (near - at).unit()
         };
-        let regions = site_regions(|i| (axis.edges[i].from, axis.edges[i].to), &edges, &loop_sites, auto_frame, toward);
+        let regions = site_regions(ends, &edges, &loop_sites, auto_frame, toward);
         let first_site_loop = usize::from(auto_frame);
         let site_index = ChainTree::new(&shape.loops()[first_site_loop..]);
         VoronoiDiagram {

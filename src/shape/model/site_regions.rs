@@ -29,6 +29,24 @@ pub struct SiteRegion {
     pub unbounded: bool,
 }
 
+/// Per node of a diagram with the library's frame: whether edges between
+/// sites and edges facing the frame meet there (an edge between sites
+/// runs on to infinity from it). `ends(i)` gives edge `i`'s two nodes.
+pub(crate) fn frontier_nodes(
+    node_count: usize,
+    ends: impl Fn(usize) -> (usize, usize),
+    edges: &[VoronoiEdge],
+) -> Vec<bool> {
+    let (mut at_frame, mut at_sites) = (vec![false; node_count], vec![false; node_count]);
+    for (i, v) in edges.iter().enumerate() {
+        let seen = if v.sides.contains(&SiteId::Frame) { &mut at_frame } else { &mut at_sites };
+        let (a, b) = ends(i);
+        seen[a] = true;
+        seen[b] = true;
+    }
+    at_frame.iter().zip(&at_sites).map(|(a, b)| *a && *b).collect()
+}
+
 /// The regions of every site but the library's frame (`loop_sites[0]`
 /// when it is [`SiteId::Frame`] and `skip_frame`), in loop order.
 /// `ends(i)` gives the `from` and `to` nodes of axis edge `i` (any axis:
