@@ -223,7 +223,7 @@ mx_element arc(double x0, double y0, double x1, double y1, double cx, double cy,
     e.kind = MX_ELEMENT_ARC;
     e.cx = cx;
     e.cy = cy;
-    e.ccw = ccw ? 1u : 0u;
+    e.ccw = ccw ? 1 : 0;
     return e;
 }
 
@@ -267,7 +267,8 @@ void test_null_arguments() {
     auto shape = good_shape();
     const mx_shape2d* s = shape.get();
     size_t n = 777;
-    uint32_t u = 777;
+    int32_t u = 777;
+    mx_joint_kind joint = MX_JOINT_REFLEX;
     double d = 777.0;
     mx_bbox bb{7, 7, 7, 7};
     mx_element el{};
@@ -279,12 +280,12 @@ void test_null_arguments() {
     EXPECT_ERROR(mx_shape2d_loop_size(s, 0, nullptr), Err(null_arg).says("out"));
     EXPECT_ERROR(mx_shape2d_loop_reversed(nullptr, 0, &u), Err(null_arg).says("shape"));
     EXPECT_ERROR(mx_shape2d_loop_reversed(s, 0, nullptr), Err(null_arg).says("out"));
-    EXPECT_ERROR(mx_shape2d_loop_vertices(nullptr, 0, buf, 24, &n), Err(null_arg).says("shape"));
-    EXPECT_ERROR(mx_shape2d_loop_vertices(s, 0, buf, 24, nullptr), Err(null_arg).says("written"));
-    EXPECT_ERROR(mx_shape2d_loop_vertices(s, 0, nullptr, 24, &n), Err(null_arg).says("xyb"));
+    EXPECT_ERROR(mx_shape2d_loop_vertices(nullptr, 0, buf, 8, &n), Err(null_arg).says("shape"));
+    EXPECT_ERROR(mx_shape2d_loop_vertices(s, 0, buf, 8, nullptr), Err(null_arg).says("count"));
+    EXPECT_ERROR(mx_shape2d_loop_vertices(s, 0, nullptr, 8, &n), Err(null_arg).says("xyb"));
     EXPECT_ERROR(mx_shape2d_element(nullptr, 0, 0, &el), Err(null_arg).says("shape"));
     EXPECT_ERROR(mx_shape2d_element(s, 0, 0, nullptr), Err(null_arg).says("out"));
-    EXPECT_ERROR(mx_shape2d_joint(nullptr, 0, 0, &u), Err(null_arg).says("shape"));
+    EXPECT_ERROR(mx_shape2d_joint(nullptr, 0, 0, &joint), Err(null_arg).says("shape"));
     EXPECT_ERROR(mx_shape2d_joint(s, 0, 0, nullptr), Err(null_arg).says("out"));
     EXPECT_ERROR(mx_shape2d_bbox(nullptr, &bb), Err(null_arg).says("shape"));
     EXPECT_ERROR(mx_shape2d_bbox(s, nullptr), Err(null_arg).says("out"));
@@ -298,7 +299,8 @@ void test_null_arguments() {
     MT_CHECK(!fs::exists("never-written.svg"));
     // Out-params of failed queries are untouched.
     MT_CHECK_EQ(n, size_t{777});
-    MT_CHECK_EQ(u, 777u);
+    MT_CHECK_EQ(u, 777);
+    MT_CHECK(joint == MX_JOINT_REFLEX);
     MT_CHECK_EQ(d, 777.0);
     MT_CHECK(bb.xmin == 7 && bb.ymin == 7 && bb.xmax == 7 && bb.ymax == 7);
     MT_CHECK_EQ(el.x0, 777.0);
@@ -591,7 +593,8 @@ void test_queries_out_of_range() {
     if (!s) return;
     const Err ior = Err(MX_ERR_INDEX_OUT_OF_RANGE);
     size_t n = 777;
-    uint32_t u = 777;
+    int32_t u = 777;
+    mx_joint_kind joint = MX_JOINT_SMOOTH;
     mx_element el{};
     el.x0 = 777.0;
     std::vector<double> buf(64, -1.0);
@@ -599,25 +602,29 @@ void test_queries_out_of_range() {
     EXPECT_ERROR(mx_shape2d_loop_size(s, 2, &n), Err(ior).says("2"));
     EXPECT_ERROR(mx_shape2d_loop_size(s, static_cast<size_t>(-1), &n), ior);
     EXPECT_ERROR(mx_shape2d_loop_reversed(s, 2, &u), ior);
-    EXPECT_ERROR(mx_shape2d_loop_vertices(s, 2, buf.data(), buf.size(), &n), ior);
+    EXPECT_ERROR(mx_shape2d_loop_vertices(s, 2, buf.data(), buf.size() / 3, &n), ior);
     EXPECT_ERROR(mx_shape2d_element(s, 2, 0, &el), ior);
     EXPECT_ERROR(mx_shape2d_element(s, 0, 4, &el), Err(ior).says("4"));
     EXPECT_ERROR(mx_shape2d_element(s, 1, 100, &el), ior);
-    EXPECT_ERROR(mx_shape2d_joint(s, 0, 4, &u), ior);
-    EXPECT_ERROR(mx_shape2d_joint(s, 5, 0, &u), ior);
+    EXPECT_ERROR(mx_shape2d_joint(s, 0, 4, &joint), ior);
+    EXPECT_ERROR(mx_shape2d_joint(s, 5, 0, &joint), ior);
     MT_CHECK_EQ(n, size_t{777});
-    MT_CHECK_EQ(u, 777u);
+    MT_CHECK_EQ(u, 777);
+    MT_CHECK(joint == MX_JOINT_SMOOTH);
     MT_CHECK_EQ(el.x0, 777.0);
     for (double v : buf) MT_CHECK_EQ(v, -1.0);
 
-    // Buffer too small: 4 vertices need 12 doubles; nothing is written.
+    // Buffer too small (capacity in vertices): nothing is written.
     const Err small = Err(MX_ERR_BUFFER_TOO_SMALL);
-    EXPECT_ERROR(mx_shape2d_loop_vertices(s, 0, buf.data(), 11, &n), Err(small).says("12"));
-    EXPECT_ERROR(mx_shape2d_loop_vertices(s, 1, buf.data(), 3, &n), small);
-    EXPECT_ERROR(mx_shape2d_loop_vertices(s, 0, nullptr, 0, &n), small);  // size query
+    EXPECT_ERROR(mx_shape2d_loop_vertices(s, 0, buf.data(), 3, &n), Err(small).says("4 vertices"));
+    EXPECT_ERROR(mx_shape2d_loop_vertices(s, 1, buf.data(), 1, &n), small);
     MT_CHECK_EQ(n, size_t{777});
     for (double v : buf) MT_CHECK_EQ(v, -1.0);
-    MT_CHECK_OK(mx_shape2d_loop_vertices(s, 0, buf.data(), 12, &n));
+    // Size query: capacity 0 writes only the count.
+    MT_CHECK_OK(mx_shape2d_loop_vertices(s, 0, nullptr, 0, &n));
+    MT_CHECK_EQ(n, size_t{4});
+    n = 777;
+    MT_CHECK_OK(mx_shape2d_loop_vertices(s, 0, buf.data(), 4, &n));
     MT_CHECK_EQ(n, size_t{4});
     MT_CHECK_EQ(buf[12], -1.0);
 }

@@ -118,7 +118,7 @@ inline mx_status run_medax_voronoi(const VoronoiInput& in, size_t threads,
     sites.curve_lengths = in.curve_lengths.empty() ? nullptr : in.curve_lengths.data();
     sites.curve_count = in.curve_lengths.size();
     sites.boundary_xyb = in.boundary_xyb.empty() ? nullptr : in.boundary_xyb.data();
-    sites.boundary_length = in.boundary_xyb.size() / 3;
+    sites.boundary_count = in.boundary_xyb.size() / 3;
     mx_voronoi_options o;
     mx_voronoi_options_init(&o, sizeof o);
     o.threads = threads;

@@ -48,7 +48,8 @@ int main(void) {
     struct mx_bbox bbox;
     struct mx_element element;
     size_t loops = 0, n = 0, written = 0;
-    uint32_t reversed = 9, joint = 9;
+    int32_t reversed = 9;
+    enum mx_joint_kind joint = MX_JOINT_SMOOTH;
     double area = 0.0, back[12];
     const char *version = mx_version();
     char expected_version[32];
@@ -68,7 +69,7 @@ int main(void) {
     CHECK(loops == 2);
     CHECK_OK(mx_shape2d_loop_size(shape, 0, &n));
     CHECK(n == 4);
-    CHECK_OK(mx_shape2d_loop_vertices(shape, 0, back, 12, &written));
+    CHECK_OK(mx_shape2d_loop_vertices(shape, 0, back, 4, &written));
     CHECK(written == 4);
     CHECK(memcmp(back, xyb, sizeof back) == 0);
     CHECK_OK(mx_shape2d_loop_reversed(shape, 1, &reversed));

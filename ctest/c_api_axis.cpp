@@ -48,7 +48,7 @@ std::vector<double> samples_of(const mx_axis* a, size_t i, double tol) {
     if (!MT_CHECK_OK(mx_axis_edge_sample(a, i, tol, nullptr, 0, &n))) return {};
     std::vector<double> xyr(3 * n);
     size_t m = 0;
-    MT_CHECK_OK(mx_axis_edge_sample(a, i, tol, xyr.data(), xyr.size(), &m));
+    MT_CHECK_OK(mx_axis_edge_sample(a, i, tol, xyr.data(), n, &m));
     MT_CHECK_EQ(m, n);
     return xyr;
 }
@@ -129,10 +129,10 @@ void test_rectangle() {
     mx_axis_node node{7, 7, 7, MX_NODE_LEAF};
     MT_CHECK_STATUS(mx_axis_get_node(a.get(), 6, &node), MX_ERR_INDEX_OUT_OF_RANGE);
     MT_CHECK_EQ(node.x, 7.0);
-    double buf[5] = {7, 7, 7, 7, 7};
-    MT_CHECK_STATUS(mx_axis_edge_sample(a.get(), 0, 1e-3, buf, 5, &n), MX_ERR_BUFFER_TOO_SMALL);
-    MT_CHECK_STATUS(mx_axis_edge_sample(a.get(), 0, 0.0, buf, 5, &n), MX_ERR_INVALID_ARGUMENT);
-    MT_CHECK_STATUS(mx_axis_edge_sample(a.get(), 5, 1e-3, buf, 5, &n), MX_ERR_INDEX_OUT_OF_RANGE);
+    double buf[5] = {7, 7, 7, 7, 7};  // room for one sample; an edge has at least two
+    MT_CHECK_STATUS(mx_axis_edge_sample(a.get(), 0, 1e-3, buf, 1, &n), MX_ERR_BUFFER_TOO_SMALL);
+    MT_CHECK_STATUS(mx_axis_edge_sample(a.get(), 0, 0.0, buf, 1, &n), MX_ERR_INVALID_ARGUMENT);
+    MT_CHECK_STATUS(mx_axis_edge_sample(a.get(), 5, 1e-3, buf, 1, &n), MX_ERR_INDEX_OUT_OF_RANGE);
     MT_CHECK_EQ(n, size_t{77});
     MT_CHECK_EQ(buf[0], 7.0);
 }

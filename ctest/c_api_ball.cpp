@@ -21,23 +21,30 @@ void presets() {
     mt::begin_case("presets");
     mx_ball* square = nullptr;
     MT_CHECK_OK(mx_ball_square(&square));
-    uint32_t dim = 0;
+    size_t dim = 0;
     size_t n = 0;
     MT_CHECK_OK(mx_ball_dimension(square, &dim));
-    MT_CHECK_EQ(dim, 2u);
+    MT_CHECK_EQ(dim, size_t{2});
     MT_CHECK_OK(mx_ball_vertex_count(square, &n));
     MT_CHECK_EQ(n, size_t{4});
     double xy[8] = {0};
-    MT_CHECK_OK(mx_ball_vertices(square, xy, 4));
+    size_t count = 0;
+    MT_CHECK_OK(mx_ball_vertices(square, nullptr, 0, &count));  // size query
+    MT_CHECK_EQ(count, size_t{4});
+    count = 0;
+    MT_CHECK_OK(mx_ball_vertices(square, xy, 4, &count));
+    MT_CHECK_EQ(count, size_t{4});
     const double ccw[8] = {1, -1, 1, 1, -1, 1, -1, -1};
     for (int i = 0; i < 8; ++i) MT_CHECK_EQ(xy[i], ccw[i]);
     double small[6] = {7, 7, 7, 7, 7, 7};
-    MT_CHECK_STATUS(mx_ball_vertices(square, small, 3), MX_ERR_BUFFER_TOO_SMALL);
+    count = 77;
+    MT_CHECK_STATUS(mx_ball_vertices(square, small, 3, &count), MX_ERR_BUFFER_TOO_SMALL);
     MT_CHECK_EQ(small[0], 7.0);
+    MT_CHECK_EQ(count, size_t{77});
     MT_CHECK_NEAR(distance(square, 1, 1, 4, -1), 3.0, 1e-15);
-    uint8_t sym = 0;
+    int32_t sym = 0;
     MT_CHECK_OK(mx_ball_is_symmetric(square, &sym));
-    MT_CHECK_EQ(sym, uint8_t{1});
+    MT_CHECK_EQ(sym, 1);
     mx_ball_free(square);
 
     mx_ball* diamond = nullptr;
@@ -54,7 +61,7 @@ void presets() {
     MT_CHECK_NEAR(distance(tri, 0, 0, 0, -3), 6.0, 1e-15);
     MT_CHECK_NEAR(distance(mirror, 0, 0, 0, -3), 3.0, 1e-15);
     MT_CHECK_OK(mx_ball_is_symmetric(tri, &sym));
-    MT_CHECK_EQ(sym, uint8_t{0});
+    MT_CHECK_EQ(sym, 0);
     mx_ball_free(tri);
     mx_ball_free(mirror);
 

@@ -95,9 +95,9 @@ void every_layer() {
     MT_CHECK_STATUS(mx_drawing_shape(d, 2, &none), MX_ERR_INDEX_OUT_OF_RANGE);
     MT_CHECK(none == reinterpret_cast<mx_shape2d*>(0x1));
     mx_ignored untouched{};
-    untouched.kind = 77;
+    untouched.source = 77;
     MT_CHECK_STATUS(mx_drawing_get_ignored(d, ignored, &untouched), MX_ERR_INDEX_OUT_OF_RANGE);
-    MT_CHECK_EQ(untouched.kind, 77u);
+    MT_CHECK_EQ(untouched.source, size_t{77});
     // The JSON holds both shapes.
     const std::string json = temp_path("parts.json");
     MT_CHECK_OK(mx_drawing_write_json(d, json.c_str()));
@@ -186,7 +186,7 @@ void memory_colours_and_handles() {
     MT_CHECK_EQ(warnings, size_t{1});
     mx_warning w{};
     MT_CHECK_OK(mx_drawing_get_warning(d, 0, &w));
-    MT_CHECK_EQ(w.kind, uint32_t{MX_WARNING_TOUCHING_SHAPES});
+    MT_CHECK(w.kind == MX_WARNING_TOUCHING_SHAPES);
     MT_CHECK(w.handles[0] + w.handles[1] == 0x2A + 0x2B && w.handles[0] != w.handles[1]);
     MT_CHECK(w.x == 10.0 && w.y >= 2.0 && w.y <= 6.0);
     MT_CHECK_STATUS(mx_drawing_get_warning(d, 1, &w), MX_ERR_INDEX_OUT_OF_RANGE);
@@ -194,7 +194,7 @@ void memory_colours_and_handles() {
     MT_CHECK_EQ(ignored, size_t{1});
     mx_ignored copy{};
     MT_CHECK_OK(mx_drawing_get_ignored(d, 0, &copy));
-    MT_CHECK_EQ(copy.kind, uint32_t{MX_IGNORED_DUPLICATE_LOOP});
+    MT_CHECK(copy.kind == MX_IGNORED_DUPLICATE_LOOP);
     MT_CHECK_EQ(copy.handle, uint64_t{0x3B});
     MT_CHECK_EQ(copy.other_handle, uint64_t{0x3A});
     mx_drawing_free(d);

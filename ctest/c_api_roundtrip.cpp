@@ -79,7 +79,7 @@ struct Snapshot {
     std::vector<std::vector<double>> vertices;
     std::vector<std::vector<mx_element>> elements;
     std::vector<std::vector<uint32_t>> joints;
-    std::vector<uint32_t> reversed;
+    std::vector<int32_t> reversed;
     mx_bbox bbox{};
     double area = 0.0;
     double tolerance = 0.0;
@@ -110,17 +110,19 @@ bool snapshot(const mx_shape2d* s, Snapshot& out) {
     if (mx_shape2d_loop_count(s, &snap.loops) != MX_OK) return false;
     for (size_t l = 0; l < snap.loops; ++l) {
         size_t n = 0;
-        uint32_t rev = 0;
+        int32_t rev = 0;
         if (mx_shape2d_loop_size(s, l, &n) != MX_OK || mx_shape2d_loop_reversed(s, l, &rev) != MX_OK)
             return false;
         std::vector<double> v(3 * n);
         size_t written = 0;
-        if (mx_shape2d_loop_vertices(s, l, v.data(), v.size(), &written) != MX_OK || written != n) return false;
+        if (mx_shape2d_loop_vertices(s, l, v.data(), n, &written) != MX_OK || written != n) return false;
         std::vector<mx_element> es(n);
         std::vector<uint32_t> js(n);
-        for (size_t k = 0; k < n; ++k)
-            if (mx_shape2d_element(s, l, k, &es[k]) != MX_OK || mx_shape2d_joint(s, l, k, &js[k]) != MX_OK)
-                return false;
+        for (size_t k = 0; k < n; ++k) {
+            mx_joint_kind j = MX_JOINT_SMOOTH;
+            if (mx_shape2d_element(s, l, k, &es[k]) != MX_OK || mx_shape2d_joint(s, l, k, &j) != MX_OK) return false;
+            js[k] = j;
+        }
         snap.vertices.push_back(std::move(v));
         snap.elements.push_back(std::move(es));
         snap.joints.push_back(std::move(js));
@@ -158,7 +160,10 @@ std::vector<uint32_t> joints_of(const mx_shape2d* s, size_t loop) {
     size_t n = 0;
     MT_CHECK_OK(mx_shape2d_loop_size(s, loop, &n));
     std::vector<uint32_t> js(n, 99);
-    for (size_t k = 0; k < n; ++k) MT_CHECK_OK(mx_shape2d_joint(s, loop, k, &js[k]));
+    for (size_t k = 0; k < n; ++k) {
+        mx_joint_kind j = MX_JOINT_SMOOTH;
+        if (MT_CHECK_OK(mx_shape2d_joint(s, loop, k, &j))) js[k] = j;
+    }
     return js;
 }
 
@@ -168,8 +173,8 @@ mx_element element_of(const mx_shape2d* s, size_t loop, size_t k) {
     return e;
 }
 
-uint32_t reversed_of(const mx_shape2d* s, size_t loop) {
-    uint32_t r = 99;
+int32_t reversed_of(const mx_shape2d* s, size_t loop) {
+    int32_t r = 99;
     MT_CHECK_OK(mx_shape2d_loop_reversed(s, loop, &r));
     return r;
 }
@@ -323,7 +328,7 @@ void test_rectangle_with_half_circle() {
     auto s = make({input});
     if (!s) return;
     MT_CHECK_EQ(loop_count(s.get()), size_t{1});
-    MT_CHECK_EQ(reversed_of(s.get(), 0), 0u);
+    MT_CHECK_EQ(reversed_of(s.get(), 0), 0);
     MT_CHECK_NEAR(area_of(s.get()), w * h + kPi * r * r / 2.0, 1e-14);
     MT_CHECK_NEAR(area_of(s.get()), bulge_loop_signed_area(input), 1e-14);
     check_bbox(s.get(), 0.0, 0.0, w + r, h);
@@ -336,7 +341,7 @@ void test_rectangle_with_half_circle() {
     // Elements: three segments and the arc around (w, h/2).
     const mx_element e0 = element_of(s.get(), 0, 0);
     MT_CHECK_EQ(e0.kind, static_cast<uint32_t>(MX_ELEMENT_SEGMENT));
-    MT_CHECK_EQ(e0.ccw, 0u);
+    MT_CHECK_EQ(e0.ccw, 0);
     MT_CHECK_EQ(e0.x0, 0.0);
     MT_CHECK_EQ(e0.y0, 0.0);
     MT_CHECK_EQ(e0.x1, w);
@@ -345,7 +350,7 @@ void test_rectangle_with_half_circle() {
     MT_CHECK_EQ(e0.bulge, 0.0);
     const mx_element e1 = element_of(s.get(), 0, 1);
     MT_CHECK_EQ(e1.kind, static_cast<uint32_t>(MX_ELEMENT_ARC));
-    MT_CHECK_EQ(e1.ccw, 1u);
+    MT_CHECK_EQ(e1.ccw, 1);
     MT_CHECK_EQ(e1.x0, w);
     MT_CHECK_EQ(e1.y0, 0.0);
     MT_CHECK_EQ(e1.x1, w);
@@ -364,10 +369,11 @@ void test_rectangle_with_half_circle() {
     const std::vector<uint32_t> expect = {MX_JOINT_CONVEX, MX_JOINT_SMOOTH, MX_JOINT_SMOOTH, MX_JOINT_CONVEX};
     MT_CHECK(joints_of(s.get(), 0) == expect);
 
-    // A buffer larger than needed: only 3n doubles are written.
+    // A buffer larger than needed (capacity in vertices): only 3n doubles
+    // are written.
     std::vector<double> big(3 * 4 + 5, -7.0);
     size_t written = 0;
-    MT_CHECK_OK(mx_shape2d_loop_vertices(s.get(), 0, big.data(), big.size(), &written));
+    MT_CHECK_OK(mx_shape2d_loop_vertices(s.get(), 0, big.data(), big.size() / 3, &written));
     MT_CHECK_EQ(written, size_t{4});
     for (size_t i = 12; i < big.size(); ++i) MT_CHECK_EQ(big[i], -7.0);
 
@@ -425,7 +431,7 @@ void test_circles() {
     for (size_t k = 0; k < 2; ++k) {
         const mx_element e = element_of(s.get(), 0, k);
         MT_CHECK_EQ(e.kind, static_cast<uint32_t>(MX_ELEMENT_ARC));
-        MT_CHECK_EQ(e.ccw, 1u);
+        MT_CHECK_EQ(e.ccw, 1);
         MT_CHECK_NEAR(e.cx, cx, 1e-14);
         MT_CHECK_NEAR(e.cy, cy, 1e-14);
         MT_CHECK_NEAR(e.radius, R, 1e-14);
@@ -473,7 +479,7 @@ void test_circles() {
         MT_CHECK_EQ(n, size_t{2});  // split into two half arcs
         MT_CHECK_NEAR(area_of(f.get()), kPi * R * R, 1e-14);
         check_bbox(f.get(), cx - R, cy - R, cx + R, cy + R);
-        MT_CHECK_EQ(reversed_of(f.get(), 0), ccw ? 0u : 1u);  // outer loops are stored CCW
+        MT_CHECK_EQ(reversed_of(f.get(), 0), ccw ? 0 : 1);  // outer loops are stored CCW
     }
 }
 
@@ -488,8 +494,8 @@ void test_orientation_and_holes() {
     auto s = make({outer_cw, hole_ccw});
     if (!s) return;
     MT_CHECK_EQ(loop_count(s.get()), size_t{2});
-    MT_CHECK_EQ(reversed_of(s.get(), 0), 1u);
-    MT_CHECK_EQ(reversed_of(s.get(), 1), 1u);
+    MT_CHECK_EQ(reversed_of(s.get(), 0), 1);
+    MT_CHECK_EQ(reversed_of(s.get(), 1), 1);
 
     // Area = outer - hole; the hole's arc (bulge 0.5 on a chord of 4) bulges
     // out of the 4 x 4 square: r = 2.5, sweep = 4 atan(0.5).
@@ -529,7 +535,7 @@ void test_orientation_and_holes() {
         const mx_element e = element_of(s.get(), 1, k);
         if (e.kind != MX_ELEMENT_ARC) continue;
         found_arc = true;
-        MT_CHECK_EQ(e.ccw, 0u);
+        MT_CHECK_EQ(e.ccw, 0);
         MT_CHECK_NEAR(e.radius, rr, 1e-14);
         MT_CHECK_NEAR(e.cx, 5.5, 1e-14);
         MT_CHECK_NEAR(e.cy, 5.0, 1e-14);
@@ -546,8 +552,8 @@ void test_orientation_and_holes() {
     const std::vector<double> hole_cw = {3, 3, 0, 3, 7, 0, 7, 7, -0.5, 7, 3, 0};
     auto t = make({outer_ccw, hole_cw});
     if (!t) return;
-    MT_CHECK_EQ(reversed_of(t.get(), 0), 0u);
-    MT_CHECK_EQ(reversed_of(t.get(), 1), 0u);
+    MT_CHECK_EQ(reversed_of(t.get(), 0), 0);
+    MT_CHECK_EQ(reversed_of(t.get(), 1), 0);
     MT_CHECK_NEAR(area_of(t.get()), 100.0 - hole_area, 1e-13);
 }
 
@@ -627,9 +633,9 @@ void test_from_file_and_svg() {
         if (!s) continue;
         MT_CHECK_EQ(loop_count(s.get()), size_t{3});
         MT_CHECK_NEAR(area_of(s.get()), expected_area, 1e-12);
-        MT_CHECK_EQ(reversed_of(s.get(), 0), 0u);
-        MT_CHECK_EQ(reversed_of(s.get(), 1), 1u);  // the holes are given CCW
-        MT_CHECK_EQ(reversed_of(s.get(), 2), 1u);
+        MT_CHECK_EQ(reversed_of(s.get(), 0), 0);
+        MT_CHECK_EQ(reversed_of(s.get(), 1), 1);  // the holes are given CCW
+        MT_CHECK_EQ(reversed_of(s.get(), 2), 1);
         check_bbox(s.get(), 0.0, 0.0, 120.0, 70.0);
     }
 

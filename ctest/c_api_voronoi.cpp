@@ -78,7 +78,7 @@ void scene(std::mt19937_64& rng, int k) {
         size_t count = 0;
         MT_CHECK_OK(mx_axis_edge_sample(axis, i, 1e-4, nullptr, 0, &count));
         std::vector<double> xyr(3 * count);
-        MT_CHECK_OK(mx_axis_edge_sample(axis, i, 1e-4, xyr.data(), xyr.size(), &count));
+        MT_CHECK_OK(mx_axis_edge_sample(axis, i, 1e-4, xyr.data(), count, &count));
         for (size_t q = 0; q < count; ++q)
             for (const mx_site& side : e.sides) {
                 if (!MT_CHECK_EQ(side.kind, MX_SITE_REGION)) continue;

@@ -55,6 +55,18 @@ typedef struct {
     void *user;
 } voronoi_options_v01;
 
+/* The first layout of mx_drawing_select (keep_duplicates became int32_t
+ * in 0.2.0, within the 0.1 struct's padding: the layout ends at byte 44 of
+ * its 48). */
+typedef struct {
+    size_t struct_size;
+    const char *const *layers;
+    size_t layer_count;
+    const int16_t *colours;
+    size_t colour_count;
+    int32_t keep_duplicates;
+} drawing_select_v01;
+
 #if UINTPTR_MAX == 0xFFFFFFFFFFFFFFFFu
 /* The 0.1 sizes on 64-bit targets, which the library checks against. */
 _Static_assert(sizeof(shape_options_v01) == 56, "0.1 mx_shape_options");
@@ -63,6 +75,7 @@ _Static_assert(sizeof(offset_options_v01) == 48, "0.1 mx_offset_options");
 _Static_assert(sizeof(pocket_options_v01) == 40, "0.1 mx_pocket_options");
 _Static_assert(sizeof(vcarve_options_v01) == 32, "0.1 mx_vcarve_options");
 _Static_assert(sizeof(voronoi_options_v01) == 48, "0.1 mx_voronoi_options");
+_Static_assert(sizeof(drawing_select_v01) == 48, "0.1 mx_drawing_select");
 #endif
 
 static int failures = 0;
@@ -225,7 +238,107 @@ static void voronoi_options(void) {
     mx_voronoi_free(vd);
 }
 
+/* A drawing of the same square drawn twice: one copy is left out as a
+ * duplicate unless keep_duplicates (then both are kept, and meet). */
+static size_t duplicates_reported(const mx_drawing *d) {
+    size_t n = 0, dups = 0;
+    EXPECT(mx_drawing_ignored_count(d, &n), MX_OK);
+    for (size_t i = 0; i < n; ++i) {
+        mx_ignored ig;
+        memset(&ig, 0, sizeof ig);
+        EXPECT(mx_drawing_get_ignored(d, i, &ig), MX_OK);
+        dups += ig.kind == MX_IGNORED_DUPLICATE_LOOP;
+    }
+    return dups;
+}
+
+static void drawing_select(void) {
+    static const char svg[] = "<svg xmlns='http://www.w3.org/2000/svg'>"
+                              "<rect x='0' y='0' width='4' height='2'/><rect x='0' y='0' width='4' height='2'/></svg>";
+    drawing_select_v01 v = {sizeof v, NULL, 0, NULL, 0, 1};
+    drawing_select_v01 *p = exact_copy(&v, sizeof v);
+    size_t dups[2] = {9, 9};
+    for (int keep = 0; keep < 2; ++keep) {
+        p->keep_duplicates = keep;
+        mx_drawing *d = NULL;
+        EXPECT(mx_drawing_from_memory((const uint8_t *)svg, sizeof svg - 1, MX_FORMAT_SVG, NULL,
+                                      (const mx_drawing_select *)p, &d),
+               MX_OK);
+        dups[keep] = duplicates_reported(d);
+        mx_drawing_free(d);
+    }
+    /* keep_duplicates, the last field of the first layout, is read. */
+    if (!(dups[0] == 1 && dups[1] == 0)) {
+        fprintf(stderr, "c_options_v1.c: keep_duplicates 0 / 1 reported %zu / %zu duplicates, want 1 / 0\n", dups[0],
+                dups[1]);
+        ++failures;
+    }
+    mx_drawing *d = NULL;
+    p->struct_size = 43;
+    EXPECT(mx_drawing_from_memory((const uint8_t *)svg, sizeof svg - 1, MX_FORMAT_SVG, NULL,
+                                  (const mx_drawing_select *)p, &d),
+           MX_ERR_INVALID_ARGUMENT);
+    CHECK(d == NULL);
+    free(p);
+}
+
+/* _init into a block of exactly the first layout's size followed by guard
+ * bytes: the library writes that many bytes and no more (valgrind sees a
+ * write past the block too). */
+typedef enum mx_status (*init_fn)(void *, size_t);
+static void init_guarded(const char *name, init_fn init, size_t size, int first_layout_end) {
+    unsigned char *block = malloc(size + 16);
+    if (!block) {
+        abort();
+    }
+    memset(block, 0xAB, size + 16);
+    EXPECT(init(block, size), MX_OK);
+    size_t written = 0;
+    memcpy(&written, block, sizeof written);
+    if (written != size) {
+        fprintf(stderr, "c_options_v1.c: %s: struct_size %zu, want %zu\n", name, written, size);
+        ++failures;
+    }
+    for (size_t i = size; i < size + 16; ++i) {
+        if (block[i] != 0xAB) {
+            fprintf(stderr, "c_options_v1.c: %s wrote byte %zu past a %zu-byte struct\n", name, i, size);
+            ++failures;
+            break;
+        }
+    }
+    if (first_layout_end) {
+        EXPECT(init(block, size - 1), MX_ERR_INVALID_ARGUMENT); /* below the first layout: refused */
+    }
+    free(block);
+}
+
+/* Each _init behind one signature (calling through a cast pointer would be
+ * undefined behaviour). */
+#define INIT_WRAPPER(fn, T) \
+    static enum mx_status wrap_##fn(void *p, size_t n) { return fn((T *)p, n); }
+INIT_WRAPPER(mx_shape_options_init, mx_shape_options)
+INIT_WRAPPER(mx_axis_options_init, mx_axis_options)
+INIT_WRAPPER(mx_offset_options_init, mx_offset_options)
+INIT_WRAPPER(mx_pocket_options_init, mx_pocket_options)
+INIT_WRAPPER(mx_vcarve_options_init, mx_vcarve_options)
+INIT_WRAPPER(mx_voronoi_options_init, mx_voronoi_options)
+INIT_WRAPPER(mx_drawing_select_init, mx_drawing_select)
+#define INIT_GUARDED(fn, size) init_guarded(#fn, wrap_##fn, size, 1)
+
+static void inits_never_overrun(void) {
+    INIT_GUARDED(mx_shape_options_init, sizeof(shape_options_v01));
+    INIT_GUARDED(mx_axis_options_init, sizeof(axis_options_v01));
+    INIT_GUARDED(mx_offset_options_init, sizeof(offset_options_v01));
+    INIT_GUARDED(mx_pocket_options_init, sizeof(pocket_options_v01));
+    INIT_GUARDED(mx_vcarve_options_init, sizeof(vcarve_options_v01));
+    INIT_GUARDED(mx_voronoi_options_init, sizeof(voronoi_options_v01));
+    init_guarded("mx_drawing_select_init", wrap_mx_drawing_select_init, sizeof(drawing_select_v01), 0);
+    INIT_GUARDED(mx_drawing_select_init, 44); /* the first layout's end */
+}
+
 int main(void) {
+    inits_never_overrun();
+    drawing_select();
     shape_options();
     axis_and_vcarve_options();
     offset_and_pocket_options();
@@ -234,6 +347,6 @@ int main(void) {
         fprintf(stderr, "c_options_v1: %d failure(s)\n", failures);
         return 1;
     }
-    printf("c_options_v1: the 0.1 layouts of all six options structs are accepted and read\n");
+    printf("c_options_v1: the first layouts of all seven options structs are written within and read\n");
     return 0;
 }

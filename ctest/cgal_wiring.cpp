@@ -362,9 +362,9 @@ public:
         MT_CHECK_OK(mx_shape2d_loop_count(o.shape.get(), &count));
         if (!check_size(count, t.oriented.size())) return;
         for (size_t l = 0; l < count; ++l) {
-            uint32_t rev = 9;
+            int32_t rev = 9;
             MT_CHECK_OK(mx_shape2d_loop_reversed(o.shape.get(), l, &rev));
-            MT_CHECK_EQ(rev, t.reversed[l] ? 1u : 0u);
+            MT_CHECK_EQ(rev, t.reversed[l] ? 1 : 0);
             const std::vector<double> v = mt::loop_vertices(o.shape.get(), l);
             const Polygon& p = t.oriented[l];
             if (!check_size(v.size(), 3 * p.size())) continue;
@@ -394,10 +394,10 @@ public:
                 const Point& v = p[k];
                 const Point& next = p[(k + 1) % n];
                 const CGAL::Orientation turn = CGAL::orientation(prev, v, next);
-                const uint32_t cgal = turn == CGAL::LEFT_TURN    ? MX_JOINT_CONVEX
-                                      : turn == CGAL::RIGHT_TURN ? MX_JOINT_REFLEX
-                                                                 : MX_JOINT_SMOOTH;
-                uint32_t got = 99;
+                const mx_joint_kind cgal = turn == CGAL::LEFT_TURN    ? MX_JOINT_CONVEX
+                                           : turn == CGAL::RIGHT_TURN ? MX_JOINT_REFLEX
+                                                                      : MX_JOINT_SMOOTH;
+                mx_joint_kind got = MX_JOINT_SMOOTH;
                 MT_CHECK_OK(mx_shape2d_joint(o.shape.get(), l, k, &got));
                 ++tally.joints;
                 const double angle = std::abs(turning_angle(prev, v, next));

@@ -154,7 +154,7 @@ inline std::vector<double> loop_vertices(const mx_shape2d* s, size_t loop) {
     if (mx_shape2d_loop_size(s, loop, &n) != MX_OK) return {};
     std::vector<double> v(3 * n);
     size_t written = 0;
-    if (mx_shape2d_loop_vertices(s, loop, v.data(), v.size(), &written) != MX_OK || written != n) return {};
+    if (mx_shape2d_loop_vertices(s, loop, v.data(), n, &written) != MX_OK || written != n) return {};
     return v;
 }
 

@@ -33,119 +33,6 @@
 #define MX_AXIS_MIN_RELATIVE_SAMPLE_TOLERANCE 1e-12
 
 /**
- * `mx_ignored.kind`: curves that close no loop.
- */
-#define MX_IGNORED_OPEN_CHAIN 1
-
-/**
- * `mx_ignored.kind`: an entity that is not a curve medax reads.
- */
-#define MX_IGNORED_ENTITY 2
-
-/**
- * `mx_ignored.kind`: the curves of a layer left out by the selection.
- */
-#define MX_IGNORED_OTHER_LAYER 3
-
-/**
- * `mx_ignored.kind`: a loop enclosing no area in sum.
- */
-#define MX_IGNORED_FLAT_LOOP 4
-
-/**
- * `mx_ignored.kind`: a copy of a loop drawn twice.
- */
-#define MX_IGNORED_DUPLICATE_LOOP 5
-
-/**
- * `mx_ignored.kind`: a hole touching or crossing another loop of its shape.
- */
-#define MX_IGNORED_TOUCHING_LOOP 6
-
-/**
- * `mx_ignored.kind`: an outer loop with its holes that does not validate.
- */
-#define MX_IGNORED_INVALID_SHAPE 7
-
-/**
- * `mx_warning.kind`: curve ends that did not meet within the validation
- * tolerance were joined (within the chaining tolerance).
- */
-#define MX_WARNING_GAP_CLOSED 1
-
-/**
- * `mx_warning.kind`: two shapes touch or cross (both kept).
- */
-#define MX_WARNING_TOUCHING_SHAPES 2
-
-/**
- * `mx_pocket_options.order`: every ring after the rings inside it (the
- * wall last, as a finishing pass).
- */
-#define MX_POCKET_INSIDE_OUT 0
-
-/**
- * `mx_pocket_options.order`: every ring before the rings inside it.
- */
-#define MX_POCKET_OUTSIDE_IN 1
-
-/**
- * `mx_uncut_region.kind`: a cusp between rings that the stepover left.
- */
-#define MX_UNCUT_SCALLOP 0
-
-/**
- * `mx_uncut_region.kind`: corners and necks along the wall narrower than
- * the tool.
- */
-#define MX_UNCUT_WALL 1
-
-/**
- * `mx_element.kind` of a line segment.
- */
-#define MX_ELEMENT_SEGMENT 0
-
-/**
- * `mx_element.kind` of a circular arc.
- */
-#define MX_ELEMENT_ARC 1
-
-/**
- * `mx_joint` value: tangent-continuous joint.
- */
-#define MX_JOINT_SMOOTH 0
-
-/**
- * `mx_joint` value: convex corner (interior angle below 180°).
- */
-#define MX_JOINT_CONVEX 1
-
-/**
- * `mx_joint` value: reflex corner (interior angle above 180°).
- */
-#define MX_JOINT_REFLEX 2
-
-/**
- * Format argument: guess from the file extension or content.
- */
-#define MX_FORMAT_AUTO 0
-
-/**
- * Format argument: medax shape JSON.
- */
-#define MX_FORMAT_JSON 1
-
-/**
- * Format argument: ASCII DXF.
- */
-#define MX_FORMAT_DXF 2
-
-/**
- * Format argument: SVG document or path data.
- */
-#define MX_FORMAT_SVG 3
-
-/**
  * Major version of the medax headers (the SONAME is `libmedax.so.<major>`).
  */
 #define MEDAX_VERSION_MAJOR 0
@@ -153,7 +40,7 @@
 /**
  * Minor version of the medax headers.
  */
-#define MEDAX_VERSION_MINOR 1
+#define MEDAX_VERSION_MINOR 2
 
 /**
  * Patch version of the medax headers.
@@ -352,6 +239,87 @@ typedef enum mx_contact_kind {
 } mx_contact_kind;
 
 /**
+ * `mx_ignored.kind`: why something of a drawing is in no shape.
+ */
+typedef enum mx_ignored_kind {
+  /**
+   * Curves that close no loop.
+   */
+  MX_IGNORED_OPEN_CHAIN = 1,
+  /**
+   * An entity that is not a curve medax reads.
+   */
+  MX_IGNORED_ENTITY = 2,
+  /**
+   * The curves of a layer left out by the selection.
+   */
+  MX_IGNORED_OTHER_LAYER = 3,
+  /**
+   * A loop enclosing no area in sum.
+   */
+  MX_IGNORED_FLAT_LOOP = 4,
+  /**
+   * A copy of a loop drawn twice.
+   */
+  MX_IGNORED_DUPLICATE_LOOP = 5,
+  /**
+   * A hole touching or crossing another loop of its shape.
+   */
+  MX_IGNORED_TOUCHING_LOOP = 6,
+  /**
+   * An outer loop with its holes that does not validate.
+   */
+  MX_IGNORED_INVALID_SHAPE = 7,
+} mx_ignored_kind;
+
+/**
+ * `mx_warning.kind`.
+ */
+typedef enum mx_warning_kind {
+  /**
+   * Curve ends that did not meet within the validation tolerance were
+   * joined (within the chaining tolerance).
+   */
+  MX_WARNING_GAP_CLOSED = 1,
+  /**
+   * Two shapes touch or cross (both kept).
+   */
+  MX_WARNING_TOUCHING_SHAPES = 2,
+} mx_warning_kind;
+
+/**
+ * `mx_uncut_region.kind`.
+ */
+typedef enum mx_uncut_kind {
+  /**
+   * A cusp between rings that the stepover left.
+   */
+  MX_UNCUT_SCALLOP = 0,
+  /**
+   * Corners and necks along the wall narrower than the tool.
+   */
+  MX_UNCUT_WALL = 1,
+} mx_uncut_kind;
+
+/**
+ * What `mx_shape2d_joint` reports of a vertex.
+ */
+typedef enum mx_joint_kind {
+  /**
+   * Tangent-continuous joint.
+   */
+  MX_JOINT_SMOOTH = 0,
+  /**
+   * Convex corner (interior angle below 180°).
+   */
+  MX_JOINT_CONVEX = 1,
+  /**
+   * Reflex corner (interior angle above 180°).
+   */
+  MX_JOINT_REFLEX = 2,
+} mx_joint_kind;
+
+/**
  * What kind of site an `mx_site` is.
  */
 typedef enum mx_site_kind {
@@ -372,6 +340,61 @@ typedef enum mx_site_kind {
    */
   MX_SITE_BOUNDARY = 3,
 } mx_site_kind;
+
+/**
+ * The values of `mx_element.kind` (a `uint32_t`: the struct is also
+ * input, where an unknown value is an error rather than undefined
+ * behaviour).
+ */
+typedef enum mx_element_kind {
+  /**
+   * A line segment.
+   */
+  MX_ELEMENT_SEGMENT = 0,
+  /**
+   * A circular arc.
+   */
+  MX_ELEMENT_ARC = 1,
+} mx_element_kind;
+
+/**
+ * The values of the `format` argument of the file readers (a
+ * `uint32_t`: an unknown value is an error).
+ */
+typedef enum mx_format {
+  /**
+   * Guess from the file extension or content.
+   */
+  MX_FORMAT_AUTO = 0,
+  /**
+   * medax shape JSON.
+   */
+  MX_FORMAT_JSON = 1,
+  /**
+   * ASCII DXF.
+   */
+  MX_FORMAT_DXF = 2,
+  /**
+   * SVG document or path data.
+   */
+  MX_FORMAT_SVG = 3,
+} mx_format;
+
+/**
+ * The values of `mx_pocket_options.order` (a `uint32_t`, so that an
+ * unknown value is an error rather than undefined behaviour).
+ */
+typedef enum mx_pocket_order {
+  /**
+   * Every ring after the rings inside it (the wall last, as a finishing
+   * pass).
+   */
+  MX_POCKET_INSIDE_OUT = 0,
+  /**
+   * Every ring before the rings inside it.
+   */
+  MX_POCKET_OUTSIDE_IN = 1,
+} mx_pocket_order;
 
 /**
  * A computed medial axis of a 2D shape: nodes (maximal disks) joined by
@@ -633,7 +656,7 @@ typedef struct mx_sites {
    * Vertex count of the boundary (0 with NULL); the array holds 3 ×
    * this many doubles.
    */
-  size_t boundary_length;
+  size_t boundary_count;
 } mx_sites;
 
 /**
@@ -700,11 +723,12 @@ typedef struct mx_drawing_select {
    */
   size_t colour_count;
   /**
-   * Nonzero: keep both copies of a loop drawn twice (they then meet
-   * and are reported); 0: merge them into one, reported as
-   * `MX_IGNORED_DUPLICATE_LOOP`.
+   * 1: keep both copies of a loop drawn twice (they then meet and are
+   * reported); 0: merge them into one, reported as
+   * `MX_IGNORED_DUPLICATE_LOOP`. (A `uint8_t` before 0.2.0; the first
+   * layout now ends at byte 44 of 48.)
    */
-  uint8_t keep_duplicates;
+  int32_t keep_duplicates;
 } mx_drawing_select;
 
 /**
@@ -758,9 +782,9 @@ typedef struct mx_shape_options {
  */
 typedef struct mx_ignored {
   /**
-   * What it is: an `MX_IGNORED_*` constant.
+   * What it is.
    */
-  uint32_t kind;
+  enum mx_ignored_kind kind;
   /**
    * 1-based line (DXF) or byte offset (SVG) of its first entity.
    */
@@ -801,9 +825,9 @@ typedef struct mx_ignored {
  */
 typedef struct mx_warning {
   /**
-   * An `MX_WARNING_*` constant.
+   * What it is.
    */
-  uint32_t kind;
+  enum mx_warning_kind kind;
   /**
    * Where, model units.
    */
@@ -1115,9 +1139,9 @@ typedef struct mx_pocket_ring {
  */
 typedef struct mx_uncut_region {
   /**
-   * `MX_UNCUT_SCALLOP` or `MX_UNCUT_WALL`.
+   * What was left.
    */
-  uint32_t kind;
+  enum mx_uncut_kind kind;
   /**
    * Area, square model units.
    */
@@ -1137,13 +1161,14 @@ typedef struct mx_uncut_region {
  */
 typedef struct mx_element {
   /**
-   * `MX_ELEMENT_SEGMENT` or `MX_ELEMENT_ARC`.
+   * An `mx_element_kind`: `MX_ELEMENT_SEGMENT` or `MX_ELEMENT_ARC`.
    */
   uint32_t kind;
   /**
-   * Non-zero when the arc runs counter-clockwise (0 for segments).
+   * 1 when the arc runs counter-clockwise, else 0 (0 for segments; as
+   * input any non-zero value means counter-clockwise).
    */
-  uint32_t ccw;
+  int32_t ccw;
   /**
    * Start point x.
    */
@@ -1541,12 +1566,12 @@ enum mx_status mx_ball_mirrored(const struct mx_ball *ball, struct mx_ball **out
 void mx_ball_free(struct mx_ball *ball);
 
 /**
- * The ball's dimension: 2 (a polygon).
+ * The ball's dimension: 2 (a polygon; 3 will be a polytope).
  *
  * # Safety
  * `ball` NULL or a live handle; `out` NULL or writable.
  */
-enum mx_status mx_ball_dimension(const struct mx_ball *ball, uint32_t *out);
+enum mx_status mx_ball_dimension(const struct mx_ball *ball, size_t *out);
 
 /**
  * The number of vertices.
@@ -1558,13 +1583,18 @@ enum mx_status mx_ball_vertex_count(const struct mx_ball *ball, size_t *out);
 
 /**
  * Copies the vertices, counter-clockwise, as x0, y0, x1, y1, … into `xy`
- * of `capacity` vertices (`MX_ERR_BUFFER_TOO_SMALL` and nothing written
- * when fewer than `mx_ball_vertex_count`).
+ * of `capacity` vertices and writes their number to `*count`. Size query:
+ * `capacity` 0 (`xy` may be NULL) writes only `*count`; a shorter buffer
+ * gives `MX_ERR_BUFFER_TOO_SMALL` with nothing written.
  *
  * # Safety
- * `ball` NULL or a live handle; `xy` NULL or `2 * capacity` writable doubles.
+ * `ball` NULL or a live handle; `xy` NULL or `2 * capacity` writable
+ * doubles; `count` NULL or writable.
  */
-enum mx_status mx_ball_vertices(const struct mx_ball *ball, double *xy, size_t capacity);
+enum mx_status mx_ball_vertices(const struct mx_ball *ball,
+                                double *xy,
+                                size_t capacity,
+                                size_t *count);
 
 /**
  * δ_B(from, to): the least r with `to` in `from + r·B` (model units; not
@@ -1586,7 +1616,7 @@ enum mx_status mx_ball_distance2(const struct mx_ball *ball,
  * # Safety
  * `ball` NULL or a live handle; `out` NULL or writable.
  */
-enum mx_status mx_ball_is_symmetric(const struct mx_ball *ball, uint8_t *out);
+enum mx_status mx_ball_is_symmetric(const struct mx_ball *ball, int32_t *out);
 
 /**
  * Computes the medial axis of `shape` under the unit ball `ball` (thesis
@@ -1818,9 +1848,9 @@ enum mx_status mx_drawing_get_warning(const struct mx_drawing *drawing,
  * Releases a `mx_mesh3d`. NULL is a no-op.
  *
  * # Safety
- * `p` must be NULL or a handle returned by medax and not yet freed.
+ * `mesh` must be NULL or a handle returned by medax and not yet freed.
  */
-void mx_mesh3d_free(struct mx_mesh3d *p);
+void mx_mesh3d_free(struct mx_mesh3d *mesh);
 
 /**
  * Length in bytes of the last error message on this thread, including the
@@ -2181,22 +2211,23 @@ enum mx_status mx_shape2d_loop_size(const struct mx_shape2d *shape, size_t loop_
  */
 enum mx_status mx_shape2d_loop_reversed(const struct mx_shape2d *shape,
                                         size_t loop_index,
-                                        uint32_t *out);
+                                        int32_t *out);
 
 /**
- * Copies loop `loop_index` as `x, y, bulge` triples into `xyb`
- * (`capacity` doubles; needs 3 × `mx_shape2d_loop_size`) and writes the
- * number of vertices to `written`. Fails with `MX_ERR_BUFFER_TOO_SMALL`
- * (nothing written) when the buffer is short.
+ * Copies loop `loop_index` as `x, y, bulge` triples into `xyb` of
+ * `capacity` vertices and writes their number to `*count`. Size query:
+ * `capacity` 0 (`xyb` may be NULL) writes only `*count`; a shorter buffer
+ * gives `MX_ERR_BUFFER_TOO_SMALL` with nothing written.
  *
  * # Safety
- * `xyb` NULL or `capacity` writable doubles; `written` NULL or writable.
+ * `shape` NULL or a live handle; `xyb` NULL or `3 * capacity` writable
+ * doubles; `count` NULL or writable.
  */
 enum mx_status mx_shape2d_loop_vertices(const struct mx_shape2d *shape,
                                         size_t loop_index,
                                         double *xyb,
                                         size_t capacity,
-                                        size_t *written);
+                                        size_t *count);
 
 /**
  * Element `index` of loop `loop_index` (stored orientation) with all its
@@ -2220,7 +2251,7 @@ enum mx_status mx_shape2d_element(const struct mx_shape2d *shape,
 enum mx_status mx_shape2d_joint(const struct mx_shape2d *shape,
                                 size_t loop_index,
                                 size_t index,
-                                uint32_t *out);
+                                enum mx_joint_kind *out);
 
 /**
  * Tight bounding box of the boundary (arcs included exactly).

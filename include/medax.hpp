@@ -151,6 +151,15 @@ public:
         check(mx_shape2d_area(get(), &a), "mx_shape2d_area");
         return a;
     }
+    // Loop `index` as stored (outer counter-clockwise, holes clockwise):
+    // x, y, bulge triples.
+    std::vector<double> loop_vertices(size_t index) const {
+        size_t n = 0;
+        check(mx_shape2d_loop_vertices(get(), index, nullptr, 0, &n), "mx_shape2d_loop_vertices");
+        std::vector<double> xyb(3 * n);
+        check(mx_shape2d_loop_vertices(get(), index, xyb.data(), n, &n), "mx_shape2d_loop_vertices");
+        return xyb;
+    }
 };
 
 // The unit ball of a polygonal metric (chapter 3).
@@ -182,7 +191,8 @@ public:
         size_t n = 0;
         check(mx_ball_vertex_count(get(), &n), "mx_ball_vertex_count");
         std::vector<double> xy(2 * n);
-        check(mx_ball_vertices(get(), xy.data(), xy.size()), "mx_ball_vertices");
+        size_t written = 0;
+        check(mx_ball_vertices(get(), xy.data(), n, &written), "mx_ball_vertices");
         return xy;
     }
     // The least r with `to` in `from` + r·B.
@@ -264,7 +274,7 @@ public:
         size_t n = 0;
         check(mx_axis_edge_sample(get(), i, tolerance, nullptr, 0, &n), "mx_axis_edge_sample");
         std::vector<double> xyr(3 * n);
-        check(mx_axis_edge_sample(get(), i, tolerance, xyr.data(), xyr.size(), &n), "mx_axis_edge_sample");
+        check(mx_axis_edge_sample(get(), i, tolerance, xyr.data(), n, &n), "mx_axis_edge_sample");
         return xyr;
     }
     // The inner offset at `distance` read off this axis.

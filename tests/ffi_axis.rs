@@ -67,7 +67,7 @@ fn samples(a: *const mx_axis, i: usize, tol: f64) -> Vec<[f64; 3]> {
     assert!(n >= 2);
     let mut buf = vec![f64::NAN; 3 * n];
     let mut m = 0;
-    let st = unsafe { mx_axis_edge_sample(a, i, tol, buf.as_mut_ptr(), buf.len(), &mut m) };
+    let st = unsafe { mx_axis_edge_sample(a, i, tol, buf.as_mut_ptr(), n, &mut m) };
     assert_eq!(st, mx_status::MX_OK, "{}", last_message());
     assert_eq!(m, n);
     buf.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect()
@@ -233,28 +233,29 @@ fn null_and_range_errors_write_nothing() {
     assert_eq!(unsafe { mx_axis_get_edge(null(), 0, &mut e) }, MX_ERR_NULL_ARGUMENT);
     assert_eq!(unsafe { mx_axis_get_edge(a, 0, null_mut()) }, MX_ERR_NULL_ARGUMENT);
     assert_eq!(e, before);
-    // Sampling: range, NULLs, bad tolerances, short buffers.
+    // Sampling: range, NULLs, bad tolerances, short buffers (capacity in
+    // samples: 10 for 30 doubles).
     let mut buf = [7.0; 30];
     let mut count = 77;
     let sample = |i: usize, tol: f64, p: *mut f64, cap: usize, c: *mut usize| unsafe {
         mx_axis_edge_sample(a, i, tol, p, cap, c)
     };
-    assert_eq!(sample(5, 1e-3, buf.as_mut_ptr(), 30, &mut count), MX_ERR_INDEX_OUT_OF_RANGE);
-    assert_eq!(unsafe { mx_axis_edge_sample(null(), 0, 1e-3, buf.as_mut_ptr(), 30, &mut count) }, MX_ERR_NULL_ARGUMENT);
-    assert_eq!(sample(0, 1e-3, buf.as_mut_ptr(), 30, null_mut()), MX_ERR_NULL_ARGUMENT);
-    assert_eq!(sample(0, 1e-3, null_mut(), 30, &mut count), MX_ERR_NULL_ARGUMENT);
+    assert_eq!(sample(5, 1e-3, buf.as_mut_ptr(), 10, &mut count), MX_ERR_INDEX_OUT_OF_RANGE);
+    assert_eq!(unsafe { mx_axis_edge_sample(null(), 0, 1e-3, buf.as_mut_ptr(), 10, &mut count) }, MX_ERR_NULL_ARGUMENT);
+    assert_eq!(sample(0, 1e-3, buf.as_mut_ptr(), 10, null_mut()), MX_ERR_NULL_ARGUMENT);
+    assert_eq!(sample(0, 1e-3, null_mut(), 10, &mut count), MX_ERR_NULL_ARGUMENT);
     for tol in [0.0, -1.0, f64::NAN, f64::INFINITY, 1e-15] {
-        assert_eq!(sample(0, tol, buf.as_mut_ptr(), 30, &mut count), MX_ERR_INVALID_ARGUMENT, "{tol}");
+        assert_eq!(sample(0, tol, buf.as_mut_ptr(), 10, &mut count), MX_ERR_INVALID_ARGUMENT, "{tol}");
     }
-    assert_eq!(sample(0, 1e-3, buf.as_mut_ptr(), 5, &mut count), MX_ERR_BUFFER_TOO_SMALL);
-    assert!(last_message().contains("needs 6 doubles"), "{}", last_message());
+    assert_eq!(sample(0, 1e-3, buf.as_mut_ptr(), 1, &mut count), MX_ERR_BUFFER_TOO_SMALL);
+    assert!(last_message().contains("has 2 samples, the buffer room for 1"), "{}", last_message());
     assert_eq!(count, 77);
     assert_eq!(buf, [7.0; 30]);
     // Size query with a buffer and capacity 0 writes only the count.
     assert_eq!(sample(0, 1e-3, buf.as_mut_ptr(), 0, &mut count), MX_OK);
     assert_eq!(count, 2);
     assert_eq!(buf, [7.0; 30]);
-    assert_eq!(sample(0, 1e-3, buf.as_mut_ptr(), 6, &mut count), MX_OK);
+    assert_eq!(sample(0, 1e-3, buf.as_mut_ptr(), 2, &mut count), MX_OK);
     assert!(buf[6..].iter().all(|&v| v == 7.0));
     unsafe { mx_axis_free(a) };
     unsafe { mx_axis_free(null_mut()) };

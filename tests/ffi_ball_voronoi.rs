@@ -32,7 +32,7 @@ fn point_sites(xy: &[f64]) -> mx_sites {
         region_lengths: null(),
         region_count: 0,
         boundary_xyb: null(),
-        boundary_length: 0,
+        boundary_count: 0,
     }
 }
 

@@ -279,11 +279,15 @@ fn pockets_agree_with_the_rust_api() {
     let mut offsets = null_mut();
     assert_eq!(unsafe { mx_offsets_compute(shape, null(), &mut offsets) }, mx_status::MX_OK);
     let rust_offsets = Offsets::new(&rust_shape(), &OffsetOptions::default()).unwrap();
-    for order in [MX_POCKET_INSIDE_OUT, MX_POCKET_OUTSIDE_IN] {
-        let o = mx_pocket_options { order, ..pocket_options(0.1, 0.15) };
+    for order in [mx_pocket_order::MX_POCKET_INSIDE_OUT, mx_pocket_order::MX_POCKET_OUTSIDE_IN] {
+        let o = mx_pocket_options { order: order as u32, ..pocket_options(0.1, 0.15) };
         let mut p = null_mut();
         assert_eq!(unsafe { mx_pocket_compute(offsets, &o, &mut p) }, mx_status::MX_OK, "{}", last_message());
-        let rust_order = if order == MX_POCKET_INSIDE_OUT { PocketOrder::InsideOut } else { PocketOrder::OutsideIn };
+        let rust_order = if order == mx_pocket_order::MX_POCKET_INSIDE_OUT {
+            PocketOrder::InsideOut
+        } else {
+            PocketOrder::OutsideIn
+        };
         let rust =
             pocket(&rust_offsets, &PocketOptions { order: rust_order, ..PocketOptions::new(0.1, 0.15) }).unwrap();
         let mut info = unsafe { std::mem::zeroed::<mx_pocket_info>() };
@@ -308,7 +312,11 @@ fn pockets_agree_with_the_rust_api() {
         for (i, u) in rust.uncut.iter().enumerate() {
             let mut c = unsafe { std::mem::zeroed::<mx_uncut_region>() };
             assert_eq!(unsafe { mx_pocket_get_uncut(p, i, &mut c) }, mx_status::MX_OK);
-            let kind = if u.kind == UncutKind::Scallop { MX_UNCUT_SCALLOP } else { MX_UNCUT_WALL };
+            let kind = if u.kind == UncutKind::Scallop {
+                mx_uncut_kind::MX_UNCUT_SCALLOP
+            } else {
+                mx_uncut_kind::MX_UNCUT_WALL
+            };
             assert_eq!((c.kind, c.area), (kind, u.area));
             let loops: Vec<Vec<f64>> = u.loops.iter().map(|l| triples(l)).collect();
             assert_eq!(unsafe { loops_of(&c.loops) }, loops);

@@ -222,7 +222,7 @@ fn offset_and_pocket_options_of_0_1() {
         struct_size: size_of::<PocketOptionsV01>(),
         tool_radius: 0.1,
         stepover: 0.1,
-        order: MX_POCKET_OUTSIDE_IN,
+        order: mx_pocket_order::MX_POCKET_OUTSIDE_IN as u32,
         max_levels: 2,
     });
     let mut pk = null_mut();
@@ -254,7 +254,7 @@ fn voronoi_options_of_0_1() {
         region_lengths: null(),
         region_count: 0,
         boundary_xyb: null(),
-        boundary_length: 0,
+        boundary_count: 0,
     };
     let mut calls = 0usize;
     let o = old(VoronoiOptionsV01 {
@@ -319,7 +319,7 @@ fn defaults_never_write_past_the_callers_struct() {
     check!(mx_pocket_options, 40, mx_pocket_options_default, mx_pocket_options_init);
     check!(mx_vcarve_options, 32, mx_vcarve_options_default, mx_vcarve_options_init);
     check!(mx_voronoi_options, 48, mx_voronoi_options_default, mx_voronoi_options_init);
-    check!(mx_drawing_select, 41, mx_drawing_select_default, mx_drawing_select_init);
+    check!(mx_drawing_select, 44, mx_drawing_select_default, mx_drawing_select_init);
     // What a 0.1 caller's _default gives is accepted as it is.
     let mut o: ShapeOptionsV01 = unsafe { std::mem::zeroed() };
     assert_eq!(unsafe { mx_shape_options_default((&mut o as *mut ShapeOptionsV01).cast()) }, mx_status::MX_OK);

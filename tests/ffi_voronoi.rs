@@ -46,7 +46,7 @@ fn sites_of(i: &Input) -> mx_sites {
         region_lengths: i.lens.as_ptr(),
         region_count: i.lens.len(),
         boundary_xyb: null(),
-        boundary_length: 0,
+        boundary_count: 0,
     }
 }
 
@@ -87,7 +87,7 @@ fn squares_through_the_c_abi() {
         assert_eq!(unsafe { mx_axis_edge_sample(axis, i, 1e-4, null_mut(), 0, &mut count) }, mx_status::MX_OK);
         let mut xyr = vec![0.0; 3 * count];
         assert_eq!(
-            unsafe { mx_axis_edge_sample(axis, i, 1e-4, xyr.as_mut_ptr(), xyr.len(), &mut count) },
+            unsafe { mx_axis_edge_sample(axis, i, 1e-4, xyr.as_mut_ptr(), count, &mut count) },
             mx_status::MX_OK
         );
         for s in xyr.chunks_exact(3) {
@@ -214,7 +214,7 @@ fn options_boundary_and_cancellation() {
     o.tolerance = 0.0;
     // A caller's boundary is a site: edges facing it are in the diagram.
     let frame = [-2.0, -2.0, 0.0, 5.0, -2.0, 0.0, 5.0, 3.0, 0.0, -2.0, 3.0, 0.0];
-    let with_frame = mx_sites { boundary_xyb: frame.as_ptr(), boundary_length: 4, ..sites_of(&input) };
+    let with_frame = mx_sites { boundary_xyb: frame.as_ptr(), boundary_count: 4, ..sites_of(&input) };
     assert_eq!(unsafe { mx_voronoi_compute(&with_frame, &o, &mut vd) }, mx_status::MX_OK, "{}", last_message());
     let mut info = mx_voronoi_info { auto_frame: 9, complete: 9, region_count: 0 };
     assert_eq!(unsafe { mx_voronoi_get_info(vd, &mut info) }, mx_status::MX_OK);
@@ -248,7 +248,7 @@ fn points_and_a_curve_through_the_c_abi() {
         region_lengths: null(),
         region_count: 0,
         boundary_xyb: null(),
-        boundary_length: 0,
+        boundary_count: 0,
     };
     let mut vd = null_mut();
     assert_eq!(unsafe { mx_voronoi_compute(&sites, null(), &mut vd) }, mx_status::MX_OK, "{}", last_message());

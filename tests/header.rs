@@ -2,6 +2,9 @@
 //! sources, and its version macros must match Cargo.toml.
 //! Regenerate with `MEDAX_UPDATE_HEADER=1 cargo test --test header`.
 
+mod common;
+
+use common::c_header;
 use std::path::Path;
 
 fn generate() -> String {
@@ -107,4 +110,89 @@ fn every_exported_name_is_prefixed() {
         }
     }
     assert!(bad.is_empty(), "unprefixed names in include/medax.h: {bad:?}");
+}
+
+/// The rules of docs/C_API.md that a reader of the header can check:
+/// what each function returns, the buffer protocol, one boolean type, kinds
+/// as enums (a `uint32_t` only where the caller passes a kind in), counts
+/// and indices as `size_t`, outputs last.
+#[test]
+fn every_declaration_follows_the_c_api_conventions() {
+    let code = c_header::header_code();
+    let mut bad = Vec::new();
+    let kind_inputs = ["kind", "order", "format", "site_kind"];
+    let sized = |name: &str| {
+        name == "count"
+            || name == "capacity"
+            || name == "index"
+            || name == "struct_size"
+            || name.ends_with("_index")
+            || name.ends_with("_count")
+            || name.ends_with("_len")
+    };
+    let check_type = |owner: &str, ty: &str, name: &str, bad: &mut Vec<String>| {
+        let base = ty.trim_start_matches("const ").trim_end_matches('*').trim();
+        if base == "bool" || (base == "uint8_t" && !ty.starts_with("const uint8_t *")) {
+            bad.push(format!("{owner} {name}: {ty} (booleans are int32_t; uint8_t only for input bytes)"));
+        }
+        if base == "uint32_t" && !kind_inputs.contains(&name) {
+            bad.push(format!("{owner} {name}: uint32_t is for kinds the caller passes in"));
+        }
+        // An index that may be absent (`mx_error_info`) is int64_t, −1 for none.
+        if sized(name) && base != "size_t" && !(base == "int64_t" && name.ends_with("_index")) {
+            bad.push(format!("{owner} {name}: {ty} (counts and indices are size_t)"));
+        }
+    };
+    for p in c_header::prototypes(&code) {
+        let n = p.name.as_str();
+        let plain = n.ends_with("_free") && p.returns == "void"
+            || matches!(
+                (n, p.returns.as_str()),
+                ("mx_status_str", "const char *")
+                    | ("mx_version", "const char *")
+                    | ("mx_version_number", "uint32_t")
+                    | ("mx_last_error_length", "size_t")
+                    | ("mx_last_error_message", "size_t")
+                    | ("mx_clear_last_error", "void")
+            );
+        if !plain && p.returns != "enum mx_status" {
+            bad.push(format!("{n} returns {} (fallible calls return enum mx_status)", p.returns));
+        }
+        for (ty, name) in &p.params {
+            check_type(n, ty, name, &mut bad);
+        }
+        // Protocol 2: `..., T *buf, size_t capacity, size_t *count)`.
+        if let Some(i) = p.params.iter().position(|(_, name)| name == "capacity") {
+            let last = p.params.len() - 1;
+            let before_is_buffer = i > 0 && p.params[i - 1].0.ends_with('*');
+            if !(before_is_buffer && i + 1 == last && p.params[last] == ("size_t *".to_owned(), "count".to_owned())) {
+                bad.push(format!("{n}: capacity must follow the buffer and precede the last `size_t *count`"));
+            }
+        }
+        // Outputs come last; `_init(&o, sizeof o)` fills `o` of that size.
+        if let Some(i) = p.params.iter().position(|(_, name)| name == "out") {
+            let init =
+                n.ends_with("_init") && p.params.len() == 2 && p.params[1] == ("size_t".to_owned(), "size".to_owned());
+            if i + 1 != p.params.len() && !init {
+                bad.push(format!("{n}: `out` is not the last parameter"));
+            }
+        }
+        if p.params.iter().any(|(_, name)| name == "p" || name.is_empty()) {
+            bad.push(format!("{n}: a parameter without a telling name"));
+        }
+    }
+    for (s, fields) in c_header::structs(&code) {
+        let body_start = code.find(&format!("typedef struct {s} {{")).unwrap();
+        let body = &code[body_start..body_start + code[body_start..].find('}').unwrap()];
+        for line in body.lines().skip(1).map(str::trim).filter(|l| l.ends_with(';') && !l.contains("(*")) {
+            let decl = line.trim_end_matches(';').split('[').next().unwrap();
+            let split = decl.rfind([' ', '*']).unwrap() + 1;
+            check_type(&s, decl[..split].trim(), &decl[split..], &mut bad);
+        }
+        let options = s.ends_with("_options") || s == "mx_drawing_select";
+        if options && fields.first().map(String::as_str) != Some("struct_size") {
+            bad.push(format!("{s}: options structs start with struct_size"));
+        }
+    }
+    assert!(bad.is_empty(), "include/medax.h breaks docs/C_API.md:\n{}", bad.join("\n"));
 }

@@ -138,7 +138,7 @@ int main(int argc, char **argv) {
             goto done;
         }
         samples = grown;
-        status = mx_axis_edge_sample(axis, i, tolerance, samples, 3 * count, &count);
+        status = mx_axis_edge_sample(axis, i, tolerance, samples, count, &count);
         if (status != MX_OK) {
             report_error("mx_axis_edge_sample", status);
             goto done;

@@ -10,7 +10,8 @@ use std::ffi::CString;
 
 fuzz_target!(|input: (u8, Vec<String>, Vec<i16>, &[u8])| {
     let (choice, layers, colours, data) = input;
-    let format = [MX_FORMAT_AUTO, MX_FORMAT_DXF, MX_FORMAT_SVG, MX_FORMAT_JSON][usize::from(choice % 4)];
+    let format = [mx_format::MX_FORMAT_AUTO, mx_format::MX_FORMAT_DXF, mx_format::MX_FORMAT_SVG, mx_format::MX_FORMAT_JSON]
+        [usize::from(choice % 4)] as u32;
     let names: Vec<CString> = layers.iter().filter_map(|l| CString::new(l.as_str()).ok()).collect();
     let pointers: Vec<*const std::ffi::c_char> = names.iter().map(|n| n.as_ptr()).collect();
     let select = mx_drawing_select {
@@ -19,7 +20,7 @@ fuzz_target!(|input: (u8, Vec<String>, Vec<i16>, &[u8])| {
         layer_count: pointers.len(),
         colours: colours.as_ptr(),
         colour_count: colours.len(),
-        keep_duplicates: choice & 4,
+        keep_duplicates: i32::from(choice & 4 != 0),
     };
     let sentinel = 0x1 as *mut mx_drawing;
     let mut d = sentinel;
@@ -44,17 +45,21 @@ fuzz_target!(|input: (u8, Vec<String>, Vec<i16>, &[u8])| {
             mx_shape2d_free(s);
         }
         for k in 0..ignored {
-            let mut i = std::mem::zeroed::<mx_ignored>();
-            assert_eq!(mx_drawing_get_ignored(d, k, &mut i), mx_status::MX_OK);
+            // The kinds have no zero value: an all-zero struct is no valid
+            // Rust value, so the library writes into uninitialised memory.
+            let mut i = std::mem::MaybeUninit::<mx_ignored>::uninit();
+            assert_eq!(mx_drawing_get_ignored(d, k, i.as_mut_ptr()), mx_status::MX_OK);
+            let i = i.assume_init();
             assert!(!i.layer.is_null() && !i.reason.is_null());
         }
         for k in 0..warnings {
-            let mut w = std::mem::zeroed::<mx_warning>();
-            assert_eq!(mx_drawing_get_warning(d, k, &mut w), mx_status::MX_OK);
+            let mut w = std::mem::MaybeUninit::<mx_warning>::uninit();
+            assert_eq!(mx_drawing_get_warning(d, k, w.as_mut_ptr()), mx_status::MX_OK);
+            let w = w.assume_init();
             assert!(w.shapes[0] < shapes.max(1) && w.shapes[1] < shapes.max(1));
         }
-        let mut w = std::mem::zeroed::<mx_warning>();
-        assert_eq!(mx_drawing_get_warning(d, warnings, &mut w), mx_status::MX_ERR_INDEX_OUT_OF_RANGE);
+        let mut w = std::mem::MaybeUninit::<mx_warning>::uninit();
+        assert_eq!(mx_drawing_get_warning(d, warnings, w.as_mut_ptr()), mx_status::MX_ERR_INDEX_OUT_OF_RANGE);
         let path = CString::new("/dev/null").unwrap();
         assert_eq!(mx_drawing_write_json(d, path.as_ptr()), mx_status::MX_OK);
         mx_drawing_free(d);

@@ -36,7 +36,7 @@ fuzz_target!(|input: (Vec<i8>, Vec<i8>, Vec<u8>, Vec<i8>, Vec<u8>, bool, u8)| {
         region_lengths: region_lens.as_ptr(),
         region_count: region_lens.len(),
         boundary_xyb: if framed { frame.as_ptr() } else { std::ptr::null() },
-        boundary_length: if framed { 4 } else { 0 },
+        boundary_count: if framed { 4 } else { 0 },
     };
     let sentinel = 0x5EE7 as *mut mx_voronoi;
     let mut out = sentinel;

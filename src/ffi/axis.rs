@@ -2,7 +2,7 @@
 //! free. Mirrors `crate::plane` (`medial_axis`, `MedialAxis2d`); no geometry
 //! is computed here.
 
-use super::boundary::{check_out, fill, guard, nth, run_with_progress, write_out};
+use super::boundary::{check_out, fill_items, guard, nth, run_with_progress};
 use super::handles::{arg, compute, free, impl_options, options_default, options_init, query, Boxed, Handle};
 use super::last_error::FfiError;
 use super::shape2d::mx_shape2d;
@@ -385,18 +385,14 @@ pub unsafe extern "C" fn mx_axis_edge_sample(
             Some(b) => super::ball_axis::ends(b, index)?,
             None => edge_of(a, index)?.sample(&a.shape, &a.axis.nodes, tolerance),
         };
-        let need = 3 * samples.len();
-        if capacity != 0 {
-            let xyr_of = samples.iter().flat_map(|d| [d.center.x, d.center.y, d.radius]);
-            // SAFETY: caller contract: `xyr` NULL or `capacity` writable doubles.
-            unsafe {
-                fill(xyr, "xyr", capacity, need, xyr_of, || {
-                    format!("edge {index} needs {need} doubles ({} samples), buffer holds {capacity}", samples.len())
-                })?
-            };
-        }
-        // SAFETY: checked non-NULL above.
-        unsafe { write_out(count, samples.len()) };
+        let n = samples.len();
+        let xyr_of = samples.iter().flat_map(|d| [d.center.x, d.center.y, d.radius]);
+        // SAFETY: caller contract: `xyr` NULL or `3 * capacity` writable doubles.
+        unsafe {
+            fill_items((xyr, "xyr"), (capacity, count), (n, 3), xyr_of, || {
+                format!("edge {index} has {n} samples, the buffer room for {capacity}")
+            })?
+        };
         Ok(())
     })
 }

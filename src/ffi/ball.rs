@@ -2,7 +2,7 @@
 //! Plane balls (convex polygons) today; the same handle will hold space
 //! balls (convex polytopes), told apart by `mx_ball_dimension`.
 
-use super::boundary::{c_str, fill, slice};
+use super::boundary::{c_str, fill_items, slice};
 use super::handles::{arg, create, free, query, Handle};
 use super::last_error::FfiError;
 use super::status::mx_status;
@@ -126,12 +126,12 @@ pub unsafe extern "C" fn mx_ball_free(ball: *mut mx_ball) {
     unsafe { free(ball) }
 }
 
-/// The ball's dimension: 2 (a polygon).
+/// The ball's dimension: 2 (a polygon; 3 will be a polytope).
 ///
 /// # Safety
 /// `ball` NULL or a live handle; `out` NULL or writable.
 #[no_mangle]
-pub unsafe extern "C" fn mx_ball_dimension(ball: *const mx_ball, out: *mut u32) -> mx_status {
+pub unsafe extern "C" fn mx_ball_dimension(ball: *const mx_ball, out: *mut usize) -> mx_status {
     // SAFETY: forwarded contract.
     unsafe { query(ball, out, |_| Ok(2)) }
 }
@@ -147,21 +147,28 @@ pub unsafe extern "C" fn mx_ball_vertex_count(ball: *const mx_ball, out: *mut us
 }
 
 /// Copies the vertices, counter-clockwise, as x0, y0, x1, y1, … into `xy`
-/// of `capacity` vertices (`MX_ERR_BUFFER_TOO_SMALL` and nothing written
-/// when fewer than `mx_ball_vertex_count`).
+/// of `capacity` vertices and writes their number to `*count`. Size query:
+/// `capacity` 0 (`xy` may be NULL) writes only `*count`; a shorter buffer
+/// gives `MX_ERR_BUFFER_TOO_SMALL` with nothing written.
 ///
 /// # Safety
-/// `ball` NULL or a live handle; `xy` NULL or `2 * capacity` writable doubles.
+/// `ball` NULL or a live handle; `xy` NULL or `2 * capacity` writable
+/// doubles; `count` NULL or writable.
 #[no_mangle]
-pub unsafe extern "C" fn mx_ball_vertices(ball: *const mx_ball, xy: *mut f64, capacity: usize) -> mx_status {
+pub unsafe extern "C" fn mx_ball_vertices(
+    ball: *const mx_ball,
+    xy: *mut f64,
+    capacity: usize,
+    count: *mut usize,
+) -> mx_status {
     super::boundary::guard(|| {
         // SAFETY: caller contract.
         let b = unsafe { arg(ball)? };
         let n = b.inner.len();
         let coords = b.inner.vertices().iter().flat_map(|v| [v.x, v.y]);
-        // SAFETY: caller contract: 2 * capacity doubles.
+        // SAFETY: caller contract.
         unsafe {
-            fill(xy, "xy", capacity.saturating_mul(2), 2 * n, coords, || {
+            fill_items((xy, "xy"), (capacity, count), (n, 2), coords, || {
                 format!("the ball has {n} vertices, the buffer room for {capacity}")
             })
         }
@@ -199,7 +206,7 @@ pub unsafe extern "C" fn mx_ball_distance2(
 /// # Safety
 /// `ball` NULL or a live handle; `out` NULL or writable.
 #[no_mangle]
-pub unsafe extern "C" fn mx_ball_is_symmetric(ball: *const mx_ball, out: *mut u8) -> mx_status {
+pub unsafe extern "C" fn mx_ball_is_symmetric(ball: *const mx_ball, out: *mut i32) -> mx_status {
     // SAFETY: forwarded contract.
-    unsafe { query(ball, out, |b| Ok(u8::from(b.inner.is_symmetric()))) }
+    unsafe { query(ball, out, |b| Ok(i32::from(b.inner.is_symmetric()))) }
 }

@@ -129,6 +129,30 @@ pub(crate) unsafe fn fill<T>(
     Ok(())
 }
 
+/// Protocol 2 of docs/C_API.md for `n` items of `width` numbers each:
+/// `capacity` counts items; 0 is a size query (only `*count` written);
+/// a shorter buffer is `MX_ERR_BUFFER_TOO_SMALL` with nothing written.
+///
+/// # Safety
+/// `buf` NULL or `capacity * width` writable values; `count` NULL or
+/// writable.
+pub(crate) unsafe fn fill_items<T>(
+    (buf, name): (*mut T, &str),
+    (capacity, count): (usize, *mut usize),
+    (n, width): (usize, usize),
+    values: impl IntoIterator<Item = T>,
+    too_small: impl FnOnce() -> String,
+) -> Result<(), FfiError> {
+    check_out(count, "count")?;
+    if capacity != 0 {
+        // SAFETY: forwarded contract; `capacity` items are `capacity * width` values.
+        unsafe { fill(buf, name, capacity.saturating_mul(width), n * width, values, too_small)? };
+    }
+    // SAFETY: checked non-NULL above.
+    unsafe { write_out(count, n) };
+    Ok(())
+}
+
 /// NULL for an empty array: C callers never see a dangling pointer.
 pub(crate) fn ptr_or_null<T>(v: &[T]) -> *const T {
     if v.is_empty() {

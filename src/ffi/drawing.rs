@@ -4,7 +4,8 @@
 use super::boundary::{c_str, guard, in_pool, nth, slice};
 use super::handles::{arg, create, free, impl_options, options_default, options_init, query, Handle, Options};
 use super::last_error::FfiError;
-use super::shape2d::{format_of, mx_shape2d, mx_shape_options, options};
+use super::shape2d::{mx_shape2d, mx_shape_options, options};
+use super::shape_kinds::format_of;
 use super::status::mx_status;
 use crate::shape::{Drawing2d, DrawingOptions};
 use std::ffi::{c_char, CString};
@@ -55,14 +56,15 @@ pub struct mx_drawing_select {
     pub colours: *const i16,
     /// How many `colours` (0: every colour).
     pub colour_count: usize,
-    /// Nonzero: keep both copies of a loop drawn twice (they then meet
-    /// and are reported); 0: merge them into one, reported as
-    /// `MX_IGNORED_DUPLICATE_LOOP`.
-    pub keep_duplicates: u8,
+    /// 1: keep both copies of a loop drawn twice (they then meet and are
+    /// reported); 0: merge them into one, reported as
+    /// `MX_IGNORED_DUPLICATE_LOOP`. (A `uint8_t` before 0.2.0; the first
+    /// layout now ends at byte 44 of 48.)
+    pub keep_duplicates: i32,
 }
 
 // Everything selected.
-impl_options!(mx_drawing_select, v1: 41 bytes up to keep_duplicates: u8, defaults: mx_drawing_select {
+impl_options!(mx_drawing_select, v1: 44 bytes up to keep_duplicates: i32, defaults: mx_drawing_select {
     struct_size: size_of::<Self>(),
     layers: std::ptr::null(),
     layer_count: 0,

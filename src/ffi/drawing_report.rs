@@ -9,27 +9,33 @@ use super::status::mx_status;
 use crate::shape::IgnoredKind;
 use std::ffi::c_char;
 
-/// `mx_ignored.kind`: curves that close no loop.
-pub const MX_IGNORED_OPEN_CHAIN: u32 = 1;
-/// `mx_ignored.kind`: an entity that is not a curve medax reads.
-pub const MX_IGNORED_ENTITY: u32 = 2;
-/// `mx_ignored.kind`: the curves of a layer left out by the selection.
-pub const MX_IGNORED_OTHER_LAYER: u32 = 3;
-/// `mx_ignored.kind`: a loop enclosing no area in sum.
-pub const MX_IGNORED_FLAT_LOOP: u32 = 4;
-/// `mx_ignored.kind`: a copy of a loop drawn twice.
-pub const MX_IGNORED_DUPLICATE_LOOP: u32 = 5;
-/// `mx_ignored.kind`: a hole touching or crossing another loop of its shape.
-pub const MX_IGNORED_TOUCHING_LOOP: u32 = 6;
-/// `mx_ignored.kind`: an outer loop with its holes that does not validate.
-pub const MX_IGNORED_INVALID_SHAPE: u32 = 7;
+/// `mx_ignored.kind`: why something of a drawing is in no shape.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum mx_ignored_kind {
+    /// Curves that close no loop.
+    MX_IGNORED_OPEN_CHAIN = 1,
+    /// An entity that is not a curve medax reads.
+    MX_IGNORED_ENTITY = 2,
+    /// The curves of a layer left out by the selection.
+    MX_IGNORED_OTHER_LAYER = 3,
+    /// A loop enclosing no area in sum.
+    MX_IGNORED_FLAT_LOOP = 4,
+    /// A copy of a loop drawn twice.
+    MX_IGNORED_DUPLICATE_LOOP = 5,
+    /// A hole touching or crossing another loop of its shape.
+    MX_IGNORED_TOUCHING_LOOP = 6,
+    /// An outer loop with its holes that does not validate.
+    MX_IGNORED_INVALID_SHAPE = 7,
+}
+use mx_ignored_kind::*;
 
 /// One thing of a drawing in no shape.
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct mx_ignored {
-    /// What it is: an `MX_IGNORED_*` constant.
-    pub kind: u32,
+    /// What it is.
+    pub kind: mx_ignored_kind,
     /// 1-based line (DXF) or byte offset (SVG) of its first entity.
     pub source: usize,
     /// A point of it, model units.
@@ -50,7 +56,7 @@ pub struct mx_ignored {
     pub other_handle: u64,
 }
 
-fn kind_code(k: IgnoredKind) -> u32 {
+fn kind_code(k: IgnoredKind) -> mx_ignored_kind {
     match k {
         IgnoredKind::OpenChain => MX_IGNORED_OPEN_CHAIN,
         IgnoredKind::Entity => MX_IGNORED_ENTITY,
@@ -102,19 +108,25 @@ pub unsafe extern "C" fn mx_drawing_get_ignored(
     }
 }
 
-/// `mx_warning.kind`: curve ends that did not meet within the validation
-/// tolerance were joined (within the chaining tolerance).
-pub const MX_WARNING_GAP_CLOSED: u32 = 1;
-/// `mx_warning.kind`: two shapes touch or cross (both kept).
-pub const MX_WARNING_TOUCHING_SHAPES: u32 = 2;
+/// `mx_warning.kind`.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum mx_warning_kind {
+    /// Curve ends that did not meet within the validation tolerance were
+    /// joined (within the chaining tolerance).
+    MX_WARNING_GAP_CLOSED = 1,
+    /// Two shapes touch or cross (both kept).
+    MX_WARNING_TOUCHING_SHAPES = 2,
+}
+use mx_warning_kind::*;
 
 /// Something of a drawing's shapes worth knowing: a gap closed, or two
 /// shapes that touch.
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct mx_warning {
-    /// An `MX_WARNING_*` constant.
-    pub kind: u32,
+    /// What it is.
+    pub kind: mx_warning_kind,
     /// Where, model units.
     pub x: f64,
     /// Where, model units.

@@ -329,16 +329,16 @@ pub struct mx_mesh3d {
 }
 
 impl Handle for mx_mesh3d {
-    const ARG: &'static str = "p";
+    const ARG: &'static str = "mesh";
     type Ownership = Boxed;
 }
 
 /// Releases a `mx_mesh3d`. NULL is a no-op.
 ///
 /// # Safety
-/// `p` must be NULL or a handle returned by medax and not yet freed.
+/// `mesh` must be NULL or a handle returned by medax and not yet freed.
 #[no_mangle]
-pub unsafe extern "C" fn mx_mesh3d_free(p: *mut mx_mesh3d) {
+pub unsafe extern "C" fn mx_mesh3d_free(mesh: *mut mx_mesh3d) {
     // SAFETY: forwarded contract.
-    unsafe { free(p) }
+    unsafe { free(mesh) }
 }

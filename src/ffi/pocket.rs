@@ -23,17 +23,29 @@ impl Handle for mx_pocket {
     type Ownership = Boxed;
 }
 
-/// `mx_pocket_options.order`: every ring after the rings inside it (the
-/// wall last, as a finishing pass).
-pub const MX_POCKET_INSIDE_OUT: u32 = 0;
-/// `mx_pocket_options.order`: every ring before the rings inside it.
-pub const MX_POCKET_OUTSIDE_IN: u32 = 1;
+/// The values of `mx_pocket_options.order` (a `uint32_t`, so that an
+/// unknown value is an error rather than undefined behaviour).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum mx_pocket_order {
+    /// Every ring after the rings inside it (the wall last, as a finishing
+    /// pass).
+    MX_POCKET_INSIDE_OUT = 0,
+    /// Every ring before the rings inside it.
+    MX_POCKET_OUTSIDE_IN = 1,
+}
+const INSIDE_OUT: u32 = mx_pocket_order::MX_POCKET_INSIDE_OUT as u32;
+const OUTSIDE_IN: u32 = mx_pocket_order::MX_POCKET_OUTSIDE_IN as u32;
 
-/// `mx_uncut_region.kind`: a cusp between rings that the stepover left.
-pub const MX_UNCUT_SCALLOP: u32 = 0;
-/// `mx_uncut_region.kind`: corners and necks along the wall narrower than
-/// the tool.
-pub const MX_UNCUT_WALL: u32 = 1;
+/// `mx_uncut_region.kind`.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum mx_uncut_kind {
+    /// A cusp between rings that the stepover left.
+    MX_UNCUT_SCALLOP = 0,
+    /// Corners and necks along the wall narrower than the tool.
+    MX_UNCUT_WALL = 1,
+}
 
 /// Options for `mx_pocket_compute`. Initialise with
 /// `mx_pocket_options_init(&o, sizeof o)` (which sets `struct_size`), then set
@@ -59,7 +71,7 @@ impl_options!(mx_pocket_options, v1: 40 bytes up to max_levels: usize, defaults:
     struct_size: size_of::<Self>(),
     tool_radius: 0.0,
     stepover: 0.0,
-    order: MX_POCKET_INSIDE_OUT,
+    order: INSIDE_OUT,
     max_levels: PocketOptions::new(0.0, 0.0).max_levels,
 });
 
@@ -108,8 +120,8 @@ pub struct mx_pocket_ring {
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct mx_uncut_region {
-    /// `MX_UNCUT_SCALLOP` or `MX_UNCUT_WALL`.
-    pub kind: u32,
+    /// What was left.
+    pub kind: mx_uncut_kind,
     /// Area, square model units.
     pub area: f64,
     /// The outer loop first (counter-clockwise), then its holes
@@ -174,8 +186,8 @@ pub unsafe extern "C" fn mx_pocket_compute(
     unsafe {
         compute(out, offsets, options, |o, c| {
             let order = match c.order {
-                MX_POCKET_INSIDE_OUT => PocketOrder::InsideOut,
-                MX_POCKET_OUTSIDE_IN => PocketOrder::OutsideIn,
+                INSIDE_OUT => PocketOrder::InsideOut,
+                OUTSIDE_IN => PocketOrder::OutsideIn,
                 k => {
                     return Err(FfiError::new(
                         mx_status::MX_ERR_INVALID_ARGUMENT,
@@ -271,8 +283,8 @@ pub unsafe extern "C" fn mx_pocket_get_uncut(
         query(pocket, out, |h| {
             let u = nth(&h.pocket.uncut, index, "uncut region")?;
             let kind = match u.kind {
-                UncutKind::Scallop => MX_UNCUT_SCALLOP,
-                UncutKind::Wall => MX_UNCUT_WALL,
+                UncutKind::Scallop => mx_uncut_kind::MX_UNCUT_SCALLOP,
+                UncutKind::Wall => mx_uncut_kind::MX_UNCUT_WALL,
             };
             Ok(mx_uncut_region { kind, area: u.area, loops: h.uncut[index].view() })
         })

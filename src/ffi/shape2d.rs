@@ -1,11 +1,11 @@
 //! C functions for 2D shapes: create, inspect, draw, free. Mirrors
 //! `crate::shape`; no geometry is computed here.
 
-use super::boundary::{c_str, check_out, check_threads, fill, guard, in_pool, index_error, nth, slice, write_out};
+use super::boundary::{c_str, check_threads, fill_items, guard, in_pool, index_error, nth, slice};
 use super::handles::{arg, create, free, impl_options, options_default, options_init, query, Boxed, Handle, Options};
 use super::last_error::FfiError;
+use super::shape_kinds::{format_of, mx_bbox, mx_element, mx_joint_kind, ARC, SEGMENT};
 use super::status::mx_status;
-use crate::io::Format;
 use crate::kernel::Point;
 use crate::shape::{Element, ElementSpec, JointKind, Shape2d, ShapeOptions, Vertex};
 use std::ffi::c_char;
@@ -62,70 +62,6 @@ pub struct mx_shape_options {
     /// `struct_size` ends before this field) gets the default.
     pub threads: usize,
 }
-
-/// `mx_element.kind` of a line segment.
-pub const MX_ELEMENT_SEGMENT: u32 = 0;
-/// `mx_element.kind` of a circular arc.
-pub const MX_ELEMENT_ARC: u32 = 1;
-
-/// One boundary element. As output all fields are set. As input
-/// (`mx_shape2d_from_elements`), a segment reads `x0 y0 x1 y1`; an arc reads
-/// `x0 y0 x1 y1 cx cy ccw` (start, end, centre, direction; start == end is a
-/// full circle) and ignores `bulge` and `radius`.
-#[repr(C)]
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct mx_element {
-    /// `MX_ELEMENT_SEGMENT` or `MX_ELEMENT_ARC`.
-    pub kind: u32,
-    /// Non-zero when the arc runs counter-clockwise (0 for segments).
-    pub ccw: u32,
-    /// Start point x.
-    pub x0: f64,
-    /// Start point y.
-    pub y0: f64,
-    /// End point x.
-    pub x1: f64,
-    /// End point y.
-    pub y1: f64,
-    /// Arc centre x (0 for segments).
-    pub cx: f64,
-    /// Arc centre y (0 for segments).
-    pub cy: f64,
-    /// Arc radius (0 for segments).
-    pub radius: f64,
-    /// tan(sweep/4), positive counter-clockwise (0 for segments).
-    pub bulge: f64,
-}
-
-/// An axis-aligned box, model units.
-#[repr(C)]
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct mx_bbox {
-    /// Smallest x.
-    pub xmin: f64,
-    /// Smallest y.
-    pub ymin: f64,
-    /// Largest x.
-    pub xmax: f64,
-    /// Largest y.
-    pub ymax: f64,
-}
-
-/// `mx_joint` value: tangent-continuous joint.
-pub const MX_JOINT_SMOOTH: u32 = 0;
-/// `mx_joint` value: convex corner (interior angle below 180°).
-pub const MX_JOINT_CONVEX: u32 = 1;
-/// `mx_joint` value: reflex corner (interior angle above 180°).
-pub const MX_JOINT_REFLEX: u32 = 2;
-
-/// Format argument: guess from the file extension or content.
-pub const MX_FORMAT_AUTO: u32 = 0;
-/// Format argument: medax shape JSON.
-pub const MX_FORMAT_JSON: u32 = 1;
-/// Format argument: ASCII DXF.
-pub const MX_FORMAT_DXF: u32 = 2;
-/// Format argument: SVG document or path data.
-pub const MX_FORMAT_SVG: u32 = 3;
 
 // `ShapeOptions::DEFAULT` in C form (0 and −1 stand for "derived").
 impl_options!(mx_shape_options, v1: 56 bytes up to max_radius_ratio: f64, defaults: mx_shape_options {
@@ -311,8 +247,8 @@ fn elements_shape(
         for (i, e) in elems[at..at + n].iter().enumerate() {
             let (a, b) = (Point::new(e.x0, e.y0), Point::new(e.x1, e.y1));
             specs.push(match e.kind {
-                MX_ELEMENT_SEGMENT => ElementSpec::Segment { a, b },
-                MX_ELEMENT_ARC => ElementSpec::ArcPoints { a, b, center: Point::new(e.cx, e.cy), ccw: e.ccw != 0 },
+                SEGMENT => ElementSpec::Segment { a, b },
+                ARC => ElementSpec::ArcPoints { a, b, center: Point::new(e.cx, e.cy), ccw: e.ccw != 0 },
                 k => {
                     return Err(FfiError::new(
                         mx_status::MX_ERR_INVALID_ARGUMENT,
@@ -325,16 +261,6 @@ fn elements_shape(
         at += n;
     }
     built(threads, || Ok(Shape2d::from_elements(&loops, &opts)?))
-}
-
-pub(crate) fn format_of(code: u32) -> Result<Option<Format>, FfiError> {
-    match code {
-        MX_FORMAT_AUTO => Ok(None),
-        MX_FORMAT_JSON => Ok(Some(Format::Json)),
-        MX_FORMAT_DXF => Ok(Some(Format::Dxf)),
-        MX_FORMAT_SVG => Ok(Some(Format::Svg)),
-        other => Err(FfiError::new(mx_status::MX_ERR_INVALID_ARGUMENT, format!("unknown format {other}"))),
-    }
 }
 
 /// Reads a shape file (JSON, DXF or SVG; `MX_FORMAT_AUTO` picks by extension,
@@ -440,48 +366,45 @@ pub unsafe extern "C" fn mx_shape2d_loop_size(
 pub unsafe extern "C" fn mx_shape2d_loop_reversed(
     shape: *const mx_shape2d,
     loop_index: usize,
-    out: *mut u32,
+    out: *mut i32,
 ) -> mx_status {
     // SAFETY: forwarded contract.
     unsafe {
         query(shape, out, |s| {
             loop_of(s, loop_index)?;
-            Ok(s.was_reversed(loop_index) as u32)
+            Ok(i32::from(s.was_reversed(loop_index)))
         })
     }
 }
 
-/// Copies loop `loop_index` as `x, y, bulge` triples into `xyb`
-/// (`capacity` doubles; needs 3 × `mx_shape2d_loop_size`) and writes the
-/// number of vertices to `written`. Fails with `MX_ERR_BUFFER_TOO_SMALL`
-/// (nothing written) when the buffer is short.
+/// Copies loop `loop_index` as `x, y, bulge` triples into `xyb` of
+/// `capacity` vertices and writes their number to `*count`. Size query:
+/// `capacity` 0 (`xyb` may be NULL) writes only `*count`; a shorter buffer
+/// gives `MX_ERR_BUFFER_TOO_SMALL` with nothing written.
 ///
 /// # Safety
-/// `xyb` NULL or `capacity` writable doubles; `written` NULL or writable.
+/// `shape` NULL or a live handle; `xyb` NULL or `3 * capacity` writable
+/// doubles; `count` NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn mx_shape2d_loop_vertices(
     shape: *const mx_shape2d,
     loop_index: usize,
     xyb: *mut f64,
     capacity: usize,
-    written: *mut usize,
+    count: *mut usize,
 ) -> mx_status {
     guard(|| {
-        check_out(written, "written")?;
         // SAFETY: caller contract.
         let s = unsafe { arg(shape)? };
         let l = loop_of(s, loop_index)?;
-        let need = 3 * l.len();
+        let n = l.len();
         let triples = l.vertices().iter().flat_map(|v| [v.p.x, v.p.y, v.bulge]);
-        // SAFETY: caller contract: `xyb` NULL or `capacity` writable doubles.
+        // SAFETY: caller contract.
         unsafe {
-            fill(xyb, "xyb", capacity, need, triples, || {
-                format!("loop {loop_index} needs {need} doubles, buffer holds {capacity}")
-            })?
-        };
-        // SAFETY: checked non-NULL.
-        unsafe { write_out(written, l.len()) };
-        Ok(())
+            fill_items((xyb, "xyb"), (capacity, count), (n, 3), triples, || {
+                format!("loop {loop_index} has {n} vertices, the buffer room for {capacity}")
+            })
+        }
     })
 }
 
@@ -508,8 +431,8 @@ pub unsafe extern "C" fn mx_shape2d_element(
             let (a, b) = (e.start(), e.end());
             let mut m = mx_element { x0: a.x, y0: a.y, x1: b.x, y1: b.y, ..Default::default() };
             if let Element::Arc(arc) = e {
-                m.kind = MX_ELEMENT_ARC;
-                m.ccw = arc.is_ccw() as u32;
+                m.kind = ARC;
+                m.ccw = i32::from(arc.is_ccw());
                 m.cx = arc.center.x;
                 m.cy = arc.center.y;
                 m.radius = arc.radius;
@@ -530,7 +453,7 @@ pub unsafe extern "C" fn mx_shape2d_joint(
     shape: *const mx_shape2d,
     loop_index: usize,
     index: usize,
-    out: *mut u32,
+    out: *mut mx_joint_kind,
 ) -> mx_status {
     // SAFETY: forwarded contract.
     unsafe {
@@ -540,9 +463,9 @@ pub unsafe extern "C" fn mx_shape2d_joint(
                 return Err(index_error("vertex", index, l.len()));
             }
             Ok(match s.joint(loop_index, index) {
-                JointKind::Smooth => MX_JOINT_SMOOTH,
-                JointKind::Convex => MX_JOINT_CONVEX,
-                JointKind::Reflex => MX_JOINT_REFLEX,
+                JointKind::Smooth => mx_joint_kind::MX_JOINT_SMOOTH,
+                JointKind::Convex => mx_joint_kind::MX_JOINT_CONVEX,
+                JointKind::Reflex => mx_joint_kind::MX_JOINT_REFLEX,
             })
         })
     }

@@ -74,7 +74,7 @@ pub struct mx_sites {
     pub boundary_xyb: *const f64,
     /// Vertex count of the boundary (0 with NULL); the array holds 3 ×
     /// this many doubles.
-    pub boundary_length: usize,
+    pub boundary_count: usize,
 }
 
 /// Options for `mx_voronoi_compute`. Initialise with
@@ -272,11 +272,8 @@ pub(super) unsafe fn read_sites(s: &mx_sites) -> Result<(Sites, Option<Vec<crate
             slice(s.region_lengths, s.region_count, "region_lengths")?,
         )
     };
-    let boundary_len = s.boundary_length.checked_mul(3).ok_or_else(|| {
-        FfiError::new(
-            mx_status::MX_ERR_INVALID_ARGUMENT,
-            format!("boundary_length = {} is too large", s.boundary_length),
-        )
+    let boundary_len = s.boundary_count.checked_mul(3).ok_or_else(|| {
+        FfiError::new(mx_status::MX_ERR_INVALID_ARGUMENT, format!("boundary_count = {} is too large", s.boundary_count))
     })?;
     // SAFETY: as above; `split_bulges` checks the lengths add up.
     let (curves_xyb, regions_xyb, boundary_xyb) = unsafe {
@@ -294,7 +291,7 @@ pub(super) unsafe fn read_sites(s: &mx_sites) -> Result<(Sites, Option<Vec<crate
     let boundary = if s.boundary_xyb.is_null() {
         None
     } else {
-        split_bulges(boundary_xyb, &[s.boundary_length], "boundary_xyb")?.pop()
+        split_bulges(boundary_xyb, &[s.boundary_count], "boundary_xyb")?.pop()
     };
     Ok((sites, boundary))
 }

@@ -22,10 +22,19 @@ pub fn ball(spec: &str) -> *mut mx_ball {
 
 /// The ball's vertices, counter-clockwise.
 pub fn ball_vertices(b: *const mx_ball) -> Vec<(f64, f64)> {
-    let mut n = 0;
+    let (mut n, mut queried, mut written) = (0, 0, 0);
     assert_eq!(unsafe { mx_ball_vertex_count(b, &mut n) }, mx_status::MX_OK);
+    assert_eq!(unsafe { mx_ball_vertices(b, std::ptr::null_mut(), 0, &mut queried) }, mx_status::MX_OK);
+    assert_eq!(queried, n, "size query and vertex count disagree");
     let mut xy = vec![0.0; 2 * n];
-    assert_eq!(unsafe { mx_ball_vertices(b, xy.as_mut_ptr(), xy.len()) }, mx_status::MX_OK);
+    if n > 1 {
+        // One vertex short: refused, nothing written.
+        let st = unsafe { mx_ball_vertices(b, xy.as_mut_ptr(), n - 1, &mut written) };
+        assert_eq!(st, mx_status::MX_ERR_BUFFER_TOO_SMALL);
+        assert!(xy.iter().all(|&v| v == 0.0) && written == 0);
+    }
+    assert_eq!(unsafe { mx_ball_vertices(b, xy.as_mut_ptr(), n, &mut written) }, mx_status::MX_OK);
+    assert_eq!(written, n);
     xy.chunks_exact(2).map(|c| (c[0], c[1])).collect()
 }
 

@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod ball_oracle;
+pub mod c_header;
 pub mod ffi;
 pub mod offset_oracle;
 pub mod oracle;
