@@ -1,4 +1,4 @@
-# cmake -DREADELF=... -DLIBRARY=.../libmedax.so -DEXPECTED=libmedax.so.0.2 -P CheckSoname.cmake
+# cmake -DREADELF=... -DLIBRARY=.../libmedax.so -DEXPECTED=libmedax.so.0.3 -P CheckSoname.cmake
 #
 # Fails when the shared library cargo built does not carry the SONAME the
 # installed symlink chain and medaxConfig.cmake promise (it comes from build.rs).

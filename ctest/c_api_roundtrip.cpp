@@ -296,6 +296,7 @@ void test_status_strings() {
                              MX_ERR_HOLE_INSIDE_HOLE,
                              MX_ERR_INCONSISTENT_ARC,
                              MX_ERR_INVALID_BALL,
+                             MX_ERR_NOT_MANIFOLD,
                              MX_ERR_PANIC};
     std::set<std::string> seen;
     for (mx_status s : all) {
@@ -306,7 +307,7 @@ void test_status_strings() {
         MT_CHECK(std::string(text) != "unknown status");
         MT_CHECK(seen.insert(text).second);  // distinct descriptions
     }
-    for (int32_t unknown : {-1, 21, 42, 98, 100, 1 << 30}) {
+    for (int32_t unknown : {-1, 22, 42, 98, 100, 1 << 30}) {
         const char* text = mx_status_str(unknown);
         MT_CHECK_EQ(std::string(text ? text : "NULL"), std::string("unknown status"));
     }

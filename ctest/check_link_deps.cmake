@@ -1,4 +1,4 @@
-# cmake -DOBJDUMP=... -DSHARED_EXE=... -DSTATIC_EXE=... -DSONAME=libmedax.so.0.2 -P check_link_deps.cmake
+# cmake -DOBJDUMP=... -DSHARED_EXE=... -DSTATIC_EXE=... -DSONAME=libmedax.so.0.3 -P check_link_deps.cmake
 #
 # The executable linked against medax::medax_shared must record the SONAME
 # (so it keeps working across minor releases), and the one linked against

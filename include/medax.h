@@ -40,7 +40,7 @@
 /**
  * Minor version of the medax headers.
  */
-#define MEDAX_VERSION_MINOR 2
+#define MEDAX_VERSION_MINOR 3
 
 /**
  * Patch version of the medax headers.
@@ -163,6 +163,13 @@ typedef enum mx_status {
    * names the vertex.
    */
   MX_ERR_INVALID_BALL = 20,
+  /**
+   * A solid's surface is not a closed 2-manifold that can be oriented:
+   * an edge with more than two faces, faces pinched at a vertex, or no
+   * consistent orientation; `mx_last_error_info` names the face
+   * (`element`) or the vertex (`other_element`).
+   */
+  MX_ERR_NOT_MANIFOLD = 21,
   /**
    * A bug in medax: a panic was caught at the C boundary. Please report it
    * with the input that caused it.
@@ -378,6 +385,22 @@ typedef enum mx_format {
    * SVG document or path data.
    */
   MX_FORMAT_SVG = 3,
+  /**
+   * Wavefront OBJ (solids).
+   */
+  MX_FORMAT_OBJ = 4,
+  /**
+   * OFF, Object File Format (solids).
+   */
+  MX_FORMAT_OFF = 5,
+  /**
+   * STL, ASCII or binary (solids).
+   */
+  MX_FORMAT_STL = 6,
+  /**
+   * PLY, ASCII or binary little-endian (solids).
+   */
+  MX_FORMAT_PLY = 7,
 } mx_format;
 
 /**
@@ -419,7 +442,10 @@ typedef struct mx_ball mx_ball;
 typedef struct mx_drawing mx_drawing;
 
 /**
- * A triangulated solid (3D medial axis, thesis chapter 3). Opaque.
+ * A validated triangulated solid: closed, manifold, triangles facing out
+ * of the material, components nested (cavities). Opaque; create with
+ * `mx_mesh3d_from_*`, release with `mx_mesh3d_free`. Immutable: a `const
+ * mx_mesh3d*` may be used from several threads at once.
  */
 typedef struct mx_mesh3d mx_mesh3d;
 
@@ -904,6 +930,132 @@ typedef struct mx_error_info {
 } mx_error_info;
 
 /**
+ * How a solid is read. Initialise with `mx_mesh_options_init(&o, sizeof
+ * o)` (which sets `struct_size`).
+ */
+typedef struct mx_mesh_options {
+  /**
+   * `sizeof(mx_mesh_options)` as the caller was compiled.
+   */
+  size_t struct_size;
+  /**
+   * Vertices closer than this (model units) become one; 0 (default)
+   * merges exactly equal positions only.
+   */
+  double weld_tolerance;
+  /**
+   * Worker threads: 0 = all cores (default), else at most
+   * `MX_AXIS_MAX_THREADS`.
+   */
+  size_t threads;
+} mx_mesh_options;
+
+/**
+ * Facts of a solid.
+ */
+typedef struct mx_mesh3d_info {
+  /**
+   * Vertices (welded; each used by a triangle).
+   */
+  size_t vertex_count;
+  /**
+   * Triangles (polygon faces cut into triangles).
+   */
+  size_t triangle_count;
+  /**
+   * Connected surfaces: outer surfaces and cavities.
+   */
+  size_t component_count;
+  /**
+   * Volume of material (cavities subtracted), cubic model units.
+   */
+  double volume;
+  /**
+   * Surface area, square model units.
+   */
+  double area;
+  /**
+   * Smallest corner of the bounding box.
+   */
+  double min[3];
+  /**
+   * Largest corner of the bounding box.
+   */
+  double max[3];
+  /**
+   * Input vertices merged into an equal (or, with a tolerance, close)
+   * earlier one.
+   */
+  size_t welded;
+  /**
+   * Input vertices no face uses, dropped.
+   */
+  size_t unused_vertices;
+  /**
+   * Polygon faces cut into triangles.
+   */
+  size_t polygons_triangulated;
+  /**
+   * Triangles reversed to agree with their neighbours.
+   */
+  size_t triangles_reoriented;
+  /**
+   * Components reversed because they faced into the material.
+   */
+  size_t components_reversed;
+} mx_mesh3d_info;
+
+/**
+ * One connected surface of a solid.
+ */
+typedef struct mx_mesh3d_component {
+  /**
+   * Its triangles.
+   */
+  size_t triangle_count;
+  /**
+   * Its vertices.
+   */
+  size_t vertex_count;
+  /**
+   * Genus (0: sphere-like, 1: torus-like, …).
+   */
+  size_t genus;
+  /**
+   * Signed volume (negative for a cavity).
+   */
+  double volume;
+  /**
+   * Surface area.
+   */
+  double area;
+  /**
+   * Smallest corner of its bounding box.
+   */
+  double min[3];
+  /**
+   * Largest corner of its bounding box.
+   */
+  double max[3];
+  /**
+   * 1 when `parent` holds the component directly around it.
+   */
+  int32_t has_parent;
+  /**
+   * The component directly around it (valid when `has_parent` is 1).
+   */
+  size_t parent;
+  /**
+   * How many components are around it: odd for a cavity.
+   */
+  size_t depth;
+  /**
+   * 1 when medax reversed it (it faced into the material).
+   */
+  int32_t reversed;
+} mx_mesh3d_component;
+
+/**
  * Options for `mx_offsets_compute` and `mx_offsets_from_axis`.
  * Initialise with `mx_offset_options_init(&o, sizeof o)` (which sets `struct_size`).
  */
@@ -1382,6 +1534,8 @@ typedef struct mx_nearest_site {
   double foot_y;
 } mx_nearest_site;
 
+
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -1845,14 +1999,6 @@ enum mx_status mx_drawing_get_warning(const struct mx_drawing *drawing,
                                       struct mx_warning *out);
 
 /**
- * Releases a `mx_mesh3d`. NULL is a no-op.
- *
- * # Safety
- * `mesh` must be NULL or a handle returned by medax and not yet freed.
- */
-void mx_mesh3d_free(struct mx_mesh3d *mesh);
-
-/**
  * Length in bytes of the last error message on this thread, including the
  * terminating NUL; 0 when no error is recorded.
  */
@@ -1882,6 +2028,129 @@ enum mx_status mx_last_error_info(struct mx_error_info *out);
  * Forgets the last error on this thread.
  */
 void mx_clear_last_error(void);
+
+/**
+ * Fills the caller's `mx_mesh_options` with the defaults: `size` is its
+ * `sizeof`; at most that many bytes are written.
+ *
+ * # Safety
+ * `out` NULL or `size` writable bytes.
+ */
+enum mx_status mx_mesh_options_init(struct mx_mesh_options *out, size_t size);
+
+/**
+ * Reads and validates a solid: OBJ, OFF, STL (ASCII or binary) or PLY
+ * (ASCII or binary little-endian); `format` an `mx_format`
+ * (`MX_FORMAT_AUTO`: by extension, else by content). A surface that is
+ * not a solid's gives its typed error (`MX_ERR_NOT_CLOSED`,
+ * `MX_ERR_NOT_MANIFOLD`, `MX_ERR_INTERSECTION`, `MX_ERR_DEGENERATE`, …)
+ * with the face (`element`), the vertex or, for crossing faces, the
+ * second face (`other_element`) and the file line in `mx_last_error_info`.
+ *
+ * # Safety
+ * `path` NULL or NUL-terminated UTF-8; `options` NULL or valid; `out`
+ * writable.
+ */
+enum mx_status mx_mesh3d_from_file(const char *path,
+                                   uint32_t format,
+                                   const struct mx_mesh_options *options,
+                                   struct mx_mesh3d **out);
+
+/**
+ * Reads and validates a solid from `len` bytes of a file's content
+ * (`MX_FORMAT_AUTO` guesses from the content).
+ *
+ * # Safety
+ * `data` NULL (only when `len` is 0) or `len` readable bytes; `options`
+ * NULL or valid; `out` writable.
+ */
+enum mx_status mx_mesh3d_from_memory(const uint8_t *data,
+                                     size_t len,
+                                     uint32_t format,
+                                     const struct mx_mesh_options *options,
+                                     struct mx_mesh3d **out);
+
+/**
+ * A solid from arrays: `xyz` (`xyz_len` doubles, 3 per vertex) and
+ * `triangles` (`triangles_len` indices, 3 per triangle, 0-based), in
+ * either orientation; validated as a file is.
+ *
+ * # Safety
+ * `xyz` and `triangles` NULL (only with length 0) or readable for their
+ * lengths; `options` NULL or valid; `out` writable.
+ */
+enum mx_status mx_mesh3d_from_arrays(const double *xyz,
+                                     size_t xyz_len,
+                                     const uint32_t *triangles,
+                                     size_t triangles_len,
+                                     const struct mx_mesh_options *options,
+                                     struct mx_mesh3d **out);
+
+/**
+ * Releases a `mx_mesh3d`. NULL is a no-op.
+ *
+ * # Safety
+ * `mesh` must be NULL or a handle returned by medax and not yet freed.
+ */
+void mx_mesh3d_free(struct mx_mesh3d *mesh);
+
+/**
+ * The solid's facts.
+ *
+ * # Safety
+ * `mesh` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_mesh3d_get_info(const struct mx_mesh3d *mesh, struct mx_mesh3d_info *out);
+
+/**
+ * Component `index` (0 ≤ index < `component_count`).
+ *
+ * # Safety
+ * `mesh` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_mesh3d_get_component(const struct mx_mesh3d *mesh,
+                                       size_t index,
+                                       struct mx_mesh3d_component *out);
+
+/**
+ * Copies the vertices as x, y, z triples into `xyz` of `capacity`
+ * vertices and writes their number to `*count` (capacity 0: size query;
+ * a shorter buffer: `MX_ERR_BUFFER_TOO_SMALL`, nothing written).
+ *
+ * # Safety
+ * `mesh` NULL or a live handle; `xyz` NULL or `3 * capacity` writable
+ * doubles; `count` NULL or writable.
+ */
+enum mx_status mx_mesh3d_vertices(const struct mx_mesh3d *mesh,
+                                  double *xyz,
+                                  size_t capacity,
+                                  size_t *count);
+
+/**
+ * Copies the triangles as vertex index triples (0-based, counter-clockwise
+ * seen from outside the material) into `abc` of `capacity` triangles and
+ * writes their number to `*count` (the buffer protocol of
+ * `mx_mesh3d_vertices`).
+ *
+ * # Safety
+ * `mesh` NULL or a live handle; `abc` NULL or `3 * capacity` writable
+ * `uint32_t`; `count` NULL or writable.
+ */
+enum mx_status mx_mesh3d_triangles(const struct mx_mesh3d *mesh,
+                                   uint32_t *abc,
+                                   size_t capacity,
+                                   size_t *count);
+
+/**
+ * Writes the solid to `path` as OBJ, OFF or PLY (binary little-endian):
+ * `format` `MX_FORMAT_OBJ`, `MX_FORMAT_OFF`, `MX_FORMAT_PLY`, or
+ * `MX_FORMAT_AUTO` by the path's extension. STL is not written (it would
+ * lose the shared vertices).
+ *
+ * # Safety
+ * `mesh` NULL or a live handle; `path` NULL or NUL-terminated UTF-8.
+ */
+enum mx_status mx_mesh3d_write(const struct mx_mesh3d *mesh, const char *path, uint32_t format);
 
 /**
  * Fills the caller's `mx_offset_options` with the defaults: `size` is its

@@ -513,3 +513,53 @@ fn voronoi_under_a_ball() {
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("curve site 0: element 0 is an arc"));
 }
+
+/// `medax info` on solids: the report of a box with a cavity written as
+/// OFF (triangles) and a binary STL, and the typed error of an open box
+/// with exit code 1.
+#[test]
+fn info_reports_solids_and_their_errors() {
+    use medax::shape::mesh_samples::{cuboid, union};
+    let dir = scratch("info_mesh");
+    let (v, t) = union(&[cuboid([0.0; 3], [4.0; 3]), cuboid([1.0; 3], [2.0; 3])]);
+    let off = dir.join("cavity.off");
+    std::fs::write(&off, medax::io::mesh::write_off(&v, &t)).unwrap();
+    let out = medax().arg("info").arg(&off).output().unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(text.contains("valid solid: 2 component(s) (1 cavity)"), "{text}");
+    assert!(text.contains("volume: 63"), "{text}");
+    assert!(text.contains("components reversed to face out of the material: 1"), "{text}");
+    // Binary STL: 50 bytes per facet, corners unshared: welded.
+    let mut stl = vec![0u8; 80];
+    stl.extend((t.len() as u32).to_le_bytes());
+    for tri in &t {
+        stl.extend([0u8; 12]);
+        for &i in tri {
+            for c in v[i as usize] {
+                stl.extend((c as f32).to_le_bytes());
+            }
+        }
+        stl.extend([0u8; 2]);
+    }
+    let stl_path = dir.join("cavity.stl");
+    std::fs::write(&stl_path, &stl).unwrap();
+    let out = medax().arg("info").arg(&stl_path).output().unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(text.contains("vertices welded onto an equal one: 56"), "{text}");
+    // Converted to PLY and back: the same report.
+    let ply = dir.join("cavity.ply");
+    let out = medax().arg("convert").arg(&stl_path).arg(&ply).output().unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let back = medax().arg("info").arg(&ply).output().unwrap();
+    let back = String::from_utf8_lossy(&back.stdout);
+    assert!(back.contains("valid solid: 2 component(s) (1 cavity)") && back.contains("volume: 63"), "{back}");
+    // Open: the last face dropped.
+    let open = dir.join("open.off");
+    std::fs::write(&open, medax::io::mesh::write_off(&v, &t[..t.len() - 1])).unwrap();
+    let out = medax().arg("info").arg(&open).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("open there") && err.contains("line"), "{err}");
+}

@@ -34,6 +34,9 @@ pub fn report(s: &Shape2d) -> String {
 }
 
 pub fn run(args: &ShapeArgs, json: Option<&Path>) -> Result<(), ExitCode> {
+    if super::mesh::is_mesh(&args.shape) {
+        return super::mesh::run_info(&args.shape);
+    }
     let t = Instant::now();
     let d = args.load_drawing().map_err(|e| fail(&args.shape, &e))?;
     if let Some(path) = json {

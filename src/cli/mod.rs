@@ -20,6 +20,7 @@ mod axis;
 mod ball;
 mod demo;
 mod info;
+mod mesh;
 mod offset;
 mod voronoi;
 
@@ -39,7 +40,7 @@ struct Cli {
 /// Options shared by commands that read a shape.
 #[derive(clap::Args)]
 struct ShapeArgs {
-    /// Shape file: .json (medax loops), .dxf (ASCII) or .svg.
+    /// Shape file: .json (medax loops), .dxf (ASCII) or .svg (`medax info` also reads solids: .obj, .off, .stl, .ply).
     shape: PathBuf,
     /// Absolute touching tolerance in model units (default: 1e-9 × bounding-box diagonal).
     #[arg(long)]
@@ -215,7 +216,16 @@ impl RunArgs {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Validate a shape, or the shapes of a drawing, and report loops, elements, joints, area, extent and what was ignored.
+    /// Read and validate a solid, write it in another format (.obj, .off or .ply, by extension): triangulated,
+    /// welded, facing outward.
+    Convert {
+        /// The solid: .obj, .off, .stl or .ply.
+        input: PathBuf,
+        /// The output file: .obj, .off or .ply (binary).
+        output: PathBuf,
+    },
+    /// Validate a shape, or the shapes of a drawing, and report loops, elements, joints, area, extent and what was ignored;
+    /// or validate a solid (.obj, .off, .stl, .ply) and report its components, volume, area and genus.
     Info {
         #[command(flatten)]
         shape: ShapeArgs,
@@ -289,6 +299,7 @@ pub fn run() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command.unwrap_or(Command::Demo { output: "medax-demo.svg".into() }) {
         Command::Info { shape, json } => info::run(&shape, json.as_deref()),
+        Command::Convert { input, output } => mesh::run_convert(&input, &output),
         Command::Axis(args) => axis::run(&args),
         Command::Voronoi(args) => voronoi::run(&args),
         Command::Offset(args) => offset::run(&args),

@@ -318,27 +318,3 @@ unsafe fn write_defaults<O: Options>(out: *mut O, n: usize) -> mx_status {
         Ok(())
     })
 }
-
-// A handle whose capabilities arrive with a later issue: 3D meshes. It
-// exists now so that the ABI and ownership rules are fixed from the start;
-// only `_free` is available. (`mx_ball` lives in `ball.rs`.)
-
-/// A triangulated solid (3D medial axis, thesis chapter 3). Opaque.
-pub struct mx_mesh3d {
-    _private: (),
-}
-
-impl Handle for mx_mesh3d {
-    const ARG: &'static str = "mesh";
-    type Ownership = Boxed;
-}
-
-/// Releases a `mx_mesh3d`. NULL is a no-op.
-///
-/// # Safety
-/// `mesh` must be NULL or a handle returned by medax and not yet freed.
-#[no_mangle]
-pub unsafe extern "C" fn mx_mesh3d_free(mesh: *mut mx_mesh3d) {
-    // SAFETY: forwarded contract.
-    unsafe { free(mesh) }
-}

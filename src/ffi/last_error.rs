@@ -34,7 +34,7 @@ pub struct mx_error_info {
 }
 
 impl mx_error_info {
-    fn none(status: mx_status) -> mx_error_info {
+    pub(crate) fn none(status: mx_status) -> mx_error_info {
         mx_error_info {
             status,
             loop_index: -1,

@@ -3,6 +3,7 @@
 
 use super::last_error::FfiError;
 use super::status::mx_status;
+use crate::io::mesh::MeshFormat;
 use crate::io::Format;
 
 /// The values of `mx_element.kind` (a `uint32_t`: the struct is also
@@ -88,6 +89,14 @@ pub enum mx_format {
     MX_FORMAT_DXF = 2,
     /// SVG document or path data.
     MX_FORMAT_SVG = 3,
+    /// Wavefront OBJ (solids).
+    MX_FORMAT_OBJ = 4,
+    /// OFF, Object File Format (solids).
+    MX_FORMAT_OFF = 5,
+    /// STL, ASCII or binary (solids).
+    MX_FORMAT_STL = 6,
+    /// PLY, ASCII or binary little-endian (solids).
+    MX_FORMAT_PLY = 7,
 }
 
 /// The format a reader's `format` argument names; `None` guesses.
@@ -97,6 +106,26 @@ pub(crate) fn format_of(code: u32) -> Result<Option<Format>, FfiError> {
         c if c == mx_format::MX_FORMAT_JSON as u32 => Ok(Some(Format::Json)),
         c if c == mx_format::MX_FORMAT_DXF as u32 => Ok(Some(Format::Dxf)),
         c if c == mx_format::MX_FORMAT_SVG as u32 => Ok(Some(Format::Svg)),
+        4..=7 => Err(FfiError::new(
+            mx_status::MX_ERR_INVALID_ARGUMENT,
+            format!("format {code} is a solid's (OBJ, OFF, STL, PLY): read it with mx_mesh3d_from_file"),
+        )),
+        other => Err(FfiError::new(mx_status::MX_ERR_INVALID_ARGUMENT, format!("unknown format {other}"))),
+    }
+}
+
+/// The solid format a reader's `format` argument names; `None` guesses.
+pub(crate) fn mesh_format_of(code: u32) -> Result<Option<MeshFormat>, FfiError> {
+    match code {
+        0 => Ok(None),
+        4 => Ok(Some(MeshFormat::Obj)),
+        5 => Ok(Some(MeshFormat::Off)),
+        6 => Ok(Some(MeshFormat::Stl)),
+        7 => Ok(Some(MeshFormat::Ply)),
+        1..=3 => Err(FfiError::new(
+            mx_status::MX_ERR_INVALID_ARGUMENT,
+            format!("format {code} is a 2D shape's (JSON, DXF, SVG): read it with mx_shape2d_from_file"),
+        )),
         other => Err(FfiError::new(mx_status::MX_ERR_INVALID_ARGUMENT, format!("unknown format {other}"))),
     }
 }

@@ -55,6 +55,11 @@ pub enum mx_status {
     /// the origin not strictly inside…); `mx_last_error_info`'s `element`
     /// names the vertex.
     MX_ERR_INVALID_BALL = 20,
+    /// A solid's surface is not a closed 2-manifold that can be oriented:
+    /// an edge with more than two faces, faces pinched at a vertex, or no
+    /// consistent orientation; `mx_last_error_info` names the face
+    /// (`element`) or the vertex (`other_element`).
+    MX_ERR_NOT_MANIFOLD = 21,
     /// A bug in medax: a panic was caught at the C boundary. Please report it
     /// with the input that caused it.
     MX_ERR_PANIC = 99,
@@ -86,7 +91,7 @@ impl mx_status {
     /// Every status, for `mx_status_str`; `text` matches every variant
     /// exhaustively, and `tests/header.rs` checks this list against the
     /// header's enum, so a new status cannot be left without a string.
-    pub(crate) const ALL: [mx_status; 22] = {
+    pub(crate) const ALL: [mx_status; 23] = {
         use mx_status::*;
         [
             MX_OK,
@@ -110,6 +115,7 @@ impl mx_status {
             MX_ERR_HOLE_INSIDE_HOLE,
             MX_ERR_INCONSISTENT_ARC,
             MX_ERR_INVALID_BALL,
+            MX_ERR_NOT_MANIFOLD,
             MX_ERR_PANIC,
         ]
     };
@@ -138,6 +144,7 @@ impl mx_status {
             MX_ERR_HOLE_INSIDE_HOLE => c"a hole is inside another hole",
             MX_ERR_INCONSISTENT_ARC => c"arc end points are not on one circle",
             MX_ERR_INVALID_BALL => c"the polygon is not a unit ball",
+            MX_ERR_NOT_MANIFOLD => c"the surface is not a closed orientable manifold",
             MX_ERR_PANIC => c"internal error (panic caught); please report",
         }
     }

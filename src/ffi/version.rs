@@ -5,7 +5,7 @@ use std::ffi::c_char;
 /// Major version of the medax headers (the SONAME is `libmedax.so.<major>`).
 pub const MEDAX_VERSION_MAJOR: u32 = 0;
 /// Minor version of the medax headers.
-pub const MEDAX_VERSION_MINOR: u32 = 2;
+pub const MEDAX_VERSION_MINOR: u32 = 3;
 /// Patch version of the medax headers.
 pub const MEDAX_VERSION_PATCH: u32 = 0;
 

@@ -10,6 +10,7 @@ pub mod dxf;
 pub mod dxf_writer;
 pub mod json;
 mod json_scan;
+pub mod mesh;
 pub mod svg_path;
 pub mod svg_writer;
 

@@ -43,9 +43,12 @@ pub(crate) mod exact_line;
 pub mod fan;
 pub mod growing_disk;
 mod limbs;
+pub mod orient3;
 mod point;
+mod point3;
 mod site_piece;
 pub mod tolerance;
+pub mod tri_tri;
 pub(crate) mod xfloat;
 
 pub use axis_kernel::{AxisKernel, CarrierSide, Contact};
@@ -54,6 +57,7 @@ pub(crate) use bigint::BigInt;
 pub use circle_arc::{CircleArc, Crossing};
 pub use disk::Disk;
 pub use point::Point;
+pub use point3::{BBox3, Point3};
 pub use site_piece::SitePiece;
 
 // The exact fallback of `FilteredKernel`: both evaluations are exact, so the

@@ -18,12 +18,15 @@
 //! * `draw.rs`: SVG pictures of a shape.
 //! * `ball/`: unit balls of convex distance functions (chapter 3): the
 //!   plane's convex polygons ([`Ball2`]), gauge distances, contact features.
+//! * `mesh/`: triangulated solids ([`Mesh3d`]): welded, triangulated,
+//!   validated (closed, manifold, oriented outward, nested components).
 
 pub(crate) mod ball;
 pub(crate) mod build;
 pub(crate) mod draw;
 pub(crate) mod draw_sites;
 pub(crate) mod index;
+pub(crate) mod mesh;
 pub(crate) mod model;
 pub(crate) mod shape2d;
 pub(crate) mod validate;
@@ -37,6 +40,9 @@ pub use build::samples;
 pub use draw::{draw_joints, push_loop_path, shape_document, shape_path};
 pub use index::box_tree::BoxTree;
 pub use index::chain_tree::ChainTree;
+pub use mesh::samples as mesh_samples;
+pub use mesh::{Closest, Hit, TriangleTree};
+pub use mesh::{Component, FaceRef, Faces, Mesh3d, MeshError, MeshOptions, MeshReport};
 pub use model::bulge_loop::{winding_contribution, Loop, LoopKind, Vertex};
 pub use model::error::{Degeneracy, ElementRef, ShapeError};
 pub use model::joints::{classify, turning_angle, JointKind};

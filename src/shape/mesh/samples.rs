@@ -1,0 +1,92 @@
+//! Generated solids for tests, benchmarks and the demo: parametric tori
+//! and spheres of any resolution, boxes, and a box with a cavity.
+
+/// Vertices and triangles of a generated solid.
+pub type Soup = (Vec<[f64; 3]>, Vec<[u32; 3]>);
+
+/// A torus about the z axis: tube of radius `minor` around a circle of
+/// radius `major`, `n` steps around the axis and `m` around the tube
+/// (2·n·m triangles, genus 1), facing outward.
+pub fn torus(major: f64, minor: f64, n: usize, m: usize) -> Soup {
+    let (n, m) = (n.max(3), m.max(3));
+    let mut v = Vec::with_capacity(n * m);
+    for i in 0..n {
+        let u = std::f64::consts::TAU * i as f64 / n as f64;
+        for j in 0..m {
+            let w = std::f64::consts::TAU * j as f64 / m as f64;
+            let r = major + minor * w.cos();
+            v.push([r * u.cos(), r * u.sin(), minor * w.sin()]);
+        }
+    }
+    let id = |i: usize, j: usize| ((i % n) * m + j % m) as u32;
+    let mut t = Vec::with_capacity(2 * n * m);
+    for i in 0..n {
+        for j in 0..m {
+            let (a, b, c, d) = (id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+            t.push([a, b, c]);
+            t.push([a, c, d]);
+        }
+    }
+    (v, t)
+}
+
+/// A sphere of radius `r` about `center`, `n` rings by `m` meridians
+/// (2·m·(n − 1) triangles), facing outward.
+pub fn sphere(center: [f64; 3], r: f64, n: usize, m: usize) -> Soup {
+    let (n, m) = (n.max(2), m.max(3));
+    let mut v = vec![[center[0], center[1], center[2] + r]];
+    for i in 1..n {
+        let polar = std::f64::consts::PI * i as f64 / n as f64;
+        for j in 0..m {
+            let az = std::f64::consts::TAU * j as f64 / m as f64;
+            v.push([
+                center[0] + r * polar.sin() * az.cos(),
+                center[1] + r * polar.sin() * az.sin(),
+                center[2] + r * polar.cos(),
+            ]);
+        }
+    }
+    v.push([center[0], center[1], center[2] - r]);
+    let south = (v.len() - 1) as u32;
+    let ring = |i: usize, j: usize| (1 + (i - 1) * m + j % m) as u32;
+    let mut t = Vec::new();
+    for j in 0..m {
+        t.push([0, ring(1, j), ring(1, j + 1)]);
+        t.push([south, ring(n - 1, j + 1), ring(n - 1, j)]);
+    }
+    for i in 1..n - 1 {
+        for j in 0..m {
+            let (a, b, c, d) = (ring(i, j), ring(i + 1, j), ring(i + 1, j + 1), ring(i, j + 1));
+            t.push([a, b, c]);
+            t.push([a, c, d]);
+        }
+    }
+    (v, t)
+}
+
+/// The box `lo`–`hi` (12 triangles), facing outward.
+pub fn cuboid(lo: [f64; 3], hi: [f64; 3]) -> Soup {
+    let v: Vec<[f64; 3]> = (0..8)
+        .map(|i| {
+            [
+                if i & 1 == 0 { lo[0] } else { hi[0] },
+                if i & 2 == 0 { lo[1] } else { hi[1] },
+                if i & 4 == 0 { lo[2] } else { hi[2] },
+            ]
+        })
+        .collect();
+    let quads = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]];
+    let t = quads.iter().flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]]).collect();
+    (v, t)
+}
+
+/// Several solids as one soup (indices shifted).
+pub fn union(parts: &[Soup]) -> Soup {
+    let mut out: Soup = (Vec::new(), Vec::new());
+    for (v, t) in parts {
+        let base = out.0.len() as u32;
+        out.0.extend_from_slice(v);
+        out.1.extend(t.iter().map(|tri| tri.map(|i| i + base)));
+    }
+    out
+}
