@@ -429,8 +429,8 @@ typedef enum mx_pocket_order {
 typedef struct mx_axis mx_axis;
 
 /**
- * A unit ball: a convex polygon holding the origin strictly inside,
- * counter-clockwise. Immutable; may be shared between threads.
+ * A unit ball: a convex polygon (plane) or polytope (space) holding the
+ * origin strictly inside. Immutable; may be shared between threads.
  */
 typedef struct mx_ball mx_ball;
 
@@ -1720,7 +1720,7 @@ enum mx_status mx_ball_mirrored(const struct mx_ball *ball, struct mx_ball **out
 void mx_ball_free(struct mx_ball *ball);
 
 /**
- * The ball's dimension: 2 (a polygon; 3 will be a polytope).
+ * The ball's dimension: 2 (a polygon) or 3 (a polytope).
  *
  * # Safety
  * `ball` NULL or a live handle; `out` NULL or writable.
@@ -1736,14 +1736,15 @@ enum mx_status mx_ball_dimension(const struct mx_ball *ball, size_t *out);
 enum mx_status mx_ball_vertex_count(const struct mx_ball *ball, size_t *out);
 
 /**
- * Copies the vertices, counter-clockwise, as x0, y0, x1, y1, … into `xy`
- * of `capacity` vertices and writes their number to `*count`. Size query:
- * `capacity` 0 (`xy` may be NULL) writes only `*count`; a shorter buffer
- * gives `MX_ERR_BUFFER_TOO_SMALL` with nothing written.
+ * Copies the vertices into `xy` of `capacity` vertices and writes their
+ * number to `*count`: a plane ball's counter-clockwise as x0, y0, x1, y1,
+ * …; a space ball's as x0, y0, z0, … (`mx_ball_dimension` numbers each).
+ * Size query: `capacity` 0 (`xy` may be NULL) writes only `*count`; a
+ * shorter buffer gives `MX_ERR_BUFFER_TOO_SMALL` with nothing written.
  *
  * # Safety
- * `ball` NULL or a live handle; `xy` NULL or `2 * capacity` writable
- * doubles; `count` NULL or writable.
+ * `ball` NULL or a live handle; `xy` NULL or `dimension * capacity`
+ * writable doubles; `count` NULL or writable.
  */
 enum mx_status mx_ball_vertices(const struct mx_ball *ball,
                                 double *xy,
@@ -1771,6 +1772,108 @@ enum mx_status mx_ball_distance2(const struct mx_ball *ball,
  * `ball` NULL or a live handle; `out` NULL or writable.
  */
 enum mx_status mx_ball_is_symmetric(const struct mx_ball *ball, int32_t *out);
+
+/**
+ * A space ball: the convex hull of `xyz_len / 3` points `xyz` (x, y, z
+ * each), which must hold the origin strictly inside (its own coordinates
+ * are kept: the origin is where the caller put it, so the distance may be
+ * a quasi-metric). Points inside the hull or on its boundary but not at a
+ * corner are dropped. Fewer than 4 points, a NaN, all points on one plane
+ * or the origin on or outside the hull give `MX_ERR_INVALID_BALL`.
+ *
+ * # Safety
+ * `xyz` NULL (only when `xyz_len` is 0) or `xyz_len` readable doubles;
+ * `out` writable.
+ */
+enum mx_status mx_ball_from_points3(const double *xyz, size_t xyz_len, struct mx_ball **out);
+
+/**
+ * A space ball: the convex hull of the vertices of a mesh file (OBJ, OFF,
+ * STL, PLY; `format` an `mx_format`, `MX_FORMAT_AUTO` by extension), as
+ * `mx_ball_from_points3`. The file's faces are not used.
+ *
+ * # Safety
+ * `path` NULL or NUL-terminated UTF-8; `out` writable.
+ */
+enum mx_status mx_ball_from_file3(const char *path, uint32_t format, struct mx_ball **out);
+
+/**
+ * The regular tetrahedron with corners at alternate corners of [−1, 1]³.
+ *
+ * # Safety
+ * `out` writable.
+ */
+enum mx_status mx_ball_tetrahedron(struct mx_ball **out);
+
+/**
+ * The cube [−1, 1]³ (the L∞ distance).
+ *
+ * # Safety
+ * `out` writable.
+ */
+enum mx_status mx_ball_cube(struct mx_ball **out);
+
+/**
+ * The octahedron with corners ±1 on the axes (the L1 distance).
+ *
+ * # Safety
+ * `out` writable.
+ */
+enum mx_status mx_ball_octahedron(struct mx_ball **out);
+
+/**
+ * The regular icosahedron with corners (0, ±1, ±φ) and their cyclic
+ * permutations.
+ *
+ * # Safety
+ * `out` writable.
+ */
+enum mx_status mx_ball_icosahedron(struct mx_ball **out);
+
+/**
+ * A geodesic sphere: the icosahedron subdivided into at least `facets`
+ * triangles (20·4^k, k ≤ 5), its corners on the unit sphere; a polytope
+ * approaching the Euclidean ball.
+ *
+ * # Safety
+ * `out` writable.
+ */
+enum mx_status mx_ball_geodesic(size_t facets, struct mx_ball **out);
+
+/**
+ * A new space ball: `ball` turned about the axis `rotation` (three
+ * doubles: its direction is the axis, its length the angle in radians,
+ * counter-clockwise looking down the axis).
+ *
+ * # Safety
+ * `ball` NULL or a live handle; `rotation` NULL or three readable
+ * doubles; `out` writable.
+ */
+enum mx_status mx_ball_rotated3(const struct mx_ball *ball,
+                                const double *rotation,
+                                struct mx_ball **out);
+
+/**
+ * The number of facets of a space ball (coplanar triangles of the hull
+ * are one facet).
+ *
+ * # Safety
+ * `ball` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_ball_facet_count(const struct mx_ball *ball, size_t *out);
+
+/**
+ * δ_B(from, to) in space: the least r with `to` in `from + r·B` (model
+ * units; not symmetric unless the ball is).
+ *
+ * # Safety
+ * `ball` NULL or a live handle; `from`, `to` NULL or three readable
+ * doubles; `out` NULL or writable.
+ */
+enum mx_status mx_ball_distance3(const struct mx_ball *ball,
+                                 const double *from,
+                                 const double *to,
+                                 double *out);
 
 /**
  * Computes the medial axis of `shape` under the unit ball `ball` (thesis

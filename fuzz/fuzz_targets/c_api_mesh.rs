@@ -44,7 +44,7 @@ fuzz_target!(|input: (u8, f64, Vec<[f64; 3]>, Vec<[u8; 3]>, &[u8])| {
     let mut o = unsafe { std::mem::zeroed::<mx_mesh_options>() };
     unsafe { mx_mesh_options_init(&mut o, std::mem::size_of::<mx_mesh_options>()) };
     o.weld_tolerance = if choice & 0x80 != 0 { tolerance } else { 0.0 };
-    o.threads = 1;
+    o.threads = 0; // a pool per call would leave its threads' TLS to the leak checker
     let mut m = sentinel;
     let st = unsafe { mx_mesh3d_from_arrays(xyz.as_ptr(), xyz.len(), abc.as_ptr(), abc.len(), &o, &mut m) };
     assert_ne!(st, mx_status::MX_ERR_PANIC);

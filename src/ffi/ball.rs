@@ -1,19 +1,59 @@
-//! `mx_ball`: the unit ball that defines a distance (thesis chapter 3).
-//! Plane balls (convex polygons) today; the same handle will hold space
-//! balls (convex polytopes), told apart by `mx_ball_dimension`.
+//! `mx_ball`: the unit ball that defines a distance (thesis chapter 3):
+//! plane balls (convex polygons, this file) and space balls (convex
+//! polytopes, `ball3.rs`) in one handle, told apart by `mx_ball_dimension`.
 
 use super::boundary::{c_str, fill_items, slice};
 use super::handles::{arg, create, free, query, Handle};
 use super::last_error::FfiError;
 use super::status::mx_status;
 use crate::kernel::Point;
-use crate::shape::Ball2;
+use crate::shape::{Ball2, Ball3};
 use std::ffi::c_char;
 
-/// A unit ball: a convex polygon holding the origin strictly inside,
-/// counter-clockwise. Immutable; may be shared between threads.
+/// A unit ball: a convex polygon (plane) or polytope (space) holding the
+/// origin strictly inside. Immutable; may be shared between threads.
 pub struct mx_ball {
-    pub(crate) inner: Ball2,
+    pub(crate) inner: BallKind,
+}
+
+/// The ball of one dimension or the other.
+pub(crate) enum BallKind {
+    Plane(Ball2),
+    Space(Ball3),
+}
+
+impl mx_ball {
+    pub(crate) fn plane(b: Ball2) -> mx_ball {
+        mx_ball { inner: BallKind::Plane(b) }
+    }
+
+    pub(crate) fn space(b: Ball3) -> mx_ball {
+        mx_ball { inner: BallKind::Space(b) }
+    }
+
+    /// The plane ball, or the error a space ball gets where a plane
+    /// ball is needed.
+    pub(crate) fn as_plane(&self) -> Result<&Ball2, FfiError> {
+        match &self.inner {
+            BallKind::Plane(b) => Ok(b),
+            BallKind::Space(_) => Err(FfiError::new(
+                mx_status::MX_ERR_INVALID_ARGUMENT,
+                "ball: a 3D ball (polytope) where a plane ball (polygon) is needed",
+            )),
+        }
+    }
+
+    /// The space ball, or the error a plane ball gets where a space ball
+    /// is needed.
+    pub(crate) fn as_space(&self) -> Result<&Ball3, FfiError> {
+        match &self.inner {
+            BallKind::Space(b) => Ok(b),
+            BallKind::Plane(_) => Err(FfiError::new(
+                mx_status::MX_ERR_INVALID_ARGUMENT,
+                "ball: a plane ball (polygon) where a 3D ball (polytope) is needed",
+            )),
+        }
+    }
 }
 
 impl Handle for mx_ball {
@@ -37,7 +77,7 @@ pub unsafe extern "C" fn mx_ball_from_vertices2(xy: *const f64, count: usize, ou
         create(out, || {
             let xy = slice(xy, count.saturating_mul(2), "xy")?;
             let vertices: Vec<Point> = xy.chunks_exact(2).map(|c| Point::new(c[0], c[1])).collect();
-            Ok(mx_ball { inner: Ball2::new(&vertices)? })
+            Ok(mx_ball::plane(Ball2::new(&vertices)?))
         })
     }
 }
@@ -57,7 +97,7 @@ pub unsafe extern "C" fn mx_ball_parse(text: *const c_char, out: *mut *mut mx_ba
     unsafe {
         create(out, || {
             let text = c_str(text, "text")?;
-            Ok(mx_ball { inner: Ball2::parse(text)? })
+            Ok(mx_ball::plane(Ball2::parse(text)?))
         })
     }
 }
@@ -71,7 +111,7 @@ pub unsafe extern "C" fn mx_ball_parse(text: *const c_char, out: *mut *mut mx_ba
 #[no_mangle]
 pub unsafe extern "C" fn mx_ball_regular(k: usize, rotation: f64, out: *mut *mut mx_ball) -> mx_status {
     // SAFETY: caller contract.
-    unsafe { create(out, || Ok(mx_ball { inner: Ball2::regular(k, rotation)? })) }
+    unsafe { create(out, || Ok(mx_ball::plane(Ball2::regular(k, rotation)?))) }
 }
 
 /// The square [−1, 1]²: the L∞ distance.
@@ -81,7 +121,7 @@ pub unsafe extern "C" fn mx_ball_regular(k: usize, rotation: f64, out: *mut *mut
 #[no_mangle]
 pub unsafe extern "C" fn mx_ball_square(out: *mut *mut mx_ball) -> mx_status {
     // SAFETY: caller contract.
-    unsafe { create(out, || Ok(mx_ball { inner: Ball2::square() })) }
+    unsafe { create(out, || Ok(mx_ball::plane(Ball2::square()))) }
 }
 
 /// The diamond |x| + |y| ≤ 1: the L1 distance.
@@ -91,7 +131,7 @@ pub unsafe extern "C" fn mx_ball_square(out: *mut *mut mx_ball) -> mx_status {
 #[no_mangle]
 pub unsafe extern "C" fn mx_ball_diamond(out: *mut *mut mx_ball) -> mx_status {
     // SAFETY: caller contract.
-    unsafe { create(out, || Ok(mx_ball { inner: Ball2::diamond() })) }
+    unsafe { create(out, || Ok(mx_ball::plane(Ball2::diamond()))) }
 }
 
 /// The equilateral triangle of circumradius 1, a vertex straight up: the
@@ -102,7 +142,7 @@ pub unsafe extern "C" fn mx_ball_diamond(out: *mut *mut mx_ball) -> mx_status {
 #[no_mangle]
 pub unsafe extern "C" fn mx_ball_triangle(out: *mut *mut mx_ball) -> mx_status {
     // SAFETY: caller contract.
-    unsafe { create(out, || Ok(mx_ball { inner: Ball2::triangle() })) }
+    unsafe { create(out, || Ok(mx_ball::plane(Ball2::triangle()))) }
 }
 
 /// A new ball, the mirror image −B of `ball`: distances under it run the
@@ -113,7 +153,14 @@ pub unsafe extern "C" fn mx_ball_triangle(out: *mut *mut mx_ball) -> mx_status {
 #[no_mangle]
 pub unsafe extern "C" fn mx_ball_mirrored(ball: *const mx_ball, out: *mut *mut mx_ball) -> mx_status {
     // SAFETY: caller contract.
-    unsafe { create(out, || Ok(mx_ball { inner: arg(ball)?.inner.mirrored() })) }
+    unsafe {
+        create(out, || {
+            Ok(match &arg(ball)?.inner {
+                BallKind::Plane(b) => mx_ball::plane(b.mirrored()),
+                BallKind::Space(b) => mx_ball::space(b.mirrored()),
+            })
+        })
+    }
 }
 
 /// Frees a ball; NULL is fine.
@@ -126,14 +173,21 @@ pub unsafe extern "C" fn mx_ball_free(ball: *mut mx_ball) {
     unsafe { free(ball) }
 }
 
-/// The ball's dimension: 2 (a polygon; 3 will be a polytope).
+/// The ball's dimension: 2 (a polygon) or 3 (a polytope).
 ///
 /// # Safety
 /// `ball` NULL or a live handle; `out` NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn mx_ball_dimension(ball: *const mx_ball, out: *mut usize) -> mx_status {
     // SAFETY: forwarded contract.
-    unsafe { query(ball, out, |_| Ok(2)) }
+    unsafe {
+        query(ball, out, |b| {
+            Ok(match b.inner {
+                BallKind::Plane(_) => 2,
+                BallKind::Space(_) => 3,
+            })
+        })
+    }
 }
 
 /// The number of vertices.
@@ -143,17 +197,25 @@ pub unsafe extern "C" fn mx_ball_dimension(ball: *const mx_ball, out: *mut usize
 #[no_mangle]
 pub unsafe extern "C" fn mx_ball_vertex_count(ball: *const mx_ball, out: *mut usize) -> mx_status {
     // SAFETY: forwarded contract.
-    unsafe { query(ball, out, |b| Ok(b.inner.len())) }
+    unsafe {
+        query(ball, out, |b| {
+            Ok(match &b.inner {
+                BallKind::Plane(b) => b.len(),
+                BallKind::Space(b) => b.vertices().len(),
+            })
+        })
+    }
 }
 
-/// Copies the vertices, counter-clockwise, as x0, y0, x1, y1, … into `xy`
-/// of `capacity` vertices and writes their number to `*count`. Size query:
-/// `capacity` 0 (`xy` may be NULL) writes only `*count`; a shorter buffer
-/// gives `MX_ERR_BUFFER_TOO_SMALL` with nothing written.
+/// Copies the vertices into `xy` of `capacity` vertices and writes their
+/// number to `*count`: a plane ball's counter-clockwise as x0, y0, x1, y1,
+/// …; a space ball's as x0, y0, z0, … (`mx_ball_dimension` numbers each).
+/// Size query: `capacity` 0 (`xy` may be NULL) writes only `*count`; a
+/// shorter buffer gives `MX_ERR_BUFFER_TOO_SMALL` with nothing written.
 ///
 /// # Safety
-/// `ball` NULL or a live handle; `xy` NULL or `2 * capacity` writable
-/// doubles; `count` NULL or writable.
+/// `ball` NULL or a live handle; `xy` NULL or `dimension * capacity`
+/// writable doubles; `count` NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn mx_ball_vertices(
     ball: *const mx_ball,
@@ -164,11 +226,13 @@ pub unsafe extern "C" fn mx_ball_vertices(
     super::boundary::guard(|| {
         // SAFETY: caller contract.
         let b = unsafe { arg(ball)? };
-        let n = b.inner.len();
-        let coords = b.inner.vertices().iter().flat_map(|v| [v.x, v.y]);
+        let (n, dim, coords): (usize, usize, Vec<f64>) = match &b.inner {
+            BallKind::Plane(b) => (b.len(), 2, b.vertices().iter().flat_map(|v| [v.x, v.y]).collect()),
+            BallKind::Space(b) => (b.vertices().len(), 3, b.vertices().iter().flat_map(|v| v.to_array()).collect()),
+        };
         // SAFETY: caller contract.
         unsafe {
-            fill_items((xy, "xy"), (capacity, count), (n, 2), coords, || {
+            fill_items((xy, "xy"), (capacity, count), (n, dim), coords, || {
                 format!("the ball has {n} vertices, the buffer room for {capacity}")
             })
         }
@@ -195,7 +259,7 @@ pub unsafe extern "C" fn mx_ball_distance2(
             if from.iter().chain(to).any(|v| !v.is_finite()) {
                 return Err(FfiError::new(mx_status::MX_ERR_NON_FINITE, "a point has a NaN or infinite coordinate"));
             }
-            Ok(b.inner.distance(Point::new(from[0], from[1]), Point::new(to[0], to[1])))
+            Ok(b.as_plane()?.distance(Point::new(from[0], from[1]), Point::new(to[0], to[1])))
         })
     }
 }
@@ -208,5 +272,12 @@ pub unsafe extern "C" fn mx_ball_distance2(
 #[no_mangle]
 pub unsafe extern "C" fn mx_ball_is_symmetric(ball: *const mx_ball, out: *mut i32) -> mx_status {
     // SAFETY: forwarded contract.
-    unsafe { query(ball, out, |b| Ok(i32::from(b.inner.is_symmetric()))) }
+    unsafe {
+        query(ball, out, |b| {
+            Ok(i32::from(match &b.inner {
+                BallKind::Plane(b) => b.is_symmetric(),
+                BallKind::Space(b) => b.is_symmetric(),
+            }))
+        })
+    }
 }

@@ -120,7 +120,7 @@ pub unsafe extern "C" fn mx_axis_compute_with_ball(
                 return Ok(mx_axis { shape: s.inner.clone(), axis, ball: None });
             }
             // SAFETY: non-NULL, a live handle per the contract.
-            let b = &arg(ball)?.inner;
+            let b = arg(ball)?.as_plane()?;
             let axis = run_with_progress(export, "mx_axis_options", o.threads, o.progress, o.user, || {
                 medial_axis_with_ball(&s.inner, b).map_err(ball_axis_error)
             })?;
@@ -281,7 +281,7 @@ pub unsafe extern "C" fn mx_shape2d_outer_offset_with_ball(
                 let opts = OffsetOptions { outer_reach: distance, ..OffsetOptions::default() };
                 Offsets::new(&s.inner, &opts).and_then(|o| o.layer(-distance)).map_err(offset_error)
             } else {
-                let b = &arg(ball)?.inner;
+                let b = arg(ball)?.as_plane()?;
                 Ok(plain_layer(&outer_offset(&s.inner, b, distance).map_err(ball_axis_error)?))
             }
         })

@@ -104,7 +104,7 @@ pub unsafe extern "C" fn mx_voronoi_compute_with_ball(
         create(out, || {
             let (s, o) = (deref(sites, "sites")?, mx_voronoi_options::read_or_default(options)?);
             let shape = shape_options(&o)?;
-            let b = &arg(ball)?.inner;
+            let b = arg(ball)?.as_plane()?;
             let (sites, boundary) = read_sites(s)?;
             let opts = BallVoronoiOptions { shape, boundary };
             let export = "mx_voronoi_compute_with_ball";

@@ -14,6 +14,7 @@
 
 mod axis;
 mod ball;
+mod ball3;
 mod ball_axis;
 mod ball_voronoi;
 mod boundary;
@@ -33,6 +34,7 @@ mod voronoi;
 
 pub use axis::*;
 pub use ball::*;
+pub use ball3::*;
 pub use ball_axis::*;
 pub use ball_voronoi::mx_voronoi_compute_with_ball;
 pub use drawing::*;

@@ -59,6 +59,35 @@ pub enum BallError {
         /// What was wrong.
         what: String,
     },
+    /// A space ball ([`Ball3`](super::Ball3)) needs at least four points.
+    TooFewPoints {
+        /// How many were given.
+        count: usize,
+    },
+    /// A space ball's point has a NaN or infinite coordinate.
+    NonFinitePoint {
+        /// The point, as an index into the points given.
+        point: usize,
+    },
+    /// All the points of a space ball lie on one plane (or one line, or
+    /// are one point): their hull has no volume.
+    Flat,
+    /// The origin lies on facet `facet` of a space ball's hull, or outside
+    /// the hull beyond that facet: it must be strictly inside.
+    OriginNotInsideHull {
+        /// The facet, as an index into the hull's facets.
+        facet: usize,
+        /// True when the origin lies on the facet's plane, false when
+        /// beyond it.
+        on_facet: bool,
+    },
+    /// The origin lies within 1e-12 of a space ball's size from the plane
+    /// of this facet: `f64` distances divided by that height would carry
+    /// no useful digits.
+    ThinFacet {
+        /// The facet.
+        facet: usize,
+    },
 }
 
 impl BallError {
@@ -66,12 +95,17 @@ impl BallError {
     pub fn vertex(&self) -> Option<usize> {
         match *self {
             BallError::NonFinite { vertex }
+            | BallError::NonFinitePoint { point: vertex }
             | BallError::Repeated { vertex }
             | BallError::Collinear { vertex }
             | BallError::NotConvex { vertex }
             | BallError::OriginNotInside { vertex, .. }
             | BallError::IllConditioned { vertex } => Some(vertex),
             BallError::TooFewVertices { .. } | BallError::InvalidArgument { .. } | BallError::Parse(_) => None,
+            BallError::TooFewPoints { .. }
+            | BallError::Flat
+            | BallError::OriginNotInsideHull { .. }
+            | BallError::ThinFacet { .. } => None,
         }
     }
 }
@@ -102,6 +136,23 @@ impl fmt::Display for BallError {
             ),
             BallError::InvalidArgument { what } => write!(f, "invalid ball: {what}"),
             BallError::Parse(e) => write!(f, "{e}"),
+            BallError::TooFewPoints { count } => {
+                write!(f, "a space ball needs at least 4 points, {count} given")
+            }
+            BallError::NonFinitePoint { point } => {
+                write!(f, "ball point {point} has a NaN or infinite coordinate")
+            }
+            BallError::Flat => write!(f, "the ball's points all lie on one plane: their hull has no volume"),
+            BallError::OriginNotInsideHull { facet, on_facet: true } => {
+                write!(f, "the origin lies on facet {facet} of the ball; it must be strictly inside")
+            }
+            BallError::OriginNotInsideHull { facet, on_facet: false } => {
+                write!(f, "the origin lies outside the ball, beyond its facet {facet}; it must be strictly inside")
+            }
+            BallError::ThinFacet { facet } => write!(
+                f,
+                "the ball is too thin at facet {facet}: the origin lies within 1e-12 of the ball's size from its plane"
+            ),
         }
     }
 }

@@ -28,12 +28,18 @@
 //! * `gauge.rs`: distances under a ball (to points and segments) and which
 //!   feature of a ball touches a line or a point (the contact classes of
 //!   3.1.2).
+//! * `ball3.rs`, `hull3.rs`: the space ball [`Ball3`] (a convex polytope,
+//!   the exact hull of the points given; issue 19), its presets (cube,
+//!   octahedron, icosahedron, geodesic spheres…) and its gauge.
 
 mod ball2;
+mod ball3;
 mod error;
 mod gauge;
+mod hull3;
 mod spec;
 
 pub use ball2::Ball2;
+pub use ball3::{Ball3, BallEdge3, BallFacet3, Feature3};
 pub use error::BallError;
 pub use gauge::Feature;
