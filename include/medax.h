@@ -295,6 +295,42 @@ typedef enum mx_warning_kind {
 } mx_warning_kind;
 
 /**
+ * Where a point lies relative to a solid.
+ */
+typedef enum mx_point_side {
+  /**
+   * Outside the material (a cavity is outside).
+   */
+  MX_OUTSIDE = 0,
+  /**
+   * Inside the material.
+   */
+  MX_INSIDE = 1,
+  /**
+   * Exactly on the surface.
+   */
+  MX_ON_SURFACE = 2,
+} mx_point_side;
+
+/**
+ * The contact type of a ball touching a surface (thesis 3.1.2).
+ */
+typedef enum mx_contact3_kind {
+  /**
+   * A vertex of the ball on a triangle's interior (VF).
+   */
+  MX_CONTACT3_VF = 0,
+  /**
+   * An edge of the ball on an edge of a triangle (EE).
+   */
+  MX_CONTACT3_EE = 1,
+  /**
+   * A corner of a triangle on the ball's boundary (FV, EV or VV).
+   */
+  MX_CONTACT3_FV = 2,
+} mx_contact3_kind;
+
+/**
  * `mx_uncut_region.kind`.
  */
 typedef enum mx_uncut_kind {
@@ -1054,6 +1090,49 @@ typedef struct mx_mesh3d_component {
    */
   int32_t reversed;
 } mx_mesh3d_component;
+
+/**
+ * Everything `mx_mesh3d_query_points` tells about one point.
+ */
+typedef struct mx_point_query3 {
+  /**
+   * Inside, outside or on the surface (exact).
+   */
+  enum mx_point_side side;
+  /**
+   * Euclidean distance to the surface.
+   */
+  double distance;
+  /**
+   * The closest surface point.
+   */
+  double closest[3];
+  /**
+   * The triangle it lies on.
+   */
+  size_t closest_triangle;
+  /**
+   * 1 when the ball fields hold an answer (a ball was given and the
+   * point is inside), else 0.
+   */
+  int32_t has_ball;
+  /**
+   * The largest r with `point + r·B` inside the solid.
+   */
+  double ball_radius;
+  /**
+   * Where that ball touches the surface.
+   */
+  double contact[3];
+  /**
+   * The triangle it touches.
+   */
+  size_t contact_triangle;
+  /**
+   * The contact's type.
+   */
+  enum mx_contact3_kind contact_kind;
+} mx_point_query3;
 
 /**
  * Options for `mx_offsets_compute` and `mx_offsets_from_axis`.
@@ -2254,6 +2333,50 @@ enum mx_status mx_mesh3d_triangles(const struct mx_mesh3d *mesh,
  * `mesh` NULL or a live handle; `path` NULL or NUL-terminated UTF-8.
  */
 enum mx_status mx_mesh3d_write(const struct mx_mesh3d *mesh, const char *path, uint32_t format);
+
+/**
+ * Where `point` (three doubles) lies: inside, outside or on the surface,
+ * decided exactly.
+ *
+ * # Safety
+ * `mesh` NULL or a live handle; `point` NULL or three readable doubles;
+ * `out` NULL or writable.
+ */
+enum mx_status mx_mesh3d_side(const struct mx_mesh3d *mesh,
+                              const double *point,
+                              enum mx_point_side *out);
+
+/**
+ * One point's answers (`mx_point_query3`): side, closest point and, with
+ * `ball` (a space ball; NULL for none), the largest ball at the point.
+ *
+ * # Safety
+ * `mesh` NULL or a live handle; `ball` NULL or a live handle; `point`
+ * NULL or three readable doubles; `out` NULL or writable.
+ */
+enum mx_status mx_mesh3d_query_point(const struct mx_mesh3d *mesh,
+                                     const struct mx_ball *ball,
+                                     const double *point,
+                                     struct mx_point_query3 *out);
+
+/**
+ * The answers for `xyz_len / 3` points at once (in parallel), into
+ * `answers` of `capacity` entries, their number in `*count` (capacity 0: a size
+ * query; a shorter buffer: `MX_ERR_BUFFER_TOO_SMALL`, nothing written).
+ * A NaN point fails the call naming it.
+ *
+ * # Safety
+ * `mesh` NULL or a live handle; `ball` NULL or a live handle; `xyz` NULL
+ * (only when `xyz_len` is 0) or `xyz_len` readable doubles; `answers`
+ * NULL or `capacity` writable entries; `count` NULL or writable.
+ */
+enum mx_status mx_mesh3d_query_points(const struct mx_mesh3d *mesh,
+                                      const struct mx_ball *ball,
+                                      const double *xyz,
+                                      size_t xyz_len,
+                                      struct mx_point_query3 *answers,
+                                      size_t capacity,
+                                      size_t *count);
 
 /**
  * Fills the caller's `mx_offset_options` with the defaults: `size` is its

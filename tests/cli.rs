@@ -563,3 +563,39 @@ fn info_reports_solids_and_their_errors() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("open there") && err.contains("line"), "{err}");
 }
+
+/// `medax query3d`: sides, distances and the largest octahedron ball in a
+/// box, as JSON; a bad ball name exits 2.
+#[test]
+fn query3d_answers_points_as_json() {
+    use medax::shape::mesh_samples::cuboid;
+    let dir = scratch("query3d");
+    let (v, t) = cuboid([0.0; 3], [4.0, 4.0, 2.0]);
+    let off = dir.join("box.off");
+    std::fs::write(&off, medax::io::mesh::write_off(&v, &t)).unwrap();
+    let pts = dir.join("points.json");
+    std::fs::write(&pts, r#"{"points": [[1, 1, 1], [5, 1, 1], [2, 2, 0.5]]}"#).unwrap();
+    let out_json = dir.join("out.json");
+    let out = medax()
+        .args(["query3d"])
+        .arg(&off)
+        .args(["--ball", "octa", "--points"])
+        .arg(&pts)
+        .arg("--json")
+        .arg(&out_json)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&out_json).unwrap()).unwrap();
+    let r = doc["results"].as_array().unwrap();
+    assert_eq!(r.len(), 3);
+    assert_eq!(
+        (r[0]["inside"].as_bool(), r[0]["distance"].as_f64(), r[0]["ball_radius"].as_f64()),
+        (Some(true), Some(1.0), Some(1.0))
+    );
+    assert_eq!((r[1]["inside"].as_bool(), r[1]["distance"].as_f64()), (Some(false), Some(1.0)));
+    assert!(r[1].get("ball_radius").is_none());
+    assert_eq!(r[2]["ball_radius"].as_f64(), Some(0.5));
+    let bad = medax().args(["query3d"]).arg(&off).args(["--ball", "dodeca", "--points"]).arg(&pts).output().unwrap();
+    assert_eq!(bad.status.code(), Some(2));
+}

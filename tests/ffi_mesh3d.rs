@@ -146,3 +146,58 @@ fn bad_solids_name_the_face_vertex_and_line() {
     let mut i = unsafe { std::mem::zeroed::<mx_mesh3d_info>() };
     assert_eq!(unsafe { mx_mesh3d_get_info(null(), &mut i) }, mx_status::MX_ERR_NULL_ARGUMENT);
 }
+
+/// Point queries through C on a box with a cavity: sides (exact, on the
+/// surface included), closest points against the box's own geometry, the
+/// largest cube ball at inside points (the L∞ distance to the nearest
+/// face), batched equal to one by one, and errors.
+#[test]
+fn point_queries_side_closest_and_ball() {
+    let soup = union(&[cuboid([0.0; 3], [10.0; 3]), cuboid([4.0; 3], [6.0; 3])]);
+    let (_, m) = from_arrays(&soup.0, &soup.1);
+    let mut cube = null_mut();
+    assert_eq!(unsafe { mx_ball_cube(&mut cube) }, mx_status::MX_OK);
+    let pts: [[f64; 3]; 4] = [[1.0, 2.0, 3.0], [5.0, 5.0, 5.0], [12.0, 5.0, 5.0], [0.0, 5.0, 5.0]];
+    let sides =
+        [mx_point_side::MX_INSIDE, mx_point_side::MX_OUTSIDE, mx_point_side::MX_OUTSIDE, mx_point_side::MX_ON_SURFACE];
+    for (p, want) in pts.iter().zip(sides) {
+        let mut s = mx_point_side::MX_ON_SURFACE;
+        assert_eq!(unsafe { mx_mesh3d_side(m, p.as_ptr(), &mut s) }, mx_status::MX_OK);
+        assert_eq!(s, want, "{p:?}");
+    }
+    let mut one = unsafe { std::mem::zeroed::<mx_point_query3>() };
+    assert_eq!(unsafe { mx_mesh3d_query_point(m, cube, pts[0].as_ptr(), &mut one) }, mx_status::MX_OK);
+    assert_eq!((one.distance, one.closest), (1.0, [0.0, 2.0, 3.0]));
+    assert_eq!((one.has_ball, one.ball_radius), (1, 1.0));
+    // Inside the material near the cavity: the cavity's face is nearest.
+    let near_cavity = [3.5, 5.0, 5.0];
+    assert_eq!(unsafe { mx_mesh3d_query_point(m, cube, near_cavity.as_ptr(), &mut one) }, mx_status::MX_OK);
+    assert_eq!((one.distance, one.ball_radius, one.contact[0]), (0.5, 0.5, 4.0));
+    // Batched: size query, short buffer, the same answers.
+    let xyz: Vec<f64> = pts.iter().flatten().copied().collect();
+    let mut n = 0;
+    let st = unsafe { mx_mesh3d_query_points(m, cube, xyz.as_ptr(), xyz.len(), null_mut(), 0, &mut n) };
+    assert_eq!((st, n), (mx_status::MX_OK, 4));
+    let mut all = vec![unsafe { std::mem::zeroed::<mx_point_query3>() }; 4];
+    let st = unsafe { mx_mesh3d_query_points(m, cube, xyz.as_ptr(), xyz.len(), all.as_mut_ptr(), 3, &mut n) };
+    assert_eq!(st, mx_status::MX_ERR_BUFFER_TOO_SMALL);
+    let st = unsafe { mx_mesh3d_query_points(m, cube, xyz.as_ptr(), xyz.len(), all.as_mut_ptr(), 4, &mut n) };
+    assert_eq!(st, mx_status::MX_OK);
+    for (i, p) in pts.iter().enumerate() {
+        assert_eq!(unsafe { mx_mesh3d_query_point(m, cube, p.as_ptr(), &mut one) }, mx_status::MX_OK);
+        assert_eq!(all[i], one, "{i}");
+    }
+    assert_eq!(all[1].has_ball, 0, "no ball at an outside point");
+    // A plane ball is refused; NaN names the point.
+    let mut square = null_mut();
+    assert_eq!(unsafe { mx_ball_square(&mut square) }, mx_status::MX_OK);
+    let st = unsafe { mx_mesh3d_query_point(m, square, pts[0].as_ptr(), &mut one) };
+    assert_eq!(st, mx_status::MX_ERR_INVALID_ARGUMENT);
+    let bad = [0.0, 0.0, 0.0, 1.0, f64::NAN, 1.0];
+    let st = unsafe { mx_mesh3d_query_points(m, null(), bad.as_ptr(), 6, all.as_mut_ptr(), 4, &mut n) };
+    assert_eq!(st, mx_status::MX_ERR_NON_FINITE);
+    assert!(last_message().contains("point 1"), "{}", last_message());
+    unsafe { mx_ball_free(cube) };
+    unsafe { mx_ball_free(square) };
+    unsafe { mx_mesh3d_free(m) };
+}

@@ -22,6 +22,7 @@ mod demo;
 mod info;
 mod mesh;
 mod offset;
+mod query3d;
 mod voronoi;
 
 use clap::{Parser, Subcommand};
@@ -224,6 +225,21 @@ enum Command {
         /// The output file: .obj, .off or .ply (binary).
         output: PathBuf,
     },
+    /// For each point of a JSON file (`{"points": [[x, y, z], ...]}`): inside a solid or not (exact), the
+    /// Euclidean distance and closest surface point, and with `--ball` the largest ball at inside points.
+    Query3d {
+        /// The solid: .obj, .off, .stl or .ply.
+        mesh: PathBuf,
+        /// A space ball: tetra, cube, octa, icosa, geodesic:N, or a mesh file (the hull of its vertices).
+        #[arg(long)]
+        ball: Option<String>,
+        /// The points file.
+        #[arg(long)]
+        points: PathBuf,
+        /// Write `{"results": [...]}` here (default: print it).
+        #[arg(long)]
+        json: Option<PathBuf>,
+    },
     /// Validate a shape, or the shapes of a drawing, and report loops, elements, joints, area, extent and what was ignored;
     /// or validate a solid (.obj, .off, .stl, .ply) and report its components, volume, area and genus.
     Info {
@@ -300,6 +316,7 @@ pub fn run() -> ExitCode {
     let result = match cli.command.unwrap_or(Command::Demo { output: "medax-demo.svg".into() }) {
         Command::Info { shape, json } => info::run(&shape, json.as_deref()),
         Command::Convert { input, output } => mesh::run_convert(&input, &output),
+        Command::Query3d { mesh, ball, points, json } => query3d::run(&mesh, ball.as_deref(), &points, json.as_deref()),
         Command::Axis(args) => axis::run(&args),
         Command::Voronoi(args) => voronoi::run(&args),
         Command::Offset(args) => offset::run(&args),

@@ -21,6 +21,8 @@
 
 use crate::kernel::{BBox3, Point3};
 
+mod ball_radius;
+pub use ball_radius::{BallContact, ContactKind3};
 mod closest;
 mod inside;
 mod self_cross;

@@ -368,6 +368,13 @@ impl Mesh3d {
         &self.tree
     }
 
+    /// The largest ball `c + r·B` inside the solid at `c` (thesis 3.3.2.2),
+    /// with where it touches; for `c` outside the material, the largest
+    /// such ball that holds no point of the surface.
+    pub fn ball_radius(&self, c: Point3, ball: &crate::shape::Ball3) -> super::aabb::BallContact {
+        self.tree.ball_radius(c, ball).expect("a valid solid has triangles")
+    }
+
     /// Whether `p` lies in the material (exact: parity of exact crossings;
     /// inside a cavity is outside), `None` when it lies on the surface.
     pub fn inside(&self, p: Point3) -> Option<bool> {

@@ -1,0 +1,100 @@
+//! `medax query3d`: for each point of a JSON file, which side of a solid it
+//! lies on, the closest surface point and, under a space ball, the largest
+//! ball at it, as JSON.
+
+use medax::io::mesh::read_mesh;
+use medax::kernel::Point3;
+use medax::shape::{Ball3, ContactKind3, Mesh3d, MeshOptions};
+use rayon::prelude::*;
+use serde_json::{json, Value};
+use std::path::Path;
+use std::process::ExitCode;
+
+/// The space ball a name or file gives: `tetrahedron` (`tetra`), `cube`,
+/// `octahedron` (`octa`), `icosahedron` (`icosa`), `geodesic:N`, or a mesh
+/// file whose vertices' hull is the ball.
+pub fn parse_ball(spec: &str) -> Result<Ball3, String> {
+    match spec {
+        "tetra" | "tetrahedron" => return Ok(Ball3::tetrahedron()),
+        "cube" => return Ok(Ball3::cube()),
+        "octa" | "octahedron" => return Ok(Ball3::octahedron()),
+        "icosa" | "icosahedron" => return Ok(Ball3::icosahedron()),
+        _ => {}
+    }
+    if let Some(n) = spec.strip_prefix("geodesic:") {
+        let n: usize = n.parse().map_err(|_| format!("--ball {spec}: geodesic:N wants a facet count"))?;
+        return Ball3::geodesic(n).map_err(|e| format!("--ball {spec}: {e}"));
+    }
+    let bytes = std::fs::read(spec).map_err(|e| {
+        format!("--ball {spec}: not tetra, cube, octa, icosa or geodesic:N, and not a readable mesh file ({e})")
+    })?;
+    let raw = read_mesh(&bytes, medax::io::mesh::MeshFormat::from_path(Path::new(spec)))
+        .map_err(|e| format!("--ball {spec}: {e}"))?;
+    let points: Vec<Point3> = raw.positions.iter().map(|&p| Point3::from_array(p)).collect();
+    Ball3::from_points(&points).map_err(|e| format!("--ball {spec}: {e}"))
+}
+
+fn read_points(path: &Path) -> Result<Vec<Point3>, String> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    let v: Value = serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
+    let list =
+        v["points"].as_array().ok_or_else(|| format!("{}: wants {{\"points\": [[x, y, z], ...]}}", path.display()))?;
+    list.iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let c: Vec<f64> = p.as_array().map(|a| a.iter().filter_map(Value::as_f64).collect()).unwrap_or_default();
+            match c[..] {
+                [x, y, z] if c.iter().all(|v| v.is_finite()) => Ok(Point3::new(x, y, z)),
+                _ => Err(format!("{}: point {i} is not three finite numbers", path.display())),
+            }
+        })
+        .collect()
+}
+
+fn kind_name(k: ContactKind3) -> &'static str {
+    match k {
+        ContactKind3::VertexFace => "VF",
+        ContactKind3::EdgeEdge => "EE",
+        ContactKind3::FaceVertex => "FV",
+    }
+}
+
+pub fn run(mesh_path: &Path, ball: Option<&str>, points: &Path, json_out: Option<&Path>) -> Result<(), ExitCode> {
+    let fail = |msg: String, code: u8| {
+        eprintln!("medax: {msg}");
+        ExitCode::from(code)
+    };
+    let ball = ball.map(parse_ball).transpose().map_err(|m| fail(m, 2))?;
+    let mesh = Mesh3d::from_path(mesh_path, &MeshOptions::default())
+        .map_err(|e| fail(format!("{}: {e}", mesh_path.display()), 1))?;
+    let points = read_points(points).map_err(|m| fail(m, 2))?;
+    let results: Vec<Value> = points
+        .par_iter()
+        .map(|&p| {
+            let side = mesh.inside(p);
+            let c = mesh.tree().closest_point(p).expect("a valid solid has triangles");
+            let mut r = json!({
+                "inside": side == Some(true),
+                "on_surface": side.is_none(),
+                "distance": c.squared_distance.sqrt(),
+                "closest": c.point.to_array(),
+            });
+            if let (Some(b), Some(true)) = (&ball, side) {
+                let k = mesh.ball_radius(p, b);
+                r["ball_radius"] = json!(k.radius);
+                r["contact"] = json!({"point": k.point.to_array(), "triangle": k.triangle, "kind": kind_name(k.kind)});
+            }
+            r
+        })
+        .collect();
+    let inside = results.iter().filter(|r| r["inside"] == json!(true)).count();
+    let doc = json!({ "results": results });
+    match json_out {
+        Some(path) => {
+            super::write_file(path, &doc.to_string())?;
+            out!("{} points, {inside} inside; wrote {}", points.len(), path.display());
+        }
+        None => out!("{doc}"),
+    }
+    Ok(())
+}
