@@ -4,7 +4,7 @@
 //! stand on them, and a wrong sign there turns a valid solid into an error
 //! or lets a crossing through, so they are exact: an `f64` determinant with
 //! Shewchuk's error bound first, big integers behind it (as in
-//! [`super::exact_int`]: every finite `f64` is an integer in units of the
+//! `kernel::exact_int`: every finite `f64` is an integer in units of the
 //! smallest exponent among the inputs, and the determinant is homogeneous,
 //! so scaling leaves its sign alone).
 
