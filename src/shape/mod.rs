@@ -32,7 +32,7 @@ pub(crate) mod shape2d;
 pub(crate) mod validate;
 
 pub use crate::kernel::element::{Arc, Element, Segment};
-pub use ball::{Ball2, Ball3, BallEdge3, BallError, BallFacet3, Feature, Feature3};
+pub use ball::{Ball2, Ball3, BallEdge3, BallError, BallFacet3, Feature, Feature3, Reach, ReachHint, TriangleReach};
 pub use build::chain::chain_loops;
 pub use build::import::sniff;
 pub use build::profiles::{profiles, unit_name, Drawing2d, DrawingOptions, Ignored, IgnoredKind, Touching};

@@ -316,6 +316,12 @@ impl Ball3 {
         self.rows.iter().map(|a| a.dot(v)).fold(0.0, f64::max)
     }
 
+    /// The gauge's rows `normal / offset`, one per facet in facet order:
+    /// the gauge is the largest `row · v` (and at least 0).
+    pub fn gauge_rows(&self) -> &[Point3] {
+        &self.rows
+    }
+
     /// δ_B(p, q) = min{r ≥ 0 : q ∈ p + r·B}, the gauge of q − p.
     pub fn distance(&self, p: Point3, q: Point3) -> f64 {
         self.gauge(q - p)

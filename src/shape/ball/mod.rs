@@ -31,15 +31,20 @@
 //! * `ball3.rs`, `hull3.rs`: the space ball [`Ball3`] (a convex polytope,
 //!   the exact hull of the points given; issue 19), its presets (cube,
 //!   octahedron, icosahedron, geodesic spheres…) and its gauge.
+//! * `reach3.rs`: where a space ball grown from a centre first touches a
+//!   triangle (the least gauge over it, by a walk through the ball's facet
+//!   cones) and lower bounds over boxes for searches that prune.
 
 mod ball2;
 mod ball3;
 mod error;
 mod gauge;
 mod hull3;
+mod reach3;
 mod spec;
 
 pub use ball2::Ball2;
 pub use ball3::{Ball3, BallEdge3, BallFacet3, Feature3};
 pub use error::BallError;
 pub use gauge::Feature;
+pub use reach3::{ContactKind3, Reach, ReachHint, TriangleReach};

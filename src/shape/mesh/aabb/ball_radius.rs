@@ -3,39 +3,21 @@
 //! gauge `γ_B(q − c)` over the surface's points `q`, with the triangle and
 //! point where the grown ball first touches.
 //!
-//! On one triangle T the gauge is convex and piecewise linear, so its
-//! minimum is a linear program whose optimum sits at a vertex of the
-//! feasible set: three active constraints among T's three sides and B's
-//! facet planes. That leaves three kinds of candidates (the contact types
-//! of 3.1.2): a corner of T (FV and its degenerate EV, VV), a point of a
-//! side of T on the plane through `c` spanned by an edge of B (EE), and
-//! the point where the ray from `c` through a vertex of B meets T (VF).
-//! Every candidate is a point of T, so the gauge there bounds the minimum
-//! from above whatever rounding did to its position, and the least one is
-//! the minimum up to that rounding (f64: the exact decision of the contact
-//! class is the next piece).
-//!
-//! Pruning: `γ_B(x) ≥ |x| / R` with `R` the ball's circumradius, so a box
-//! farther than `best · R` from `c` cannot hold a closer point; the search
-//! starts from the gauge at the Euclidean closest point.
+//! The search descends the tree nearest box first, "nearest" measured by a
+//! lower bound of the gauge over the box ([`Reach`]: the ball's
+//! circumsphere, its bounding box and, for balls of few facets, each
+//! facet plane at the box corner it picks), and skips every box and
+//! triangle whose bound cannot beat the best radius so far. Measuring the
+//! boxes by the gauge itself rather than by Euclidean distance matters
+//! for a pointed ball: a tetrahedron reaches three times farther toward
+//! its vertices than toward its facets, and a Euclidean bound would open
+//! every triangle within that larger sphere. Each triangle that survives
+//! is measured by [`Reach::triangle`].
 
 use super::TriangleTree;
 use crate::kernel::Point3;
-use crate::shape::ball::Ball3;
-use std::cell::Cell;
-
-/// What kind of contact realises the distance (thesis 3.1.2), as found in
-/// `f64`: which candidate gave the least gauge.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum ContactKind3 {
-    /// A vertex of the ball on the triangle's interior (VF).
-    VertexFace,
-    /// An edge of the ball on an edge of the triangle (EE).
-    EdgeEdge,
-    /// A corner of the triangle on the ball's boundary (FV, or EV/VV when
-    /// it meets an edge or a vertex of the ball).
-    FaceVertex,
-}
+pub use crate::shape::ball::ContactKind3;
+use crate::shape::ball::{Ball3, Reach, ReachHint};
 
 /// The largest ball at a centre and where it touches.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -51,80 +33,62 @@ pub struct BallContact {
     pub kind: ContactKind3,
 }
 
-/// The least gauge over triangle `t` seen from `c`, with its point and kind.
-fn on_triangle(c: Point3, [a, b, d]: [Point3; 3], ball: &Ball3) -> (f64, Point3, ContactKind3) {
-    let mut best = (f64::INFINITY, a, ContactKind3::FaceVertex);
-    let mut offer = |q: Point3, kind: ContactKind3| {
-        let g = ball.gauge(q - c);
-        if g < best.0 {
-            best = (g, q, kind);
-        }
-    };
-    for p in [a, b, d] {
-        offer(p, ContactKind3::FaceVertex);
-    }
-    let v = ball.vertices();
-    for e in ball.edges() {
-        let m = v[e.vertices[0]].cross(v[e.vertices[1]]);
-        for (p, q) in [(a, b), (b, d), (d, a)] {
-            let den = m.dot(q - p);
-            if den != 0.0 {
-                let u = m.dot(c - p) / den;
-                if (0.0..=1.0).contains(&u) {
-                    offer(p + (q - p) * u, ContactKind3::EdgeEdge);
-                }
-            }
-        }
-    }
-    let n = (b - a).cross(d - a);
-    for &w in v {
-        let den = n.dot(w);
-        if den == 0.0 {
-            continue;
-        }
-        let t = n.dot(a - c) / den;
-        if t > 0.0 {
-            let q = c + w * t;
-            if inside_triangle(q, [a, b, d], n) {
-                offer(q, ContactKind3::VertexFace);
-            }
-        }
-    }
-    best
-}
-
-/// Whether `q` (near the plane of the triangle with normal `n`) lies in it:
-/// the three sub-triangles turn the same way as `n`.
-fn inside_triangle(q: Point3, [a, b, d]: [Point3; 3], n: Point3) -> bool {
-    (b - a).cross(q - a).dot(n) >= 0.0 && (d - b).cross(q - b).dot(n) >= 0.0 && (a - d).cross(q - d).dot(n) >= 0.0
-}
-
 impl TriangleTree {
     /// The largest ball `c + r·B` whose interior holds no point of the
     /// surface, and where it touches (`None` for an empty tree). For `c`
     /// inside a solid this is the largest ball inside it at `c`.
     pub fn ball_radius(&self, c: Point3, ball: &Ball3) -> Option<BallContact> {
-        let start = self.closest_point(c)?;
-        let k0 = self.ids.iter().position(|&id| id == start.triangle)?;
-        let (r0, p0, kind0) = on_triangle(c, self.corners(k0), ball);
-        let best = Cell::new(BallContact { radius: r0, triangle: start.triangle, point: p0, kind: kind0 });
-        let reach = ball.circumradius();
-        let _ = self.visit(
-            |b| super::box_distance2(b, c) <= (best.get().radius * reach).powi(2),
-            |k| {
-                let (r, p, kind) = on_triangle(c, self.corners(k), ball);
-                if r < best.get().radius {
-                    best.set(BallContact { radius: r, triangle: self.ids[k], point: p, kind });
-                }
-                std::ops::ControlFlow::Continue(())
-            },
-        );
-        Some(best.get())
+        self.ball_radius_with(c, &ball.reach())
     }
 
-    /// [`TriangleTree::ball_radius`] for many centres, in parallel.
+    fn ball_radius_with(&self, c: Point3, reach: &Reach<'_>) -> Option<BallContact> {
+        let root = self.nodes.first()?;
+        let mut hint = ReachHint::default();
+        let mut best: Option<BallContact> = None;
+        let beats = |lb: f64, best: &Option<BallContact>| best.is_none_or(|b| lb < b.radius);
+        let mut stack = [(0u32, 0.0f64); 64];
+        stack[0] = (0, reach.over_box(&root.bbox, c));
+        let mut top = 1;
+        while top > 0 {
+            top -= 1;
+            let (at, lb) = stack[top];
+            if !beats(lb, &best) {
+                continue;
+            }
+            let node = &self.nodes[at as usize];
+            if node.is_leaf() {
+                for k in node.range() {
+                    let corners = self.corners(k);
+                    if !beats(
+                        reach.over_triangle(corners, c, best.map_or(f64::INFINITY, |b| b.radius), &mut hint),
+                        &best,
+                    ) {
+                        continue;
+                    }
+                    let r = reach.triangle(c, corners, &mut hint);
+                    if beats(r.radius, &best) {
+                        best =
+                            Some(BallContact { radius: r.radius, triangle: self.ids[k], point: r.point, kind: r.kind });
+                    }
+                }
+                continue;
+            }
+            let (left, right) = (at + 1, node.index);
+            let dl = reach.over_box(&self.nodes[left as usize].bbox, c);
+            let dr = reach.over_box(&self.nodes[right as usize].bbox, c);
+            // The nearer child goes on top, to be searched first.
+            let (near, far) = if dl <= dr { ((left, dl), (right, dr)) } else { ((right, dr), (left, dl)) };
+            stack[top] = far;
+            stack[top + 1] = near;
+            top += 2;
+        }
+        best
+    }
+
+    /// [`TriangleTree::ball_radius`] for many centres, in parallel (in an
+    /// order of the centres that keeps the tree in cache).
     pub fn ball_radii(&self, centres: &[Point3], ball: &Ball3) -> Vec<Option<BallContact>> {
-        use rayon::prelude::*;
-        centres.par_iter().map(|&c| self.ball_radius(c, ball)).collect()
+        let reach = ball.reach();
+        self.batch(centres, |c| self.ball_radius_with(c, &reach))
     }
 }

@@ -1,0 +1,437 @@
+//! How far a space ball reaches: the least gauge `γ_B(x − c)` over a
+//! triangle (where `c + r·B` grown from `c` first touches it) and cheap
+//! lower bounds of it over boxes and triangles, which a search over a
+//! tree of triangles prunes with (thesis 3.3.2.2).
+//!
+//! On a triangle T the gauge is convex and piecewise linear. Its minimum
+//! over T's plane is where the ray from `c` through the ball's vertex
+//! farthest toward the plane meets it (the ball grows until that vertex
+//! touches: VF). When that point lies in T it is the answer; otherwise,
+//! by convexity, the minimum over T lies on T's boundary, and on each
+//! side the gauge is a convex piecewise linear function of one parameter
+//! whose pieces are the ball's facets: walking from the side's start
+//! through the facets' cones while the slope is negative finds its
+//! minimum at a corner (FV) or where the side crosses from one cone to
+//! the next (the plane through `c` and a ball edge: EE). The walk's
+//! slopes increase strictly, so it takes at most one step per facet, and
+//! in practice one or two.
+//!
+//! The value returned is the gauge evaluated at the point found, a point
+//! of T (clamped there), so it bounds the true minimum from above whatever
+//! rounding did to the point; the exact contact class is decided apart.
+
+use super::Ball3;
+use crate::kernel::{BBox3, Point3};
+
+/// What kind of contact realises the least gauge (thesis 3.1.2), as found
+/// in `f64`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ContactKind3 {
+    /// A vertex of the ball on the triangle's interior (VF).
+    VertexFace,
+    /// An edge of the ball on an edge of the triangle (EE).
+    EdgeEdge,
+    /// A corner of the triangle on the ball's boundary (FV, or EV/VV when
+    /// it meets an edge or a vertex of the ball).
+    FaceVertex,
+}
+
+/// The least gauge over a triangle, where and how.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TriangleReach {
+    /// `γ_B(point − c)`: the radius at which `c + r·B` touches.
+    pub radius: f64,
+    /// The point of the triangle touched.
+    pub point: Point3,
+    /// The contact's kind.
+    pub kind: ContactKind3,
+}
+
+/// Balls with at most this many facets bound boxes by their own facet
+/// planes (a few dot products each); rounder balls by their circumsphere
+/// and bounding box, which are then nearly as tight and much cheaper.
+const FACET_BOUND_LIMIT: usize = 16;
+
+/// Neighbour lists in one flat array: item `i`'s are
+/// `items[start[i]..start[i + 1]]`.
+#[derive(Debug, Clone)]
+struct Neighbours {
+    start: Vec<u32>,
+    items: Vec<u32>,
+}
+
+impl Neighbours {
+    /// From the pairs that are neighbours (each pair once).
+    fn of(n: usize, pairs: impl Iterator<Item = (usize, usize)> + Clone) -> Neighbours {
+        let mut start = vec![0u32; n + 1];
+        for (a, b) in pairs.clone() {
+            start[a + 1] += 1;
+            start[b + 1] += 1;
+        }
+        for i in 0..n {
+            start[i + 1] += start[i];
+        }
+        let mut fill = start.clone();
+        let mut items = vec![0u32; start[n] as usize];
+        for (a, b) in pairs {
+            items[fill[a] as usize] = b as u32;
+            fill[a] += 1;
+            items[fill[b] as usize] = a as u32;
+            fill[b] += 1;
+        }
+        Neighbours { start, items }
+    }
+
+    fn of_item(&self, i: usize) -> impl Iterator<Item = usize> + '_ {
+        self.items[self.start[i] as usize..self.start[i + 1] as usize].iter().map(|&j| j as usize)
+    }
+}
+
+/// Cells per side of each face of the cube of directions in a
+/// [`DirectionTable`].
+const TABLE_SIDE: usize = 8;
+
+/// For a grid of directions (the cube's faces cut into cells), the facet
+/// whose cone holds the cell's centre and the vertex farthest toward it:
+/// a climb started there takes a step or none.
+#[derive(Debug, Clone)]
+struct DirectionTable {
+    facets: Vec<u32>,
+    vertices: Vec<u32>,
+}
+
+/// The cell of direction `x` (0 for a zero or non-finite one).
+fn cell_of(x: Point3) -> usize {
+    let a = [x.x.abs(), x.y.abs(), x.z.abs()];
+    let axis = if a[0] >= a[1] && a[0] >= a[2] {
+        0
+    } else if a[1] >= a[2] {
+        1
+    } else {
+        2
+    };
+    let m = a[axis];
+    if !(m > 0.0 && m.is_finite()) {
+        return 0;
+    }
+    let side = usize::from(x.coord(axis) < 0.0);
+    let cell = |v: f64| (((v / m + 1.0) * 0.5 * TABLE_SIDE as f64) as usize).min(TABLE_SIDE - 1);
+    let (u, v) = (cell(x.coord((axis + 1) % 3)), cell(x.coord((axis + 2) % 3)));
+    ((axis * 2 + side) * TABLE_SIDE + u) * TABLE_SIDE + v
+}
+
+/// The centre direction of cell `k` ([`cell_of`]'s inverse).
+fn cell_centre(k: usize) -> Point3 {
+    let (face, rest) = (k / (TABLE_SIDE * TABLE_SIDE), k % (TABLE_SIDE * TABLE_SIDE));
+    let (axis, side) = (face / 2, face % 2);
+    let at = |i: usize| (i as f64 + 0.5) / TABLE_SIDE as f64 * 2.0 - 1.0;
+    let mut p = [0.0; 3];
+    p[axis] = if side == 0 { 1.0 } else { -1.0 };
+    p[(axis + 1) % 3] = at(rest / TABLE_SIDE);
+    p[(axis + 2) % 3] = at(rest % TABLE_SIDE);
+    Point3::from_array(p)
+}
+
+/// Where the last search step ended: the next one on a nearby triangle
+/// starts its climbs there.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct ReachHint {
+    facet: usize,
+    vertex: usize,
+}
+
+/// A ball prepared for many least-gauge questions: its facet and vertex
+/// graphs (maximising a linear function over the vertices of a convex
+/// polytope by climbing its edges ends at the maximum, so the facet whose
+/// cone holds a direction and the vertex farthest in a direction are
+/// found by a few steps from a nearby start instead of a scan of all of
+/// them; the facets' rows are the vertices of the polar polytope) and the
+/// lower bounds over boxes and triangles a search prunes with.
+#[derive(Debug, Clone)]
+pub struct Reach<'a> {
+    ball: &'a Ball3,
+    facet_graph: Neighbours,
+    vertex_graph: Neighbours,
+    /// Climbs' starts by direction (balls of many facets only).
+    table: Option<DirectionTable>,
+    /// Few facets: boxes are bounded by every facet plane.
+    few: bool,
+    /// 1 / circumradius: `γ_B(x) ≥ |x| / R`.
+    inv_radius: f64,
+    /// Per axis 1 / (the ball's largest coordinate) and 1 / (minus its
+    /// least): B lies in its bounding box, whose gauge is below B's.
+    up: [f64; 3],
+    down: [f64; 3],
+}
+
+impl<'a> Reach<'a> {
+    /// Prepares `ball` (O(edges)).
+    pub fn new(ball: &'a Ball3) -> Reach<'a> {
+        let bb = BBox3::of(ball.vertices().iter().copied());
+        let inv = |v: f64| if v > 0.0 { 1.0 / v } else { 0.0 };
+        let edges = ball.edges();
+        let few = ball.facets().len() <= FACET_BOUND_LIMIT;
+        let mut reach = Reach {
+            ball,
+            facet_graph: Neighbours::of(ball.facets().len(), edges.iter().map(|e| (e.facets[0], e.facets[1]))),
+            vertex_graph: Neighbours::of(ball.vertices().len(), edges.iter().map(|e| (e.vertices[0], e.vertices[1]))),
+            table: None,
+            few,
+            inv_radius: inv(ball.circumradius()),
+            up: [0, 1, 2].map(|a| inv(bb.max.coord(a))),
+            down: [0, 1, 2].map(|a| inv(-bb.min.coord(a))),
+        };
+        if !few {
+            // Cells in order are mostly neighbours: each climb starts from
+            // the last one's answer.
+            let (mut f, mut v) = (0, 0);
+            let mut table = DirectionTable { facets: Vec::new(), vertices: Vec::new() };
+            for k in 0..6 * TABLE_SIDE * TABLE_SIDE {
+                let x = cell_centre(k);
+                f = reach.climb_facet(x, f);
+                v = reach.climb_vertex(x, v);
+                table.facets.push(f as u32);
+                table.vertices.push(v as u32);
+            }
+            reach.table = Some(table);
+        }
+        reach
+    }
+
+    /// The ball.
+    pub fn ball(&self) -> &'a Ball3 {
+        self.ball
+    }
+
+    /// Lower bound of `γ_B(x − c)` over the box: the largest of the
+    /// circumsphere's, the bounding box's and (few facets) each facet's
+    /// least value over the box, taken at the corner its normal picks. (For
+    /// many facets, climbing to the facet toward each box costs more than
+    /// the tighter bound saves.)
+    pub fn over_box(&self, b: &BBox3, c: Point3) -> f64 {
+        let (mut lb, mut d2) = (0.0f64, 0.0);
+        let (mut lo, mut hi) = ([0.0; 3], [0.0; 3]);
+        for axis in 0..3 {
+            lo[axis] = b.min.coord(axis) - c.coord(axis);
+            hi[axis] = b.max.coord(axis) - c.coord(axis);
+            if lo[axis] > 0.0 {
+                lb = lb.max(lo[axis] * self.up[axis]);
+                d2 += lo[axis] * lo[axis];
+            } else if hi[axis] < 0.0 {
+                lb = lb.max(-hi[axis] * self.down[axis]);
+                d2 += hi[axis] * hi[axis];
+            }
+        }
+        lb = lb.max(d2.sqrt() * self.inv_radius);
+        let pick = |a: &Point3| {
+            let at = |axis: usize, v: f64| if v >= 0.0 { v * lo[axis] } else { v * hi[axis] };
+            at(0, a.x) + at(1, a.y) + at(2, a.z)
+        };
+        if self.few {
+            for a in self.ball.gauge_rows() {
+                lb = lb.max(pick(a));
+            }
+        }
+        lb
+    }
+
+    /// Lower bound of `γ_B(x − c)` over the triangle: its box's, and the
+    /// least over the corners of each facet's piece (few facets) or of
+    /// the piece of the facet whose cone holds the first corner (the
+    /// table's facet toward it, a cheaper start, loosens the bound enough
+    /// to triple the triangles measured in full).
+    /// Stops early, with the box's bound, when that reaches `enough`.
+    pub fn over_triangle(&self, [a, b, d]: [Point3; 3], c: Point3, enough: f64, hint: &mut ReachHint) -> f64 {
+        let mut lb = self.over_box(&BBox3::of([a, b, d]), c);
+        if lb >= enough {
+            return lb;
+        }
+        let least = |r: Point3| r.dot(a - c).min(r.dot(b - c)).min(r.dot(d - c));
+        let rows = self.ball.gauge_rows();
+        if self.few {
+            for &r in rows {
+                lb = lb.max(least(r));
+            }
+        } else {
+            hint.facet = self.top_facet(a - c, hint.facet);
+            lb = lb.max(least(rows[hint.facet]));
+        }
+        lb
+    }
+
+    /// The facet whose piece of the gauge is largest at `x` (whose cone
+    /// holds `x`), climbing from the table's start or `from`.
+    fn top_facet(&self, x: Point3, from: usize) -> usize {
+        let from = self.table.as_ref().map_or(from, |t| t.facets[cell_of(x)] as usize);
+        self.climb_facet(x, from)
+    }
+
+    /// The vertex farthest in direction `n`, from the table's start or
+    /// `from`.
+    fn top_vertex(&self, n: Point3, from: usize) -> usize {
+        let from = self.table.as_ref().map_or(from, |t| t.vertices[cell_of(n)] as usize);
+        self.climb_vertex(n, from)
+    }
+
+    /// [`top_facet`](Self::top_facet) climbing from `from`.
+    fn climb_facet(&self, x: Point3, from: usize) -> usize {
+        let rows = self.ball.gauge_rows();
+        let mut f = from.min(rows.len() - 1);
+        let mut value = rows[f].dot(x);
+        loop {
+            let step = self.facet_graph.of_item(f).map(|g| (g, rows[g].dot(x))).max_by(|p, q| p.1.total_cmp(&q.1));
+            match step {
+                Some((g, v)) if v > value => (f, value) = (g, v),
+                _ => return f,
+            }
+        }
+    }
+
+    /// The vertex farthest in direction `n`, climbing from `from`.
+    fn climb_vertex(&self, n: Point3, from: usize) -> usize {
+        let w = self.ball.vertices();
+        let mut v = from.min(w.len() - 1);
+        let mut value = n.dot(w[v]);
+        loop {
+            let step = self.vertex_graph.of_item(v).map(|u| (u, n.dot(w[u]))).max_by(|p, q| p.1.total_cmp(&q.1));
+            match step {
+                Some((u, h)) if h > value => (v, value) = (u, h),
+                _ => return v,
+            }
+        }
+    }
+
+    /// `γ_B(x)` by a climb from `from` (the facet found is left in `hint`).
+    fn gauge(&self, x: Point3, hint: &mut ReachHint) -> f64 {
+        hint.facet = self.top_facet(x, hint.facet);
+        self.ball.gauge_rows()[hint.facet].dot(x).max(0.0)
+    }
+
+    /// The least `γ_B(x − c)` over the closed triangle (where `c + r·B`
+    /// grown from `c` first touches it), its point and kind. A degenerate
+    /// (zero-area) triangle is measured along its sides.
+    pub fn triangle(&self, c: Point3, [a, b, d]: [Point3; 3], hint: &mut ReachHint) -> TriangleReach {
+        let n = (b - a).cross(d - a);
+        let h = n.dot(a - c);
+        if n.norm2() > 0.0 {
+            if h == 0.0 {
+                if inside_triangle(c, [a, b, d], n) {
+                    return TriangleReach { radius: 0.0, point: c, kind: ContactKind3::VertexFace };
+                }
+            } else if let Some(q) = self.plane_touch(c, [a, b, d], n, h, hint) {
+                return TriangleReach { radius: self.gauge(q - c, hint), point: q, kind: ContactKind3::VertexFace };
+            }
+        }
+        let mut best = self.segment(c, a, b, hint);
+        for (p, q) in [(b, d), (d, a)] {
+            let r = self.segment(c, p, q, hint);
+            if r.radius < best.radius {
+                best = r;
+            }
+        }
+        best
+    }
+
+    /// Where the ball grown from `c` first touches the triangle's plane
+    /// (normal `n`, `h = n·(a − c) ≠ 0`), when that point lies in the
+    /// triangle: the ray through the vertex farthest toward the plane, or
+    /// through a vertex tying with it (a whole edge or facet of the ball
+    /// parallel to the plane touches it at once; the tying vertices are
+    /// connected, so they are gathered by a walk from the top one).
+    fn plane_touch(&self, c: Point3, t: [Point3; 3], n: Point3, h: f64, hint: &mut ReachHint) -> Option<Point3> {
+        let toward = n * h.signum();
+        let w = self.ball.vertices();
+        hint.vertex = self.top_vertex(toward, hint.vertex);
+        let tie = toward.dot(w[hint.vertex]) * (1.0 - 1e-12);
+        let ray = |v: usize| {
+            let q = c + w[v] * (h / n.dot(w[v]));
+            inside_triangle(q, t, n).then_some(q)
+        };
+        if let Some(q) = ray(hint.vertex) {
+            return Some(q);
+        }
+        // Usually no neighbour ties: then no list of the tying ones.
+        if !self.vertex_graph.of_item(hint.vertex).any(|u| toward.dot(w[u]) >= tie) {
+            return None;
+        }
+        let mut seen = vec![hint.vertex];
+        let mut at = 0;
+        while at < seen.len() {
+            let v = seen[at];
+            at += 1;
+            for u in self.vertex_graph.of_item(v) {
+                if !seen.contains(&u) && toward.dot(w[u]) >= tie {
+                    if let Some(q) = ray(u) {
+                        return Some(q);
+                    }
+                    seen.push(u);
+                }
+            }
+        }
+        None
+    }
+
+    /// The least gauge on the segment `p q`, by the walk through the
+    /// facets' cones described in the module comment: the side leaves a
+    /// facet's cone across one of its edges, into a neighbour's.
+    fn segment(&self, c: Point3, p: Point3, q: Point3, hint: &mut ReachHint) -> TriangleReach {
+        let rows = self.ball.gauge_rows();
+        let (x, d) = (p - c, q - p);
+        // Facet f's piece along the side: alpha_f + s·beta_f.
+        let line = |f: usize| (rows[f].dot(x), rows[f].dot(d));
+        let mut f = self.top_facet(x, hint.facet);
+        let (mut alpha, mut beta) = line(f);
+        let mut s = 0.0f64;
+        while beta < 0.0 {
+            // The next facet to take over: the first crossing ahead among
+            // the steeper neighbours (on a tie, the steepest).
+            let mut next: Option<(f64, usize, f64, f64)> = None;
+            for g in self.facet_graph.of_item(f) {
+                let (ag, bg) = line(g);
+                if bg <= beta {
+                    continue;
+                }
+                let sg = ((alpha - ag) / (bg - beta)).max(s);
+                if next.is_none_or(|(sn, _, _, bn)| sg < sn || (sg == sn && bg > bn)) {
+                    next = Some((sg, g, ag, bg));
+                }
+            }
+            match next {
+                Some((sg, g, ag, bg)) if sg < 1.0 => (s, f, alpha, beta) = (sg, g, ag, bg),
+                _ => {
+                    s = 1.0;
+                    break;
+                }
+            }
+        }
+        hint.facet = f;
+        let point = if s <= 0.0 {
+            p
+        } else if s >= 1.0 {
+            q
+        } else {
+            p + d * s
+        };
+        let kind = if s <= 0.0 || s >= 1.0 { ContactKind3::FaceVertex } else { ContactKind3::EdgeEdge };
+        TriangleReach { radius: self.gauge(point - c, hint), point, kind }
+    }
+}
+
+impl Ball3 {
+    /// The ball prepared for least-gauge questions ([`Reach`]).
+    pub fn reach(&self) -> Reach<'_> {
+        Reach::new(self)
+    }
+
+    /// The least `γ_B(x − c)` over the closed triangle: [`Reach::triangle`]
+    /// for one question.
+    pub fn reach_triangle(&self, c: Point3, t: [Point3; 3]) -> TriangleReach {
+        self.reach().triangle(c, t, &mut ReachHint::default())
+    }
+}
+
+/// Whether `q` (near the plane of the triangle with normal `n`) lies in it:
+/// the three sub-triangles turn the same way as `n`.
+fn inside_triangle(q: Point3, [a, b, d]: [Point3; 3], n: Point3) -> bool {
+    (b - a).cross(q - a).dot(n) >= 0.0 && (d - b).cross(q - b).dot(n) >= 0.0 && (a - d).cross(q - d).dot(n) >= 0.0
+}

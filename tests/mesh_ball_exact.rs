@@ -1,0 +1,335 @@
+//! The largest ball `c + r·B` at a centre, against a brute-force oracle
+//! that shares nothing with the library's search: every triangle, every
+//! vertex of the linear program min r s.t. x ∈ T, x − c ∈ r·B (a corner of
+//! T; a point of a side on the plane through `c` and a ball edge; the ray
+//! from `c` through a ball vertex meeting T), and the gauge from planes
+//! through each facet's own corners.
+//!
+//! * Exact: integer meshes and integer balls (presets and random hulls
+//!   with the origin off-centre), half-integer centres, in rationals of
+//!   `i128` (the sizes here keep every product below 2^100): the radius
+//!   must agree to 1e-12 relative, and the contact must be a point of the
+//!   surface at gauge `r`.
+//! * In `f64`, for balls no integer can give (icosahedron, geodesic
+//!   spheres, turned balls): the same enumeration in floating point.
+
+use medax::kernel::Point3;
+use medax::shape::mesh_samples::{cuboid, sphere, torus, union};
+use medax::shape::{Ball3, Mesh3d, MeshOptions};
+use rand::rngs::SmallRng;
+use rand::{Rng, SeedableRng};
+use std::cmp::Ordering;
+
+/// A rational `n / d` with `d > 0`, reduced.
+#[derive(Clone, Copy, Debug)]
+struct Q(i128, i128);
+
+fn gcd(a: i128, b: i128) -> i128 {
+    let (mut a, mut b) = (a.abs(), b.abs());
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a.max(1)
+}
+
+impl Q {
+    fn new(n: i128, d: i128) -> Q {
+        assert!(d != 0);
+        let g = gcd(n, d) * d.signum();
+        Q(n / g, d / g)
+    }
+    fn int(n: i128) -> Q {
+        Q(n, 1)
+    }
+    fn add(self, o: Q) -> Q {
+        Q::new(self.0.checked_mul(o.1).unwrap() + o.0.checked_mul(self.1).unwrap(), self.1.checked_mul(o.1).unwrap())
+    }
+    fn sub(self, o: Q) -> Q {
+        self.add(Q(-o.0, o.1))
+    }
+    fn mul(self, o: Q) -> Q {
+        Q::new(self.0.checked_mul(o.0).unwrap(), self.1.checked_mul(o.1).unwrap())
+    }
+    fn div(self, o: Q) -> Q {
+        Q::new(self.0.checked_mul(o.1).unwrap(), self.1.checked_mul(o.0).unwrap())
+    }
+    fn cmp(self, o: Q) -> Ordering {
+        self.0.checked_mul(o.1).unwrap().cmp(&o.0.checked_mul(self.1).unwrap())
+    }
+    fn sign(self) -> Ordering {
+        self.0.cmp(&0)
+    }
+    fn f64(self) -> f64 {
+        self.0 as f64 / self.1 as f64
+    }
+}
+
+type V = [Q; 3];
+
+fn sub(a: V, b: V) -> V {
+    [a[0].sub(b[0]), a[1].sub(b[1]), a[2].sub(b[2])]
+}
+fn dot(a: V, b: V) -> Q {
+    a[0].mul(b[0]).add(a[1].mul(b[1])).add(a[2].mul(b[2]))
+}
+fn cross(a: V, b: V) -> V {
+    [a[1].mul(b[2]).sub(a[2].mul(b[1])), a[2].mul(b[0]).sub(a[0].mul(b[2])), a[0].mul(b[1]).sub(a[1].mul(b[0]))]
+}
+fn along(p: V, d: V, t: Q) -> V {
+    [p[0].add(d[0].mul(t)), p[1].add(d[1].mul(t)), p[2].add(d[2].mul(t))]
+}
+/// Exact value of an `f64` that is a multiple of 1/2 (asserted).
+fn q_of(x: f64) -> Q {
+    assert!((2.0 * x).fract() == 0.0 && x.abs() < 1e9, "{x} is not a half-integer");
+    Q::new((2.0 * x) as i128, 2)
+}
+fn v_of(p: Point3) -> V {
+    [q_of(p.x), q_of(p.y), q_of(p.z)]
+}
+
+/// The ball's facet planes from its own corners: (n, h) with x ∈ B iff
+/// n·x ≤ h for all, h > 0.
+fn exact_planes(ball: &Ball3) -> Vec<(V, Q)> {
+    ball.facets()
+        .iter()
+        .map(|f| {
+            let [a, b, c] = [0, 1, 2].map(|k| v_of(ball.vertices()[f.vertices[k]]));
+            let n = cross(sub(b, a), sub(c, a));
+            let h = dot(n, a);
+            assert_eq!(h.sign(), Ordering::Greater, "origin inside, facets outward");
+            (n, h)
+        })
+        .collect()
+}
+
+fn gauge(planes: &[(V, Q)], x: V) -> Q {
+    planes.iter().map(|&(n, h)| dot(n, x).div(h)).fold(Q::int(0), |m, g| if g.cmp(m).is_gt() { g } else { m })
+}
+
+/// The exact least gauge of `y − c` over triangle `t`.
+fn exact_on_triangle(ball: &Ball3, planes: &[(V, Q)], c: V, t: [V; 3]) -> Q {
+    let mut best: Option<Q> = None;
+    let mut offer = |y: V| {
+        let g = gauge(planes, sub(y, c));
+        if best.is_none_or(|b| g.cmp(b).is_lt()) {
+            best = Some(g);
+        }
+    };
+    t.iter().for_each(|&p| offer(p));
+    let w: Vec<V> = ball.vertices().iter().map(|&p| v_of(p)).collect();
+    for e in ball.edges() {
+        let m = cross(w[e.vertices[0]], w[e.vertices[1]]);
+        for (p, q) in [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])] {
+            let den = dot(m, sub(q, p));
+            if den.sign().is_ne() {
+                let u = dot(m, sub(c, p)).div(den);
+                if u.sign().is_ge() && u.cmp(Q::int(1)).is_le() {
+                    offer(along(p, sub(q, p), u));
+                }
+            }
+        }
+    }
+    let n = cross(sub(t[1], t[0]), sub(t[2], t[0]));
+    for &wv in &w {
+        let den = dot(n, wv);
+        if den.sign().is_eq() {
+            continue;
+        }
+        let s = dot(n, sub(t[0], c)).div(den);
+        if s.sign().is_lt() {
+            continue;
+        }
+        let y = along(c, wv, s);
+        let inside = (0..3).all(|k| dot(cross(sub(t[(k + 1) % 3], t[k]), sub(y, t[k])), n).sign().is_ge());
+        if inside {
+            offer(y);
+        }
+    }
+    best.unwrap()
+}
+
+/// The same enumeration in `f64`, the gauge from the facets' normals.
+fn float_on_triangle(ball: &Ball3, c: Point3, [a, b, d]: [Point3; 3]) -> f64 {
+    let g = |y: Point3| ball.facets().iter().map(|f| f.normal.dot(y - c) / f.offset).fold(0.0, f64::max);
+    let mut best = g(a).min(g(b)).min(g(d));
+    let w = ball.vertices();
+    for e in ball.edges() {
+        let m = w[e.vertices[0]].cross(w[e.vertices[1]]);
+        for (p, q) in [(a, b), (b, d), (d, a)] {
+            let den = m.dot(q - p);
+            if den != 0.0 {
+                let u = m.dot(c - p) / den;
+                if (0.0..=1.0).contains(&u) {
+                    best = best.min(g(p + (q - p) * u));
+                }
+            }
+        }
+    }
+    let n = (b - a).cross(d - a);
+    for &wv in w {
+        let s = n.dot(a - c) / n.dot(wv);
+        let y = c + wv * s;
+        let inside = [(a, b), (b, d), (d, a)].iter().all(|&(p, q)| (q - p).cross(y - p).dot(n) >= 0.0);
+        if s >= 0.0 && inside {
+            best = best.min(g(y));
+        }
+    }
+    best
+}
+
+/// Euclidean distance from `c` to the triangle's bounding box.
+fn box_distance(t: [Point3; 3], c: Point3) -> f64 {
+    let gap = |k: usize| {
+        let (lo, hi) =
+            t.iter().map(|p| p.coord(k)).fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), x| (l.min(x), h.max(x)));
+        (lo - c.coord(k)).max(c.coord(k) - hi).max(0.0)
+    };
+    (gap(0).powi(2) + gap(1).powi(2) + gap(2).powi(2)).sqrt()
+}
+
+type Soup = (Vec<[f64; 3]>, Vec<[u32; 3]>);
+
+/// Integer meshes: a box with a box-shaped cavity, a coarse sphere and a
+/// torus scaled by 8 and rounded to the integer grid.
+fn integer_meshes() -> Vec<(&'static str, Soup)> {
+    let round = |(v, t): Soup, k: f64| -> Soup { (v.iter().map(|p| p.map(|x| (x * k).round())).collect(), t) };
+    let mut cavity = cuboid([-6.0, -6.0, -6.0], [6.0, 6.0, 6.0]);
+    let inner = cuboid([-2.0, -2.0, -3.0], [3.0, 2.0, 2.0]);
+    cavity = union(&[cavity, (inner.0, inner.1.iter().map(|t| [t[0], t[2], t[1]]).collect())]);
+    vec![
+        ("box with cavity", cavity),
+        ("sphere", round(sphere([0.0, 0.0, 0.0], 1.0, 8, 6), 8.0)),
+        ("torus", round(torus(3.0, 1.3, 12, 8), 8.0)),
+    ]
+}
+
+/// Integer balls: presets and random integer hulls about an off-centre
+/// origin.
+fn integer_balls() -> Vec<(String, Ball3)> {
+    let mut out = vec![
+        ("tetrahedron".to_string(), Ball3::tetrahedron()),
+        ("cube".to_string(), Ball3::cube()),
+        ("octahedron".to_string(), Ball3::octahedron()),
+    ];
+    let mut rng = SmallRng::seed_from_u64(19);
+    for k in 0..4 {
+        let pts: Vec<Point3> = (0..12)
+            .map(|_| {
+                Point3::new(rng.gen_range(-6..=6) as f64, rng.gen_range(-6..=6) as f64, rng.gen_range(-6..=6) as f64)
+                    + Point3::new(2.0, -1.0, 1.0)
+            })
+            .collect();
+        if let Ok(b) = Ball3::from_points(&pts) {
+            out.push((format!("random integer hull {k}"), b));
+        }
+    }
+    assert!(out.len() >= 5, "too few random balls were valid");
+    out
+}
+
+/// Half-integer points inside the mesh.
+fn centres(m: &Mesh3d, rng: &mut SmallRng, n: usize) -> Vec<Point3> {
+    let b = m.bbox();
+    let mut out = Vec::new();
+    while out.len() < n {
+        let pick = |lo: f64, hi: f64, rng: &mut SmallRng| (rng.gen_range(lo..hi) * 2.0).round() / 2.0;
+        let c = Point3::new(pick(b.min.x, b.max.x, rng), pick(b.min.y, b.max.y, rng), pick(b.min.z, b.max.z, rng));
+        if m.inside(c) == Some(true) {
+            out.push(c);
+        }
+    }
+    out
+}
+
+fn corners(m: &Mesh3d, t: usize) -> [Point3; 3] {
+    m.triangles()[t].map(|i| m.positions()[i as usize])
+}
+
+#[test]
+fn the_radius_is_the_exact_least_gauge_over_every_triangle() {
+    let mut rng = SmallRng::seed_from_u64(7);
+    for (mesh_name, (v, t)) in integer_meshes() {
+        let m = Mesh3d::from_triangles(&v, &t, &MeshOptions::default()).unwrap();
+        let points = centres(&m, &mut rng, 12);
+        for (ball_name, ball) in integer_balls() {
+            let planes = exact_planes(&ball);
+            for &c in &points {
+                let cq = v_of(c);
+                let exact = (0..m.triangles().len())
+                    .map(|k| exact_on_triangle(&ball, &planes, cq, corners(&m, k).map(v_of)))
+                    .min_by(|a, b| a.cmp(*b))
+                    .unwrap()
+                    .f64();
+                let got = m.ball_radius(c, &ball);
+                let what = format!("{mesh_name}, {ball_name}, centre {c:?}");
+                assert!((got.radius - exact).abs() <= 1e-12 * exact, "{what}: {} vs exact {exact}", got.radius);
+                let tri = corners(&m, got.triangle as usize);
+                let n = (tri[1] - tri[0]).cross(tri[2] - tri[0]);
+                assert!(n.dot(got.point - tri[0]).abs() <= 1e-9 * n.norm() * exact, "{what}: contact off its triangle");
+                assert!((ball.gauge(got.point - c) - got.radius).abs() <= 1e-12 * exact, "{what}: contact not at r");
+            }
+        }
+    }
+}
+
+#[test]
+fn the_radius_is_the_least_over_every_triangle_for_irrational_balls() {
+    let mut rng = SmallRng::seed_from_u64(8);
+    let cloud: Vec<Point3> = (0..60)
+        .map(|_| {
+            let v = Point3::new(rng.gen_range(-1.0..1.0), rng.gen_range(-1.0..1.0), rng.gen_range(-1.0..1.0));
+            v * (0.5 / v.norm()) + Point3::new(0.2, 0.1, -0.15)
+        })
+        .collect();
+    let balls = [
+        ("icosahedron", Ball3::icosahedron()),
+        ("geodesic 80", Ball3::geodesic(80).unwrap()),
+        ("geodesic 320", Ball3::geodesic(320).unwrap()),
+        ("turned tetrahedron", Ball3::tetrahedron().rotated([0.4, 1.1, -0.7]).unwrap()),
+        ("mirrored off-centre hull", Ball3::from_points(&cloud).unwrap().mirrored()),
+    ];
+    let soups: [(&str, Soup); 3] = [
+        ("torus", torus(3.0, 1.0, 30, 16)),
+        ("sphere", sphere([0.5, -0.25, 1.0], 2.0, 14, 10)),
+        ("two boxes", union(&[cuboid([0.0; 3], [2.0, 1.0, 1.0]), cuboid([3.0, 0.0, 0.0], [4.0, 3.0, 0.5])])),
+    ];
+    for (mesh_name, (v, t)) in soups {
+        let m = Mesh3d::from_triangles(&v, &t, &MeshOptions::default()).unwrap();
+        let b = m.bbox();
+        let mut points = Vec::new();
+        while points.len() < 25 {
+            let c = Point3::new(
+                rng.gen_range(b.min.x..b.max.x),
+                rng.gen_range(b.min.y..b.max.y),
+                rng.gen_range(b.min.z..b.max.z),
+            );
+            if m.inside(c) == Some(true) {
+                points.push(c);
+            }
+        }
+        for (ball_name, ball) in &balls {
+            let radii = m.tree().ball_radii(&points, ball);
+            for (&c, got) in points.iter().zip(radii) {
+                let got = got.unwrap();
+                // Nearest boxes first; a triangle whose box is farther than
+                // best · circumradius cannot hold a smaller gauge.
+                let reach = ball.vertices().iter().map(|w| w.norm()).fold(0.0, f64::max);
+                let mut order: Vec<(f64, usize)> =
+                    (0..m.triangles().len()).map(|k| (box_distance(corners(&m, k), c), k)).collect();
+                order.sort_by(|a, b| a.0.total_cmp(&b.0));
+                let mut brute = f64::INFINITY;
+                for (d, k) in order {
+                    if d > brute * reach {
+                        break;
+                    }
+                    brute = brute.min(float_on_triangle(ball, c, corners(&m, k)));
+                }
+                assert!(
+                    (got.radius - brute).abs() <= 1e-9 * brute,
+                    "{mesh_name}, {ball_name}, centre {c:?}: {} vs brute force {brute}",
+                    got.radius
+                );
+            }
+        }
+    }
+}
