@@ -15,6 +15,16 @@
 // wherever CGAL says inside or outside. Two interpenetrating boxes and a box with a corner
 // pushed through: medax says MX_ERR_INTERSECTION, CGAL says
 // does_self_intersect.
+//
+// Rays and intersection tests on the same meshes (compare_queries):
+// 10^4 random rays (origins in the grown box, isotropic directions),
+// mx_mesh3d_first_hits against tree.first_intersection: hit or miss
+// agree and the points (and parameters) agree to 1e-9 of the diagonal,
+// except where the ray grazes the boundary of the triangle the nearer
+// answer lies on (see GRAZE below); 10^3 random segments, triangles and
+// boxes, a third of them touching the surface at a mesh vertex or one
+// ulp away from it: mx_mesh3d_intersects_* against tree.do_intersect,
+// exactly (Epick's do_intersect predicates are exact, as medax's are).
 
 #include "test_support.hpp"
 
@@ -29,6 +39,8 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <medax.h>
 
+#include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <filesystem>
@@ -85,6 +97,208 @@ Soup join(const Soup& a, const Soup& b) {
     s.xyz.insert(s.xyz.end(), b.xyz.begin(), b.xyz.end());
     for (uint32_t v : b.tri) s.tri.push_back(v + base);
     return s;
+}
+
+using Ray = K::Ray_3;
+using Segment = K::Segment_3;
+using Triangle = K::Triangle_3;
+using Vector = K::Vector_3;
+
+Triangle face_triangle(const Mesh& mesh, size_t i) {
+    const auto h = mesh.halfedge(Mesh::Face_index(static_cast<Mesh::size_type>(i)));
+    return Triangle(mesh.point(mesh.source(h)), mesh.point(mesh.target(h)),
+                    mesh.point(mesh.target(mesh.next(h))));
+}
+
+// Grazing tolerance, as a fraction of the diagonal. medax decides a ray
+// against a triangle in f64 (Moller-Trumbore): the sign of a barycentric
+// coordinate is the sign of det(d, e, o - a) = |d| |e| sin(phi) * delta,
+// delta the distance from the ray to the line of edge e at angle phi,
+// computed with an error below 5 eps |d| |e| |o - a|. So medax can only
+// be wrong about a triangle the ray passes within 5 eps |o - a| / sin(phi)
+// (about 2.2e-15 diagonal / sin(phi) here) of an edge of; CGAL decides each
+// triangle exactly but prunes tree boxes by an f64 slab test without
+// slack, so it too can only miss where the ray skims a box face, that is
+// a triangle's extreme corner or edge. 1e-9 of the diagonal covers rays
+// at more than 1e-6 rad to the edge, which a random direction misses with
+// probability about 1e-12: in practice no ray grazes at all.
+constexpr double GRAZE = 1e-9;
+
+// The ray meets triangle `t` within `tol` of its boundary.
+bool grazes(const Ray& ray, const Triangle& t, double tol) {
+    for (int i = 0; i < 3; ++i)
+        if (CGAL::squared_distance(ray, Segment(t.vertex(i), t.vertex((i + 1) % 3))) <= tol * tol) return true;
+    return false;
+}
+
+// Rays, segments, triangles and boxes: medax (C API) against CGAL's tree
+// on the same surface; returns the number of disagreements.
+size_t compare_queries(const mx_mesh3d* m, const Mesh& mesh, const Tree& tree, const mx_mesh3d_info& info,
+                       std::mt19937_64& rng, const std::string& path) {
+    double diag = 0;
+    for (int i = 0; i < 3; ++i) diag += (info.max[i] - info.min[i]) * (info.max[i] - info.min[i]);
+    diag = std::sqrt(diag);
+    auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+    auto in_box = [&] {
+        std::array<double, 3> p{};
+        for (int a = 0; a < 3; ++a) {
+            const double pad = 0.1 * (info.max[a] - info.min[a]);
+            p[a] = uniform(info.min[a] - pad, info.max[a] + pad);
+        }
+        return p;
+    };
+    // The vertices as medax holds them, which must be CGAL's bit for bit.
+    size_t nv = 0;
+    MT_CHECK_OK(mx_mesh3d_vertices(m, nullptr, 0, &nv));
+    std::vector<double> v(3 * nv);
+    MT_CHECK_OK(mx_mesh3d_vertices(m, v.data(), nv, &nv));
+    size_t same = 0;
+    for (auto vi : mesh.vertices()) {
+        const Point& p = mesh.point(vi);
+        const size_t i = vi.idx();
+        same += i < nv && p.x() == v[3 * i] && p.y() == v[3 * i + 1] && p.z() == v[3 * i + 2];
+    }
+    MT_CHECK_EQ(same, nv);
+    auto vertex = [&] {
+        const size_t i = std::uniform_int_distribution<size_t>(0, nv - 1)(rng);
+        return std::array<double, 3>{v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+    };
+    auto pt = [](const std::array<double, 3>& p) { return Point(p[0], p[1], p[2]); };
+
+    // Rays.
+    const int n_rays = 10000;
+    std::vector<double> rays(6 * n_rays);
+    std::normal_distribution<double> gauss;
+    for (int i = 0; i < n_rays; ++i) {
+        const auto o = in_box();
+        for (int a = 0; a < 3; ++a) {
+            rays[6 * i + a] = o[a];
+            rays[6 * i + 3 + a] = gauss(rng);
+        }
+    }
+    std::vector<mx_ray_hit3> hits(n_rays);
+    size_t count = 0;
+    MT_CHECK_OK(mx_mesh3d_first_hits(m, rays.data(), rays.size(), hits.data(), hits.size(), &count));
+    size_t met = 0, wrong_rays = 0, grazing = 0, off_triangle = 0;
+    double worst = 0;
+    for (int i = 0; i < n_rays; ++i) {
+        const double* r = &rays[6 * i];
+        const Point o(r[0], r[1], r[2]);
+        const Vector d(r[3], r[4], r[5]);
+        const Ray ray(o, d);
+        const auto c = tree.first_intersection(ray);
+        const mx_ray_hit3& h = hits[i];
+        bool cgal_hit = false;
+        Point pc(0, 0, 0);
+        size_t cgal_face = 0;
+        if (c) {
+            if (const Point* p = boost::get<Point>(&c->first)) {
+                pc = *p;
+            } else {
+                // The ray along a triangle's plane: its first point.
+                const Segment& s = boost::get<Segment>(c->first);
+                pc = CGAL::squared_distance(o, s.source()) <= CGAL::squared_distance(o, s.target()) ? s.source()
+                                                                                                      : s.target();
+            }
+            cgal_hit = true;
+            cgal_face = c->second.idx();
+        }
+        const Point pm(h.point[0], h.point[1], h.point[2]);
+        if (h.hit) {
+            // medax's triangle id names CGAL's face: its point lies on it.
+            off_triangle += CGAL::squared_distance(pm, face_triangle(mesh, h.triangle)) > 1e-18 * diag * diag;
+        }
+        bool agree = cgal_hit == (h.hit == 1);
+        if (agree && cgal_hit) {
+            ++met;
+            const double dp = std::sqrt(CGAL::squared_distance(pm, pc));
+            const double tc = (pc - o) * d / d.squared_length();
+            const double dt = std::fabs(h.t - tc) * std::sqrt(d.squared_length());
+            worst = std::max({worst, dp / diag, dt / diag});
+            agree = dp <= 1e-9 * diag && dt <= 1e-9 * diag;
+        }
+        if (agree) continue;
+        // The nearer answer's triangle must be one the ray grazes.
+        const double tm = h.hit ? h.t : INFINITY;
+        const double tc = cgal_hit ? (pc - o) * d / d.squared_length() : INFINITY;
+        const size_t face = tm <= tc ? h.triangle : cgal_face;
+        if (grazes(ray, face_triangle(mesh, face), GRAZE * diag)) {
+            ++grazing;
+            continue;
+        }
+        if (wrong_rays++ < 3)
+            std::printf("    ray %d (%.17g %.17g %.17g; %.17g %.17g %.17g): CGAL %s (%.17g %.17g %.17g), medax %s t %.17g "
+                        "(%.17g %.17g %.17g) triangle %zu\n",
+                        i, r[0], r[1], r[2], r[3], r[4], r[5], cgal_hit ? "hit" : "miss", pc.x(), pc.y(), pc.z(),
+                        h.hit ? "hit" : "miss", h.t, h.point[0], h.point[1], h.point[2], h.triangle);
+    }
+
+    // Segments, triangles and boxes: random, short ones (2 % to 30 % of
+    // the diagonal), and a third built on a mesh vertex: through it, or
+    // with a face on it, or one ulp past it.
+    const int n_tests = 1000;
+    auto near_to = [&](const std::array<double, 3>& a) {
+        const double s = diag * uniform(0.02, 0.3);
+        std::array<double, 3> p{};
+        for (int k = 0; k < 3; ++k) p[k] = a[k] + s * gauss(rng) / std::sqrt(3.0);
+        return p;
+    };
+    size_t wrong_tests[3] = {0, 0, 0}, touching[3] = {0, 0, 0};
+    for (int i = 0; i < n_tests; ++i) {
+        const bool on_vertex = i % 3 == 0;
+        auto a = on_vertex ? vertex() : in_box();
+        // Half of those start one ulp off the vertex.
+        if (on_vertex && i % 2) a[i % 3] = std::nextafter(a[i % 3], i % 4 == 1 ? INFINITY : -INFINITY);
+        // Segment.
+        {
+            const auto b = near_to(a);
+            int32_t mine = -1;
+            MT_CHECK_OK(mx_mesh3d_intersects_segment(m, a.data(), b.data(), &mine));
+            const bool cgal = tree.do_intersect(Segment(pt(a), pt(b)));
+            wrong_tests[0] += cgal != (mine == 1);
+            touching[0] += cgal;
+        }
+        // Triangle (CGAL wants it non-degenerate).
+        {
+            const auto b = near_to(a), c = near_to(a);
+            if (!CGAL::collinear(pt(a), pt(b), pt(c))) {
+                const double xyz9[9] = {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2]};
+                int32_t mine = -1;
+                MT_CHECK_OK(mx_mesh3d_intersects_triangle(m, xyz9, &mine));
+                const bool cgal = tree.do_intersect(Triangle(pt(a), pt(b), pt(c)));
+                wrong_tests[1] += cgal != (mine == 1);
+                touching[1] += cgal;
+            }
+        }
+        // Box: around a point, or with its low x face on a vertex (or one
+        // ulp beyond it), reaching away from it.
+        {
+            std::array<double, 3> lo{}, hi{};
+            for (int k = 0; k < 3; ++k) {
+                const double s = diag * uniform(0.01, 0.15);
+                lo[k] = a[k] - s * uniform(0, 1);
+                hi[k] = a[k] + s * uniform(0, 1);
+            }
+            if (on_vertex) {
+                lo[0] = i % 2 ? a[0] : std::nextafter(a[0], INFINITY);
+                hi[0] = lo[0] + diag * uniform(0.01, 0.15);
+            }
+            int32_t mine = -1;
+            MT_CHECK_OK(mx_mesh3d_intersects_box(m, lo.data(), hi.data(), &mine));
+            const bool cgal = tree.do_intersect(CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]));
+            if (cgal != (mine == 1) && wrong_tests[2] < 3)
+                std::printf("    box (%.17g %.17g %.17g) (%.17g %.17g %.17g): CGAL %d, medax %d\n", lo[0], lo[1],
+                            lo[2], hi[0], hi[1], hi[2], cgal, mine);
+            wrong_tests[2] += cgal != (mine == 1);
+            touching[2] += cgal;
+        }
+    }
+    std::printf("  %s: %d rays (%zu hits, %zu grazing, largest difference %.3g diagonal): %zu disagree, %zu hits off "
+                "their triangle; segments, triangles, boxes meeting %zu, %zu, %zu of %d: %zu, %zu, %zu disagree\n",
+                path.c_str(), n_rays, met, grazing, worst, wrong_rays, off_triangle, touching[0], touching[1],
+                touching[2], n_tests, wrong_tests[0], wrong_tests[1], wrong_tests[2]);
+    MT_CHECK_EQ(off_triangle, size_t{0});
+    return wrong_rays + wrong_tests[0] + wrong_tests[1] + wrong_tests[2];
 }
 
 std::string write_off(const Soup& s, const std::string& name) {
@@ -174,6 +388,7 @@ bool compare(const std::string& path, unsigned seed) {
                 info.triangle_count, n, far, sides, sides_checked);
     MT_CHECK_EQ(far, size_t{0});
     MT_CHECK_EQ(sides, size_t{0});
+    MT_CHECK_EQ(compare_queries(m, mesh, tree, info, rng, path), size_t{0});
     mx_mesh3d_free(m);
     return true;
 }

@@ -4,11 +4,23 @@
 //! bytes (unshared corners: welding does the work), from OFF text and from
 //! binary PLY, medians of 3 runs, with the growth exponent.
 //!
+//! A second table times the tree's queries from Rust on the same tori:
+//! `TriangleTree` build alone, then on the solid's tree 10^5 closest points
+//! and exact inside tests, in two families of points ("near": within 0.01
+//! of the surface; "box": uniform in the bounding box), and the ball radius
+//! at the points found inside under `Ball3::tetrahedron()` and under the
+//! hull of 66 points of a Fibonacci sphere (128 facets; the geodesic balls
+//! have 80 or 320), against closest points at the same inside points
+//! (ctest/bench_mesh.cpp times the C API beside CGAL on the same family).
+//!
 //! `cargo run --release --example bench_mesh -- [threads] [max_triangles]`
 
 use medax::io::mesh::{write_off, write_ply, MeshFormat};
+use medax::kernel::Point3;
 use medax::shape::mesh_samples::torus;
-use medax::shape::{Mesh3d, MeshOptions};
+use medax::shape::{Ball3, Mesh3d, MeshOptions, TriangleTree};
+use rand::rngs::SmallRng;
+use rand::{Rng, SeedableRng};
 use std::time::Instant;
 
 fn median(mut v: Vec<f64>) -> f64 {
@@ -16,16 +28,97 @@ fn median(mut v: Vec<f64>) -> f64 {
     v[v.len() / 2]
 }
 
+/// Median of 3 runs, or of the runs made once they took 20 s together.
 fn time(f: impl Fn()) -> f64 {
-    median(
-        (0..3)
-            .map(|_| {
-                let t = Instant::now();
-                f();
-                t.elapsed().as_secs_f64()
-            })
-            .collect(),
-    )
+    let mut runs = Vec::new();
+    while runs.len() < 3 && runs.iter().sum::<f64>() < 20.0 {
+        let t = Instant::now();
+        f();
+        runs.push(t.elapsed().as_secs_f64());
+    }
+    median(runs)
+}
+
+/// 10^5 points within 0.01 of the surface (a uniform point of a random
+/// triangle moved along its normal) and 10^5 uniform in the box.
+fn families(v: &[[f64; 3]], t: &[[u32; 3]], seed: u64) -> [(&'static str, Vec<Point3>); 2] {
+    let mut rng = SmallRng::seed_from_u64(seed);
+    let p = |i: u32| Point3::from_array(v[i as usize]);
+    let near = (0..100_000)
+        .map(|_| {
+            let [a, b, c] = t[rng.gen_range(0..t.len())].map(p);
+            let (s, w): (f64, f64) = (rng.gen::<f64>().sqrt(), rng.gen());
+            let n = (b - a).cross(c - a);
+            a * (1.0 - s) + b * (s * (1.0 - w)) + c * (s * w) + n * (rng.gen_range(-0.01..0.01) / n.norm())
+        })
+        .collect();
+    let (lo, hi) = (0..3).fold(([f64::MAX; 3], [f64::MIN; 3]), |(mut lo, mut hi), k| {
+        v.iter().for_each(|q| (lo[k], hi[k]) = (lo[k].min(q[k]), hi[k].max(q[k])));
+        (lo, hi)
+    });
+    let mut coord = |k: usize| rng.gen_range(lo[k]..hi[k]);
+    let in_box = (0..100_000).map(|_| Point3::new(coord(0), coord(1), coord(2))).collect();
+    [("near", near), ("box", in_box)]
+}
+
+/// The hull of 66 points of a Fibonacci sphere: 2·66 − 4 = 128 facets.
+fn fibonacci_ball() -> Ball3 {
+    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
+    let pts: Vec<Point3> = (0..66)
+        .map(|i| {
+            let z = 1.0 - (2.0 * i as f64 + 1.0) / 66.0;
+            let r = (1.0 - z * z).sqrt();
+            Point3::new(r * (golden * i as f64).cos(), r * (golden * i as f64).sin(), z)
+        })
+        .collect();
+    Ball3::from_points(&pts).expect("the Fibonacci sphere's hull is a ball")
+}
+
+fn queries(max: usize) {
+    let o = MeshOptions::default();
+    let balls = [Ball3::tetrahedron(), fibonacci_ball()];
+    println!(
+        "\nTree queries, 10^5 points per family (balls: {} and {} facets):\n",
+        balls[0].facets().len(),
+        balls[1].facets().len()
+    );
+    println!("| triangles | points | tree build | closest | inside | inside points | closest there | tetra ball | 128-facet ball | ball / closest (tetra, 128) |");
+    println!("|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|");
+    for n in [10_000usize, 100_000, 1_000_000].into_iter().filter(|&n| n <= max) {
+        let b = ((n / 4) as f64).sqrt().round() as usize;
+        let (v, t) = torus(3.0, 1.0, 2 * b, b);
+        let build = time(|| {
+            TriangleTree::from_arrays(&v, &t);
+        });
+        let mesh = Mesh3d::from_triangles(&v, &t, &o).unwrap();
+        let tree = mesh.tree();
+        for (family, pts) in families(&v, &t, 20261207 + n as u64) {
+            let closest = time(|| {
+                tree.closest_points(&pts);
+            });
+            let inside_t = time(|| {
+                tree.inside_many(&pts);
+            });
+            let sides = tree.inside_many(&pts);
+            let inner: Vec<Point3> =
+                pts.iter().zip(&sides).filter(|(_, s)| **s == Some(true)).map(|(p, _)| *p).collect();
+            let closest_in = time(|| {
+                tree.closest_points(&inner);
+            });
+            let [tetra, fib] = [0, 1].map(|k| {
+                time(|| {
+                    tree.ball_radii(&inner, &balls[k]);
+                })
+            });
+            println!(
+                "| {} | {family} | {build:.4} s | {closest:.4} s | {inside_t:.4} s | {} | {closest_in:.4} s | {tetra:.4} s | {fib:.4} s | {:.2}, {:.2} |",
+                t.len(),
+                inner.len(),
+                tetra / closest_in,
+                fib / closest_in
+            );
+        }
+    }
 }
 
 fn stl(v: &[[f64; 3]], t: &[[u32; 3]]) -> Vec<u8> {
@@ -84,4 +177,5 @@ fn main() {
         let (a, b) = (points[0], points[points.len() - 1]);
         println!("growth exponent (arrays): {:.2}", (b.1 / a.1).ln() / (b.0 / a.0).ln());
     }
+    queries(max);
 }

@@ -295,24 +295,6 @@ typedef enum mx_warning_kind {
 } mx_warning_kind;
 
 /**
- * Where a point lies relative to a solid.
- */
-typedef enum mx_point_side {
-  /**
-   * Outside the material (a cavity is outside).
-   */
-  MX_OUTSIDE = 0,
-  /**
-   * Inside the material.
-   */
-  MX_INSIDE = 1,
-  /**
-   * Exactly on the surface.
-   */
-  MX_ON_SURFACE = 2,
-} mx_point_side;
-
-/**
  * The contact type of a ball touching a surface (thesis 3.1.2).
  */
 typedef enum mx_contact3_kind {
@@ -329,6 +311,24 @@ typedef enum mx_contact3_kind {
    */
   MX_CONTACT3_FV = 2,
 } mx_contact3_kind;
+
+/**
+ * Where a point lies relative to a solid.
+ */
+typedef enum mx_point_side {
+  /**
+   * Outside the material (a cavity is outside).
+   */
+  MX_OUTSIDE = 0,
+  /**
+   * Inside the material.
+   */
+  MX_INSIDE = 1,
+  /**
+   * Exactly on the surface.
+   */
+  MX_ON_SURFACE = 2,
+} mx_point_side;
 
 /**
  * `mx_uncut_region.kind`.
@@ -1092,6 +1092,39 @@ typedef struct mx_mesh3d_component {
 } mx_mesh3d_component;
 
 /**
+ * A maximal* ball (`mx_mesh3d_maximal_ball`): `centre + radius·B`.
+ */
+typedef struct mx_maximal_ball3 {
+  /**
+   * Its radius: 0 when the vertex's cone straddles the surface at the
+   * point, `INFINITY` when the ball grows without bound (outside the
+   * solid).
+   */
+  double radius;
+  /**
+   * Its centre, `point − radius·ṽ` (the point itself when unbounded).
+   */
+  double centre[3];
+  /**
+   * 1 when a contact stopped its growth (the fields below), 0 when
+   * unbounded.
+   */
+  int32_t has_opposite;
+  /**
+   * The triangle of that contact.
+   */
+  size_t opposite_triangle;
+  /**
+   * Where the ball touches it.
+   */
+  double opposite_point[3];
+  /**
+   * The contact's type.
+   */
+  enum mx_contact3_kind opposite_kind;
+} mx_maximal_ball3;
+
+/**
  * Everything `mx_mesh3d_query_points` tells about one point.
  */
 typedef struct mx_point_query3 {
@@ -1133,6 +1166,32 @@ typedef struct mx_point_query3 {
    */
   enum mx_contact3_kind contact_kind;
 } mx_point_query3;
+
+/**
+ * Where a ray first meets a solid's surface
+ * (`mx_mesh3d_first_hit`, `mx_mesh3d_first_hits`).
+ */
+typedef struct mx_ray_hit3 {
+  /**
+   * 1 when the ray meets the surface, else 0 (then `t`, `point` and
+   * `triangle` are 0).
+   */
+  int32_t hit;
+  /**
+   * Ray parameter, ≥ 0: the point is `origin + t·direction` (a distance
+   * only for a unit direction).
+   */
+  double t;
+  /**
+   * The point hit.
+   */
+  double point[3];
+  /**
+   * The triangle hit (as numbered by `mx_mesh3d_triangles`); where the
+   * ray passes through an edge or a corner, one of the triangles there.
+   */
+  size_t triangle;
+} mx_ray_hit3;
 
 /**
  * Options for `mx_offsets_compute` and `mx_offsets_from_axis`.
@@ -2335,6 +2394,47 @@ enum mx_status mx_mesh3d_triangles(const struct mx_mesh3d *mesh,
 enum mx_status mx_mesh3d_write(const struct mx_mesh3d *mesh, const char *path, uint32_t format);
 
 /**
+ * The maximal* ball under `ball` (a space ball) whose vertex `vertex`
+ * (an index into `mx_ball_vertices`) sits at `point` (three doubles,
+ * usually a surface point): the ball grows about `point` until it
+ * touches the surface elsewhere. It lies on the side of the surface the
+ * vertex points to.
+ *
+ * # Safety
+ * `mesh` and `ball` NULL or live handles; `point` NULL or three readable
+ * doubles; `out` NULL or writable.
+ */
+enum mx_status mx_mesh3d_maximal_ball(const struct mx_mesh3d *mesh,
+                                      const struct mx_ball *ball,
+                                      const double *point,
+                                      size_t vertex,
+                                      struct mx_maximal_ball3 *out);
+
+/**
+ * Maximal* balls for `xyz_len / 3` points at once (in parallel), point
+ * `i` with ball vertex `vertices[i]` (`vertices_len` = the number of
+ * points), into `balls` of `capacity` entries, their number in `*count`
+ * (capacity 0: a size query; a shorter buffer: `MX_ERR_BUFFER_TOO_SMALL`,
+ * nothing written). A NaN point or a vertex out of range fails the call
+ * naming it.
+ *
+ * # Safety
+ * `mesh` and `ball` NULL or live handles; `xyz` NULL (only when
+ * `xyz_len` is 0) or `xyz_len` readable doubles; `vertices` likewise with
+ * `vertices_len` entries; `balls` NULL or `capacity` writable entries;
+ * `count` NULL or writable.
+ */
+enum mx_status mx_mesh3d_maximal_balls(const struct mx_mesh3d *mesh,
+                                       const struct mx_ball *ball,
+                                       const double *xyz,
+                                       size_t xyz_len,
+                                       const size_t *vertices,
+                                       size_t vertices_len,
+                                       struct mx_maximal_ball3 *balls,
+                                       size_t capacity,
+                                       size_t *count);
+
+/**
  * Where `point` (three doubles) lies: inside, outside or on the surface,
  * decided exactly.
  *
@@ -2377,6 +2477,86 @@ enum mx_status mx_mesh3d_query_points(const struct mx_mesh3d *mesh,
                                       struct mx_point_query3 *answers,
                                       size_t capacity,
                                       size_t *count);
+
+/**
+ * Where the ray `origin + t·direction`, `t ≥ 0`, first meets the surface
+ * (edges and corners included), computed in `f64`; `out->hit` is 0 when
+ * it misses. A NaN or infinite number gives `MX_ERR_NON_FINITE`, a zero
+ * direction `MX_ERR_INVALID_ARGUMENT`.
+ *
+ * # Safety
+ * `mesh` NULL or a live handle; `origin` and `direction` NULL or three
+ * readable doubles each; `out` NULL or writable.
+ */
+enum mx_status mx_mesh3d_first_hit(const struct mx_mesh3d *mesh,
+                                   const double *origin,
+                                   const double *direction,
+                                   struct mx_ray_hit3 *out);
+
+/**
+ * The first hits of `rays_len / 6` rays at once (in parallel), each
+ * given by six numbers: origin x, y, z and direction x, y, z. Into `hits`
+ * of `capacity` entries, their number in `*count` (capacity 0: a size
+ * query; a shorter buffer: `MX_ERR_BUFFER_TOO_SMALL`, nothing written).
+ * A NaN or infinite number (`MX_ERR_NON_FINITE`) or a zero direction
+ * (`MX_ERR_INVALID_ARGUMENT`) fails the call naming the ray.
+ *
+ * # Safety
+ * `mesh` NULL or a live handle; `rays` NULL (only when `rays_len` is 0)
+ * or `rays_len` readable doubles; `hits` NULL or `capacity` writable
+ * entries; `count` NULL or writable.
+ */
+enum mx_status mx_mesh3d_first_hits(const struct mx_mesh3d *mesh,
+                                    const double *rays,
+                                    size_t rays_len,
+                                    struct mx_ray_hit3 *hits,
+                                    size_t capacity,
+                                    size_t *count);
+
+/**
+ * Whether the closed segment from `a` to `b` (three doubles each) meets
+ * the surface, exactly (touching counts; `a` = `b` asks about a point):
+ * `*out` 1 or 0. A NaN or infinite number gives `MX_ERR_NON_FINITE`.
+ *
+ * # Safety
+ * `mesh` NULL or a live handle; `a` and `b` NULL or three readable
+ * doubles each; `out` NULL or writable.
+ */
+enum mx_status mx_mesh3d_intersects_segment(const struct mx_mesh3d *mesh,
+                                            const double *a,
+                                            const double *b,
+                                            int32_t *out);
+
+/**
+ * Whether the closed triangle with corners `xyz9` (x, y, z of each of
+ * three corners) meets the surface, exactly (touching counts): `*out` 1
+ * or 0. Corners on one line ask about the segment they span, three equal
+ * corners about a point. A NaN or infinite number gives
+ * `MX_ERR_NON_FINITE`.
+ *
+ * # Safety
+ * `mesh` NULL or a live handle; `xyz9` NULL or nine readable doubles;
+ * `out` NULL or writable.
+ */
+enum mx_status mx_mesh3d_intersects_triangle(const struct mx_mesh3d *mesh,
+                                             const double *xyz9,
+                                             int32_t *out);
+
+/**
+ * Whether the closed axis-aligned box from `min` to `max` (three doubles
+ * each, `min[k] ≤ max[k]`; equal bounds make a flat box) meets the
+ * surface, exactly (touching counts): `*out` 1 or 0. A NaN or infinite
+ * number gives `MX_ERR_NON_FINITE`, `min[k] > max[k]`
+ * `MX_ERR_INVALID_ARGUMENT`.
+ *
+ * # Safety
+ * `mesh` NULL or a live handle; `min` and `max` NULL or three readable
+ * doubles each; `out` NULL or writable.
+ */
+enum mx_status mx_mesh3d_intersects_box(const struct mx_mesh3d *mesh,
+                                        const double *min,
+                                        const double *max,
+                                        int32_t *out);
 
 /**
  * Fills the caller's `mx_offset_options` with the defaults: `size` is its

@@ -333,3 +333,101 @@ fn the_radius_is_the_least_over_every_triangle_for_irrational_balls() {
         }
     }
 }
+
+/// The least gauge from `c` over the whole surface, by the brute-force
+/// enumeration (boxes farther than best · circumradius skipped).
+fn brute_radius(m: &Mesh3d, ball: &Ball3, c: Point3) -> f64 {
+    let reach = ball.vertices().iter().map(|w| w.norm()).fold(0.0, f64::max);
+    let mut order: Vec<(f64, usize)> = (0..m.triangles().len()).map(|k| (box_distance(corners(m, k), c), k)).collect();
+    order.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut best = f64::INFINITY;
+    for (d, k) in order {
+        if d > best * reach {
+            break;
+        }
+        best = best.min(float_on_triangle(ball, c, corners(m, k)));
+    }
+    best
+}
+
+/// Maximal* balls grown about surface points: the ball holds no surface
+/// point inside (brute force from its centre: radius ≥ r), it is maximal
+/// (grown by 1e-6 about the same point, the brute force finds a point
+/// inside), its vertex sits at the point, and the opposite contact lies
+/// on the ball. A vertex pointing out of the solid gives radius 0.
+#[test]
+fn maximal_balls_are_empty_and_cannot_grow() {
+    let mut rng = SmallRng::seed_from_u64(11);
+    let soups: [(&str, Soup); 2] = [
+        ("torus", torus(3.0, 1.0, 24, 12)),
+        ("box with cavity", {
+            let inner = cuboid([-1.0, -1.0, -1.5], [1.5, 1.0, 1.0]);
+            union(&[cuboid([-3.0; 3], [3.0; 3]), (inner.0, inner.1.iter().map(|t| [t[0], t[2], t[1]]).collect())])
+        }),
+    ];
+    let balls = [
+        ("tetrahedron", Ball3::tetrahedron()),
+        ("cube", Ball3::cube()),
+        ("turned octahedron", Ball3::octahedron().rotated([0.3, 0.2, -0.6]).unwrap()),
+        ("geodesic 80", Ball3::geodesic(80).unwrap()),
+    ];
+    let (mut grown, mut zero, mut unbounded) = (0, 0, 0);
+    for (mesh_name, (v, t)) in soups {
+        let m = Mesh3d::from_triangles(&v, &t, &MeshOptions::default()).unwrap();
+        for (ball_name, ball) in &balls {
+            for _ in 0..20 {
+                let k = rng.gen_range(0..m.triangles().len());
+                let [a, b, d] = corners(&m, k);
+                let (u, w) = (rng.gen_range(0.05..0.9f64), rng.gen_range(0.05..0.9f64));
+                let (u, w) = if u + w > 1.0 { (1.0 - u, 1.0 - w) } else { (u, w) };
+                let p = a + (b - a) * u + (d - a) * w;
+                let vertex = rng.gen_range(0..ball.vertices().len());
+                let mb = m.tree().maximal_ball(p, vertex, ball).unwrap();
+                let what = format!("{mesh_name}, {ball_name}, vertex {vertex} at {p:?}");
+                let vv = ball.vertices()[vertex];
+                let r = mb.radius;
+                assert!((mb.centre + vv * r - p).norm() <= 1e-9 * (1.0 + r), "{what}: vertex not at p");
+                // The vertex's cone points into the solid iff a small ball
+                // stays inside: decided apart from the library by the
+                // brute force at a tiny radius.
+                let tiny = 1e-7;
+                let small_ok = brute_radius(&m, ball, p - vv * tiny) >= tiny * (1.0 - 1e-6);
+                if !small_ok {
+                    assert!(r <= 1e-6, "{what}: the vertex points out, yet radius {r}");
+                    zero += 1;
+                    continue;
+                }
+                assert!(r > 1e-6, "{what}: the vertex points in, yet radius {r}");
+                if r.is_infinite() {
+                    // Unbounded outside: a ball far larger than the solid
+                    // still holds nothing.
+                    let huge = 1e3 * (m.bbox().max - m.bbox().min).norm() / ball.inradius();
+                    assert!(brute_radius(&m, ball, p - vv * huge) >= huge * (1.0 - 1e-9), "{what}: not unbounded");
+                    unbounded += 1;
+                    continue;
+                }
+                let empty = brute_radius(&m, ball, mb.centre);
+                assert!(empty >= r * (1.0 - 1e-9), "{what}: a surface point at gauge {empty} < {r} inside");
+                // Grown a little about p, it holds a surface point: the
+                // penetration grows with the growth times how steeply the
+                // opposite contact meets the growth, small when that
+                // contact nearly slides along a facet through p.
+                let bigger = r * (1.0 + 1e-6);
+                let poked = brute_radius(&m, ball, p - vv * bigger);
+                assert!(poked < bigger * (1.0 - 1e-14), "{what}: the ball grows past {r} ({poked})");
+                let o = mb.opposite.unwrap();
+                let contacts = m.tree().ball_contacts(mb.centre, r, ball, 1e-9);
+                for want in [o.triangle, k as u32] {
+                    assert!(contacts.iter().any(|c| c.triangle == want), "{what}: contact {want} not listed");
+                }
+                assert!(contacts.iter().all(|c| c.radius >= r * (1.0 - 1e-9)), "{what}: a contact inside the ball");
+                assert!((ball.gauge(o.point - mb.centre) - r).abs() <= 1e-9 * r, "{what}: opposite not on the ball");
+                grown += 1;
+            }
+        }
+    }
+    assert!(
+        grown >= 40 && zero >= 5 && unbounded >= 1,
+        "too few of each case: {grown} grown, {zero} zero, {unbounded} unbounded"
+    );
+}

@@ -153,6 +153,33 @@ pub(crate) unsafe fn fill_items<T>(
     Ok(())
 }
 
+/// The front of a batched query answering `n` items by protocol 2: a
+/// size query (capacity 0) writes `*count = n` and gives `Ok(false)`; a
+/// shorter buffer is refused before any work is done; else `Ok(true)`:
+/// compute, then [`fill_items`].
+///
+/// # Safety
+/// `count` NULL or writable.
+pub(crate) unsafe fn batch_room<T>(
+    buf: *mut T,
+    (capacity, count): (usize, *mut usize),
+    n: usize,
+    what: &str,
+) -> Result<bool, FfiError> {
+    if capacity == 0 {
+        // SAFETY: forwarded contract; nothing is written to `buf`.
+        unsafe { fill_items((buf, "buffer"), (0, count), (n, 1), std::iter::empty(), String::new)? };
+        return Ok(false);
+    }
+    if capacity < n {
+        return Err(FfiError::new(
+            mx_status::MX_ERR_BUFFER_TOO_SMALL,
+            format!("{n} {what}, the buffer room for {capacity}"),
+        ));
+    }
+    Ok(true)
+}
+
 /// NULL for an empty array: C callers never see a dangling pointer.
 pub(crate) fn ptr_or_null<T>(v: &[T]) -> *const T {
     if v.is_empty() {

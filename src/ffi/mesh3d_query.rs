@@ -3,14 +3,13 @@
 //! `c + r·B` at a centre under a space ball, one point or many at once.
 
 use super::ball::mx_ball;
-use super::boundary::{check_out, fill_items, guard, slice};
+use super::boundary::{batch_room, check_out, fill_items, guard, slice};
 use super::handles::{arg, query};
 use super::last_error::FfiError;
 use super::mesh3d::mx_mesh3d;
 use super::status::mx_status;
 use crate::kernel::Point3;
-use crate::shape::{Ball3, ContactKind3, Mesh3d};
-use rayon::prelude::*;
+use crate::shape::{ContactKind3, Mesh3d, Reach};
 
 /// Where a point lies relative to a solid.
 #[repr(C)]
@@ -68,7 +67,16 @@ fn point_of(xyz: &[f64]) -> Result<Point3, FfiError> {
     Ok(Point3::new(xyz[0], xyz[1], xyz[2]))
 }
 
-fn answer(m: &Mesh3d, ball: Option<&Ball3>, p: Point3) -> mx_point_query3 {
+pub(super) fn kind_of(k: ContactKind3) -> mx_contact3_kind {
+    match k {
+        ContactKind3::VertexFace => mx_contact3_kind::MX_CONTACT3_VF,
+        ContactKind3::EdgeEdge => mx_contact3_kind::MX_CONTACT3_EE,
+        ContactKind3::FaceVertex => mx_contact3_kind::MX_CONTACT3_FV,
+    }
+}
+
+/// `ball` prepared once per call (for many points, once for all).
+fn answer(m: &Mesh3d, ball: Option<&Reach<'_>>, p: Point3) -> mx_point_query3 {
     let side = match m.inside(p) {
         Some(true) => mx_point_side::MX_INSIDE,
         Some(false) => mx_point_side::MX_OUTSIDE,
@@ -87,16 +95,12 @@ fn answer(m: &Mesh3d, ball: Option<&Ball3>, p: Point3) -> mx_point_query3 {
         contact_kind: mx_contact3_kind::MX_CONTACT3_FV,
     };
     if let (Some(b), mx_point_side::MX_INSIDE) = (ball, side) {
-        let c = m.ball_radius(p, b);
+        let c = m.tree().ball_radius_with(p, b).expect("a valid solid has triangles");
         q.has_ball = 1;
         q.ball_radius = c.radius;
         q.contact = c.point.to_array();
         q.contact_triangle = c.triangle as usize;
-        q.contact_kind = match c.kind {
-            ContactKind3::VertexFace => mx_contact3_kind::MX_CONTACT3_VF,
-            ContactKind3::EdgeEdge => mx_contact3_kind::MX_CONTACT3_EE,
-            ContactKind3::FaceVertex => mx_contact3_kind::MX_CONTACT3_FV,
-        };
+        q.contact_kind = kind_of(c.kind);
     }
     q
 }
@@ -140,7 +144,7 @@ pub unsafe extern "C" fn mx_mesh3d_query_point(
         query(mesh, out, |m| {
             let b = if ball.is_null() { None } else { Some(arg(ball)?.as_space()?) };
             let p = point_of(slice(point, 3, "point")?)?;
-            Ok(answer(&m.inner, b, p))
+            Ok(answer(&m.inner, b.map(|b| b.reach()).as_ref(), p))
         })
     }
 }
@@ -179,16 +183,9 @@ pub unsafe extern "C" fn mx_mesh3d_query_points(
         // SAFETY: caller contract.
         let xyz = unsafe { slice(xyz, xyz_len, "xyz")? };
         let n = xyz_len / 3;
-        if capacity == 0 {
-            // SAFETY: checked non-NULL above.
-            unsafe { fill_items((answers, "answers"), (0, count), (n, 1), std::iter::empty(), String::new)? };
+        // SAFETY: `count` checked non-NULL above.
+        if !unsafe { batch_room(answers, (capacity, count), n, "points")? } {
             return Ok(());
-        }
-        if capacity < n {
-            return Err(FfiError::new(
-                mx_status::MX_ERR_BUFFER_TOO_SMALL,
-                format!("{n} points, the buffer room for {capacity}"),
-            ));
         }
         let points = xyz
             .chunks_exact(3)
@@ -199,7 +196,8 @@ pub unsafe extern "C" fn mx_mesh3d_query_points(
                 })
             })
             .collect::<Result<Vec<_>, _>>()?;
-        let found: Vec<mx_point_query3> = points.par_iter().map(|&p| answer(&m.inner, b, p)).collect();
+        let reach = b.map(|b| b.reach());
+        let found = m.inner.tree().batch_by(&points, |&p| p, |&p| answer(&m.inner, reach.as_ref(), p));
         // SAFETY: caller contract (`capacity` ≥ n writable entries).
         unsafe { fill_items((answers, "answers"), (capacity, count), (n, 1), found, String::new) }
     })

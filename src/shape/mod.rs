@@ -41,7 +41,7 @@ pub use draw::{draw_joints, push_loop_path, shape_document, shape_path};
 pub use index::box_tree::BoxTree;
 pub use index::chain_tree::ChainTree;
 pub use mesh::samples as mesh_samples;
-pub use mesh::{BallContact, Closest, ContactKind3, Hit, TriangleTree};
+pub use mesh::{BallContact, Closest, ContactKind3, Hit, MaximalBall, TriangleTree};
 pub use mesh::{Component, FaceRef, Faces, Mesh3d, MeshError, MeshOptions, MeshReport};
 pub use model::bulge_loop::{winding_contribution, Loop, LoopKind, Vertex};
 pub use model::error::{Degeneracy, ElementRef, ShapeError};

@@ -16,8 +16,13 @@
 //!
 //! * `closest.rs`: closest points and first hits of rays (`f64`).
 //! * `inside.rs`: exact point-in-solid by crossing parity.
+//! * `intersect.rs`: exact tests of a segment, a triangle or a box against
+//!   the surface.
 //! * `self_cross.rs`: exact self-intersections by a descent of the tree
 //!   against itself.
+//! * `ball_radius.rs`: the largest ball `c + r·B` at a centre under a
+//!   space ball; `maximal.rs`: maximal* balls grown about a point, and
+//!   every contact of a ball.
 
 use crate::kernel::{BBox3, Point3};
 
@@ -25,6 +30,9 @@ mod ball_radius;
 pub use ball_radius::{BallContact, ContactKind3};
 mod closest;
 mod inside;
+mod intersect;
+mod maximal;
+pub use maximal::MaximalBall;
 mod self_cross;
 
 /// Most triangles in a leaf: few enough that scanning a leaf costs about
@@ -275,7 +283,21 @@ impl TriangleTree {
     /// Z-order curve through the points: consecutive queries then walk the
     /// same nodes and triangles, which stay in cache, where queries in the
     /// caller's order (often random) would miss it at almost every node.
-    fn batch<T: Send + Copy + Default>(&self, points: &[Point3], query: impl Fn(Point3) -> T + Sync) -> Vec<T> {
+    fn batch<T: Send>(&self, points: &[Point3], query: impl Fn(Point3) -> T + Sync) -> Vec<T> {
+        self.batch_by(points, |&p| p, |&p| query(p))
+    }
+
+    /// Answers `query` for every item, in parallel, in the order of a
+    /// Z-order curve through the items' places `at(item)` (a ray at its
+    /// origin), returned in the items' order: for any batch of queries
+    /// against this tree (in random order, about half the time of asking
+    /// one by one at 10^6 triangles).
+    pub fn batch_by<I: Sync, T: Send>(
+        &self,
+        items: &[I],
+        at: impl Fn(&I) -> Point3 + Sync,
+        query: impl Fn(&I) -> T + Sync,
+    ) -> Vec<T> {
         use rayon::prelude::*;
         let b = self.bbox();
         let size = b.max - b.min;
@@ -283,10 +305,11 @@ impl TriangleTree {
             let t = if ext > 0.0 { (v - lo) / ext } else { 0.0 };
             (t.clamp(0.0, 1.0) * 2_097_151.0) as u64
         };
-        let mut order: Vec<(u64, usize)> = points
+        let mut order: Vec<(u64, usize)> = items
             .par_iter()
             .enumerate()
-            .map(|(i, p)| {
+            .map(|(i, item)| {
+                let p = at(item);
                 let key = spread3(cell(p.x, b.min.x, size.x))
                     | spread3(cell(p.y, b.min.y, size.y)) << 1
                     | spread3(cell(p.z, b.min.z, size.z)) << 2;
@@ -294,12 +317,9 @@ impl TriangleTree {
             })
             .collect();
         order.par_sort_unstable();
-        let answers: Vec<T> = order.par_iter().map(|&(_, i)| query(points[i])).collect();
-        let mut out = vec![T::default(); points.len()];
-        for (&(_, i), a) in order.iter().zip(answers) {
-            out[i] = a;
-        }
-        out
+        let mut answers: Vec<(usize, T)> = order.par_iter().map(|&(_, i)| (i, query(&items[i]))).collect();
+        answers.par_sort_unstable_by_key(|a| a.0);
+        answers.into_iter().map(|a| a.1).collect()
     }
 }
 

@@ -41,9 +41,18 @@ impl TriangleTree {
         self.ball_radius_with(c, &ball.reach())
     }
 
-    fn ball_radius_with(&self, c: Point3, reach: &Reach<'_>) -> Option<BallContact> {
+    /// [`ball_radius`](Self::ball_radius) with the ball prepared once
+    /// ([`Ball3::reach`]) for many questions.
+    pub fn ball_radius_with(&self, c: Point3, reach: &Reach<'_>) -> Option<BallContact> {
+        self.ball_radius_at(c, reach).map(|(contact, _)| contact)
+    }
+
+    /// [`ball_radius`](Self::ball_radius) with the tree position of the
+    /// triangle touched.
+    pub(super) fn ball_radius_at(&self, c: Point3, reach: &Reach<'_>) -> Option<(BallContact, usize)> {
         let root = self.nodes.first()?;
         let mut hint = ReachHint::default();
+        let mut at_k = 0;
         let mut best: Option<BallContact> = None;
         let beats = |lb: f64, best: &Option<BallContact>| best.is_none_or(|b| lb < b.radius);
         let mut stack = [(0u32, 0.0f64); 64];
@@ -69,6 +78,7 @@ impl TriangleTree {
                     if beats(r.radius, &best) {
                         best =
                             Some(BallContact { radius: r.radius, triangle: self.ids[k], point: r.point, kind: r.kind });
+                        at_k = k;
                     }
                 }
                 continue;
@@ -82,7 +92,7 @@ impl TriangleTree {
             stack[top + 1] = near;
             top += 2;
         }
-        best
+        best.map(|b| (b, at_k))
     }
 
     /// [`TriangleTree::ball_radius`] for many centres, in parallel (in an

@@ -118,9 +118,25 @@ impl TriangleTree {
     }
 
     /// Where the ray `origin + t·direction`, `t ≥ 0`, first meets the
-    /// surface (edges and corners included); `None` when it misses.
+    /// surface (edges and corners included); `None` when it misses, and
+    /// for a zero or non-finite direction or origin. Any finite direction
+    /// works, however short or long (`t` then overflows to infinity only
+    /// when the true parameter exceeds the largest `f64`).
     pub fn first_hit(&self, origin: Point3, direction: Point3) -> Option<Hit> {
         let root = self.nodes.first()?;
+        if !origin.is_finite() || !direction.is_finite() {
+            return None;
+        }
+        // The same ray with its direction scaled by a power of two to a
+        // largest component in [1, 2): Möller–Trumbore's determinant is
+        // then neither overflowed nor lost in underflow (a direction of
+        // 1e-310 used to miss everything, one of 1e300 every triangle
+        // with edges over 1e4 long).
+        let e = exponent(direction.x.abs().max(direction.y.abs()).max(direction.z.abs()))?;
+        // origin + t·(direction·s) is origin + (t·s)·direction.
+        let scaled = |v: f64| v * pow2(-e / 2) * pow2(-e + e / 2);
+        let direction = Point3::new(scaled(direction.x), scaled(direction.y), scaled(direction.z));
+        let unscale = |h: Hit| Hit { t: scaled(h.t), ..h };
         let scale = [root.bbox.min, root.bbox.max, origin]
             .iter()
             .map(|p| p.x.abs().max(p.y.abs()).max(p.z.abs()))
@@ -166,6 +182,24 @@ impl TriangleTree {
                 push(r, tr);
             }
         }
-        best
+        best.map(unscale)
     }
+}
+
+/// The exponent `e` with `2^e ≤ m < 2^(e+1)`, for `m` finite and positive.
+fn exponent(m: f64) -> Option<i32> {
+    if !(m > 0.0 && m.is_finite()) {
+        return None;
+    }
+    let raw = ((m.to_bits() >> 52) & 0x7ff) as i32;
+    if raw == 0 {
+        // Subnormal: 2^64 · m is normal, exactly.
+        return exponent(m * pow2(64)).map(|e| e - 64);
+    }
+    Some(raw - 1023)
+}
+
+/// 2^k for −1022 ≤ k ≤ 1023 (callers split larger powers in two).
+fn pow2(k: i32) -> f64 {
+    f64::from_bits(((k + 1023) as u64) << 52)
 }

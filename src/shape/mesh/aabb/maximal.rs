@@ -1,0 +1,182 @@
+//! Maximal* balls (thesis 3.3.2.2): the largest ball `c + r·B` inside the
+//! solid whose copy of a chosen ball vertex `ṽ` sits at a given point `p`
+//! (a point of a contact class's contact plane, usually of the surface).
+//! The balls `p + r·(B − ṽ)` grow about `p` and are nested, so there is a
+//! largest radius before one pokes through the surface.
+//!
+//! The thesis's iterative shrinking, on the largest-ball query: start
+//! with a ball too large for the solid; while the largest ball at its
+//! centre is smaller than it (some triangle pokes into it), shrink about
+//! `p` to the radius at which that triangle first enters; the radius
+//! strictly decreases and each step ends at a triangle's entry, so a few
+//! steps reach the ball no triangle enters, the maximal* ball. A
+//! triangle's entry radius is where `g(s) = reach(T, p − s·ṽ) − s` turns
+//! negative; `g` is continuous and piecewise linear and crosses once
+//! (nested balls), so regula falsi lands on it in a few steps.
+//!
+//! Its contacts, all the triangles the final ball touches, come from
+//! [`TriangleTree::ball_contacts`].
+
+use super::{BallContact, TriangleTree};
+use crate::kernel::Point3;
+use crate::shape::ball::{Ball3, Reach, ReachHint};
+
+/// A maximal* ball: `centre + radius·B`, its vertex `ṽ` at the point asked.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MaximalBall {
+    /// Its radius (0: the ball vertex points out of the solid at `p`).
+    pub radius: f64,
+    /// Its centre `p − radius·ṽ`.
+    pub centre: Point3,
+    /// The contact that stopped its growth (the thesis's opposite
+    /// contact): where the next larger ball would poke through. `None`
+    /// when nothing does: outside the solid a ball may grow without bound
+    /// (then `radius` is infinite and `centre` is the point asked).
+    pub opposite: Option<BallContact>,
+}
+
+/// Relative gap within which a larger ball counts as touching, not
+/// poking: the rounding of a centre and a gauge, with room.
+const TOUCH: f64 = 1e-12;
+
+impl TriangleTree {
+    /// The maximal* ball with ball vertex `vertex` at `p` (`None` for an
+    /// empty tree or a vertex index out of range). For `p` on the surface
+    /// the ball lies on the side the vertex's cone points to: in the
+    /// solid, in a cavity or outside (where it may be unbounded); a cone
+    /// that straddles the surface gives radius 0.
+    pub fn maximal_ball(&self, p: Point3, vertex: usize, ball: &Ball3) -> Option<MaximalBall> {
+        self.maximal_ball_with(p, vertex, &ball.reach())
+    }
+
+    /// [`maximal_ball`](Self::maximal_ball) for many points, point `i` with
+    /// ball vertex `asked[i].1`, in parallel (in Z-order of the points).
+    pub fn maximal_balls(&self, asked: &[(Point3, usize)], ball: &Ball3) -> Vec<Option<MaximalBall>> {
+        let reach = ball.reach();
+        self.batch_by(asked, |a| a.0, |&(p, v)| self.maximal_ball_with(p, v, &reach))
+    }
+
+    /// [`maximal_ball`](Self::maximal_ball) with the ball prepared once.
+    pub fn maximal_ball_with(&self, p: Point3, vertex: usize, reach: &Reach<'_>) -> Option<MaximalBall> {
+        let ball = reach.ball();
+        let v = *ball.vertices().get(vertex)?;
+        let b = self.bbox();
+        let diag = (b.max - b.min).norm().max((p - b.min).norm()).max((p - b.max).norm());
+        // A ball holding a Euclidean ball wider than the whole surface
+        // cannot lie in the solid or in a cavity; outside, it may still
+        // miss everything, and then larger ones are tried: a triangle
+        // only a far larger ball reaches is within 1e-12 of the vertex's
+        // cone, where it would touch rather than poke.
+        let mut r = 2.0 * diag / ball.inradius() + 1.0;
+        let mut first = self.ball_radius_at(p - v * r, reach)?;
+        for _ in 0..3 {
+            if first.0.radius < r * (1.0 - TOUCH) {
+                break;
+            }
+            r *= 1e4;
+            first = self.ball_radius_at(p - v * r, reach)?;
+        }
+        if first.0.radius >= r * (1.0 - TOUCH) {
+            return Some(MaximalBall { radius: f64::INFINITY, centre: p, opposite: None });
+        }
+        let (mut hit, mut k) = first;
+        for _ in 0..1000 {
+            let t = self.corners(k);
+            r = entry_radius(reach, p, v, t, r);
+            let centre = p - v * r;
+            let touch = reach.triangle(centre, t, &mut ReachHint::default());
+            let opposite = BallContact { radius: r, triangle: hit.triangle, point: touch.point, kind: touch.kind };
+            if r == 0.0 {
+                return Some(MaximalBall { radius: 0.0, centre: p, opposite: Some(opposite) });
+            }
+            (hit, k) = self.ball_radius_at(centre, reach)?;
+            if hit.radius >= r * (1.0 - TOUCH) {
+                return Some(MaximalBall { radius: r, centre, opposite: Some(opposite) });
+            }
+        }
+        // Each step ends at a triangle's entry radius with the radius
+        // strictly decreasing, so 1000 steps mean triangles entering in
+        // an endless rounding cycle: report the last, which may poke by
+        // a rounding's worth.
+        let centre = p - v * r;
+        let touch = reach.triangle(centre, self.corners(k), &mut ReachHint::default());
+        let opposite = BallContact { radius: r, triangle: hit.triangle, point: touch.point, kind: touch.kind };
+        Some(MaximalBall { radius: r, centre, opposite: Some(opposite) })
+    }
+
+    /// Every triangle the ball `c + r·B` touches within a relative `tol`
+    /// (its least gauge from `c` at most `r·(1 + tol)`), with where.
+    pub fn ball_contacts(&self, c: Point3, r: f64, ball: &Ball3, tol: f64) -> Vec<BallContact> {
+        let reach = ball.reach();
+        let limit = r * (1.0 + tol);
+        let mut hint = ReachHint::default();
+        let mut out = Vec::new();
+        let _ = self.visit(
+            |b| reach.over_box(b, c) <= limit,
+            |k| {
+                let t = self.corners(k);
+                if reach.over_triangle(t, c, f64::INFINITY, &mut hint) <= limit {
+                    let got = reach.triangle(c, t, &mut hint);
+                    if got.radius <= limit {
+                        out.push(BallContact {
+                            radius: got.radius,
+                            triangle: self.ids[k],
+                            point: got.point,
+                            kind: got.kind,
+                        });
+                    }
+                }
+                std::ops::ControlFlow::Continue(())
+            },
+        );
+        out.sort_by_key(|c| c.triangle);
+        out
+    }
+}
+
+/// The radius below `hi` at which triangle `t` first enters the ball
+/// `p − s·v + s·B` as `s` grows: the last `s` with
+/// `g(s) = reach(t, p − s·v) − s ≥ 0`, given `g(hi) < 0` (`g(0) ≥ 0`: a
+/// gauge). No slack here: a triangle through `p` is only asked about when
+/// it pokes by more than [`TOUCH`], and such a one pokes at every radius
+/// alike (near `p` the balls are one cone), so its answer is 0 anyway.
+/// Regula falsi with the Illinois halving keeps a bracket that shrinks on
+/// both sides; `g` is piecewise linear, so a step on the final piece lands
+/// on the root.
+fn entry_radius(reach: &Reach<'_>, p: Point3, v: Point3, t: [Point3; 3], hi: f64) -> f64 {
+    let mut hint = ReachHint::default();
+    let mut g = |s: f64| reach.triangle(p - v * s, t, &mut hint).radius - s;
+    let (mut lo, mut hi) = (0.0f64, hi);
+    let (mut g_lo, mut g_hi) = (g(lo), g(hi));
+    if g_lo < 0.0 {
+        return 0.0;
+    }
+    let mut side = 0;
+    for _ in 0..200 {
+        if hi - lo <= 4.0 * f64::EPSILON * hi {
+            break;
+        }
+        let mut s = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
+        if !(s > lo && s < hi) {
+            s = 0.5 * (lo + hi);
+        }
+        let gs = g(s);
+        if gs >= 0.0 {
+            (lo, g_lo) = (s, gs);
+            if side == -1 {
+                g_hi *= 0.5;
+            }
+            side = -1;
+        } else {
+            (hi, g_hi) = (s, gs);
+            if side == 1 {
+                g_lo *= 0.5;
+            }
+            side = 1;
+        }
+        if gs == 0.0 {
+            break;
+        }
+    }
+    lo
+}
