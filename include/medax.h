@@ -2414,9 +2414,9 @@ enum mx_status mx_mesh3d_maximal_ball(const struct mx_mesh3d *mesh,
  * Maximal* balls for `xyz_len / 3` points at once (in parallel), point
  * `i` with ball vertex `vertices[i]` (`vertices_len` = the number of
  * points), into `balls` of `capacity` entries, their number in `*count`
- * (capacity 0: a size query; a shorter buffer: `MX_ERR_BUFFER_TOO_SMALL`,
- * nothing written). A NaN point or a vertex out of range fails the call
- * naming it.
+ * (capacity 0: a size query, which checks only the lengths; a shorter
+ * buffer: `MX_ERR_BUFFER_TOO_SMALL`, nothing written). A NaN point or a
+ * vertex out of range fails the call naming it.
  *
  * # Safety
  * `mesh` and `ball` NULL or live handles; `xyz` NULL (only when

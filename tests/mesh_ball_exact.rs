@@ -358,8 +358,11 @@ fn brute_radius(m: &Mesh3d, ball: &Ball3, c: Point3) -> f64 {
 #[test]
 fn maximal_balls_are_empty_and_cannot_grow() {
     let mut rng = SmallRng::seed_from_u64(11);
-    let soups: [(&str, Soup); 2] = [
+    let soups: [(&str, Soup); 3] = [
         ("torus", torus(3.0, 1.0, 24, 12)),
+        // Thin and far from the origin: the rounding of coordinates near
+        // 3·10^4 is large against a ball of radius 0.01.
+        ("thin plate far away", cuboid([1e4, 2e4, -3e4], [1e4 + 20.0, 2e4 + 10.0, -3e4 + 0.02])),
         ("box with cavity", {
             let inner = cuboid([-1.0, -1.0, -1.5], [1.5, 1.0, 1.0]);
             union(&[cuboid([-3.0; 3], [3.0; 3]), (inner.0, inner.1.iter().map(|t| [t[0], t[2], t[1]]).collect())])
@@ -386,11 +389,19 @@ fn maximal_balls_are_empty_and_cannot_grow() {
                 let what = format!("{mesh_name}, {ball_name}, vertex {vertex} at {p:?}");
                 let vv = ball.vertices()[vertex];
                 let r = mb.radius;
+                // Rounding of coordinates of size `big` moves a gauge by
+                // about ε·big / inradius: far from the origin that is
+                // large against a small ball.
+                let big = [m.bbox().min, m.bbox().max]
+                    .iter()
+                    .map(|q| q.x.abs().max(q.y.abs()).max(q.z.abs()))
+                    .fold(0.0, f64::max);
+                let rounding = 16.0 * f64::EPSILON * big / ball.inradius();
                 assert!((mb.centre + vv * r - p).norm() <= 1e-9 * (1.0 + r), "{what}: vertex not at p");
                 // The vertex's cone points into the solid iff a small ball
                 // stays inside: decided apart from the library by the
                 // brute force at a tiny radius.
-                let tiny = 1e-7;
+                let tiny = 1e-5;
                 let small_ok = brute_radius(&m, ball, p - vv * tiny) >= tiny * (1.0 - 1e-6);
                 if !small_ok {
                     assert!(r <= 1e-6, "{what}: the vertex points out, yet radius {r}");
@@ -407,21 +418,27 @@ fn maximal_balls_are_empty_and_cannot_grow() {
                     continue;
                 }
                 let empty = brute_radius(&m, ball, mb.centre);
-                assert!(empty >= r * (1.0 - 1e-9), "{what}: a surface point at gauge {empty} < {r} inside");
+                assert!(empty >= r * (1.0 - 1e-9) - rounding, "{what}: a surface point at gauge {empty} < {r} inside");
                 // Grown a little about p, it holds a surface point: the
                 // penetration grows with the growth times how steeply the
                 // opposite contact meets the growth, small when that
                 // contact nearly slides along a facet through p.
-                let bigger = r * (1.0 + 1e-6);
+                let bigger = r * (1.0 + 1e-6) + 1e3 * rounding;
                 let poked = brute_radius(&m, ball, p - vv * bigger);
-                assert!(poked < bigger * (1.0 - 1e-14), "{what}: the ball grows past {r} ({poked})");
+                assert!(poked < bigger * (1.0 - 1e-14) - rounding, "{what}: the ball grows past {r} ({poked})");
                 let o = mb.opposite.unwrap();
-                let contacts = m.tree().ball_contacts(mb.centre, r, ball, 1e-9);
+                let contacts = m.tree().ball_contacts(mb.centre, r, ball, 1e-9 + rounding / r);
                 for want in [o.triangle, k as u32] {
                     assert!(contacts.iter().any(|c| c.triangle == want), "{what}: contact {want} not listed");
                 }
-                assert!(contacts.iter().all(|c| c.radius >= r * (1.0 - 1e-9)), "{what}: a contact inside the ball");
-                assert!((ball.gauge(o.point - mb.centre) - r).abs() <= 1e-9 * r, "{what}: opposite not on the ball");
+                assert!(
+                    contacts.iter().all(|c| c.radius >= r * (1.0 - 1e-9) - rounding),
+                    "{what}: a contact inside the ball"
+                );
+                assert!(
+                    (ball.gauge(o.point - mb.centre) - r).abs() <= 1e-9 * r + rounding,
+                    "{what}: opposite not on the ball"
+                );
                 grown += 1;
             }
         }

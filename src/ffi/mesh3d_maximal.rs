@@ -69,8 +69,15 @@ fn to_c(b: MaximalBall) -> mx_maximal_ball3 {
     out
 }
 
-fn maximal(m: &Mesh3d, reach: &Reach<'_>, p: Point3, vertex: usize) -> mx_maximal_ball3 {
-    to_c(m.tree().maximal_ball_with(p, vertex, reach).expect("a valid solid has triangles; the vertex was checked"))
+/// The ball for a checked vertex; `None` only when coordinates are so
+/// large that the first ball's radius overflows.
+fn maximal(m: &Mesh3d, reach: &Reach<'_>, p: Point3, vertex: usize) -> Result<mx_maximal_ball3, FfiError> {
+    m.tree().maximal_ball_with(p, vertex, reach).map(to_c).ok_or_else(|| {
+        FfiError::new(
+            mx_status::MX_ERR_NON_FINITE,
+            "the point and the solid are too large for a ball's radius (overflow)",
+        )
+    })
 }
 
 /// The maximal* ball under `ball` (a space ball) whose vertex `vertex`
@@ -96,7 +103,7 @@ pub unsafe extern "C" fn mx_mesh3d_maximal_ball(
             let b = arg(ball)?.as_space()?;
             let p = point_at(slice(point, 3, "point")?, "`point`")?;
             vertex_in(b, vertex, "vertex")?;
-            Ok(maximal(&m.inner, &b.reach(), p, vertex))
+            maximal(&m.inner, &b.reach(), p, vertex)
         })
     }
 }
@@ -104,9 +111,9 @@ pub unsafe extern "C" fn mx_mesh3d_maximal_ball(
 /// Maximal* balls for `xyz_len / 3` points at once (in parallel), point
 /// `i` with ball vertex `vertices[i]` (`vertices_len` = the number of
 /// points), into `balls` of `capacity` entries, their number in `*count`
-/// (capacity 0: a size query; a shorter buffer: `MX_ERR_BUFFER_TOO_SMALL`,
-/// nothing written). A NaN point or a vertex out of range fails the call
-/// naming it.
+/// (capacity 0: a size query, which checks only the lengths; a shorter
+/// buffer: `MX_ERR_BUFFER_TOO_SMALL`, nothing written). A NaN point or a
+/// vertex out of range fails the call naming it.
 ///
 /// # Safety
 /// `mesh` and `ball` NULL or live handles; `xyz` NULL (only when
@@ -152,6 +159,7 @@ pub unsafe extern "C" fn mx_mesh3d_maximal_balls(
         }
         let reach = b.reach();
         let found = m.inner.tree().batch_by(&asked, |a| a.0, |&(p, v)| maximal(&m.inner, &reach, p, v));
+        let found = found.into_iter().collect::<Result<Vec<_>, _>>()?;
         // SAFETY: caller contract (`capacity` ≥ n writable entries).
         unsafe { fill_items((balls, "balls"), (capacity, count), (n, 1), found, String::new) }
     })

@@ -36,12 +36,39 @@ pub struct MaximalBall {
 }
 
 /// Relative gap within which a larger ball counts as touching, not
-/// poking: the rounding of a centre and a gauge, with room.
+/// poking: the rounding of a gauge, with room.
 const TOUCH: f64 = 1e-12;
+
+/// How far a computed gauge from the centre `p − s·ṽ` may be off, beyond
+/// the relative [`TOUCH`]: the centre and the corners carry rounding of
+/// their own size (`ε·|coordinate|`), which a thin part far from the origin
+/// makes large against `s`, and a gauge multiplies it by at most
+/// 1 / inradius.
+struct Slack {
+    /// ε-scaled size of the coordinates in play, over the inradius.
+    base: f64,
+    /// The same for the part that grows with the radius.
+    per_radius: f64,
+}
+
+impl Slack {
+    fn new(p: Point3, b: &crate::kernel::BBox3, ball: &Ball3) -> Slack {
+        let size = |q: Point3| q.x.abs().max(q.y.abs()).max(q.z.abs());
+        let k = 64.0 * f64::EPSILON / ball.inradius();
+        Slack { base: k * size(p).max(size(b.min)).max(size(b.max)), per_radius: k * ball.circumradius() }
+    }
+
+    /// Whether a least gauge `got` from the centre of the ball of radius
+    /// `s` means a triangle enters that ball.
+    fn pokes(&self, got: f64, s: f64) -> bool {
+        got < s * (1.0 - TOUCH) - self.base - self.per_radius * s
+    }
+}
 
 impl TriangleTree {
     /// The maximal* ball with ball vertex `vertex` at `p` (`None` for an
-    /// empty tree or a vertex index out of range). For `p` on the surface
+    /// empty tree, a vertex index out of range, or coordinates so large
+    /// that the first ball's radius overflows). For `p` on the surface
     /// the ball lies on the side the vertex's cone points to: in the
     /// solid, in a cavity or outside (where it may be unbounded); a cone
     /// that straddles the surface gives radius 0.
@@ -61,28 +88,36 @@ impl TriangleTree {
         let ball = reach.ball();
         let v = *ball.vertices().get(vertex)?;
         let b = self.bbox();
-        let diag = (b.max - b.min).norm().max((p - b.min).norm()).max((p - b.max).norm());
-        // A ball holding a Euclidean ball wider than the whole surface
-        // cannot lie in the solid or in a cavity; outside, it may still
-        // miss everything, and then larger ones are tried: a triangle
-        // only a far larger ball reaches is within 1e-12 of the vertex's
-        // cone, where it would touch rather than poke.
-        let mut r = 2.0 * diag / ball.inradius() + 1.0;
-        let mut first = self.ball_radius_at(p - v * r, reach)?;
-        for _ in 0..3 {
-            if first.0.radius < r * (1.0 - TOUCH) {
-                break;
-            }
-            r *= 1e4;
-            first = self.ball_radius_at(p - v * r, reach)?;
+        let slack = Slack::new(p, &b, ball);
+        // Beyond the radius `reach_all` the ball holds every point of the
+        // vertex's cone about p within `far` of p: the ball p + s·(B − ṽ)
+        // holds q when every facet not through ṽ has
+        // row·(q − p) ≤ s·(1 − row·ṽ), and row·(q − p) ≤ far / inradius.
+        // So a ball that large which holds no surface point inside is
+        // never stopped: unbounded (outside the solid).
+        let far = (b.max - b.min).norm().max((p - b.min).norm()).max((p - b.max).norm());
+        let rows = ball.gauge_rows();
+        let margin = rows.iter().map(|a| 1.0 - a.dot(v)).filter(|&m| m > 1e-9).fold(f64::INFINITY, f64::min);
+        let mut r = 2.0 * far / (ball.inradius() * margin.min(1.0));
+        if !r.is_finite() {
+            return None;
         }
-        if first.0.radius >= r * (1.0 - TOUCH) {
+        let first = self.ball_radius_at(p - v * r, reach)?;
+        if !slack.pokes(first.0.radius, r) {
             return Some(MaximalBall { radius: f64::INFINITY, centre: p, opposite: None });
         }
+        // Each step shrinks to the entry radius of a triangle that poked,
+        // which pokes no more; balls are nested, so a triangle that stops
+        // poking never pokes again, and the steps are at most the
+        // triangles (the bound only guards against a bug).
         let (mut hit, mut k) = first;
-        for _ in 0..1000 {
+        for _ in 0..=self.len() {
             let t = self.corners(k);
             r = entry_radius(reach, p, v, t, r);
+            if r <= 4.0 * slack.base {
+                // Within rounding of 0: the cone straddles the surface.
+                r = 0.0;
+            }
             let centre = p - v * r;
             let touch = reach.triangle(centre, t, &mut ReachHint::default());
             let opposite = BallContact { radius: r, triangle: hit.triangle, point: touch.point, kind: touch.kind };
@@ -90,18 +125,11 @@ impl TriangleTree {
                 return Some(MaximalBall { radius: 0.0, centre: p, opposite: Some(opposite) });
             }
             (hit, k) = self.ball_radius_at(centre, reach)?;
-            if hit.radius >= r * (1.0 - TOUCH) {
+            if !slack.pokes(hit.radius, r) {
                 return Some(MaximalBall { radius: r, centre, opposite: Some(opposite) });
             }
         }
-        // Each step ends at a triangle's entry radius with the radius
-        // strictly decreasing, so 1000 steps mean triangles entering in
-        // an endless rounding cycle: report the last, which may poke by
-        // a rounding's worth.
-        let centre = p - v * r;
-        let touch = reach.triangle(centre, self.corners(k), &mut ReachHint::default());
-        let opposite = BallContact { radius: r, triangle: hit.triangle, point: touch.point, kind: touch.kind };
-        Some(MaximalBall { radius: r, centre, opposite: Some(opposite) })
+        None
     }
 
     /// Every triangle the ball `c + r·B` touches within a relative `tol`
@@ -136,13 +164,15 @@ impl TriangleTree {
 
 /// The radius below `hi` at which triangle `t` first enters the ball
 /// `p − s·v + s·B` as `s` grows: the last `s` with
-/// `g(s) = reach(t, p − s·v) − s ≥ 0`, given `g(hi) < 0` (`g(0) ≥ 0`: a
-/// gauge). No slack here: a triangle through `p` is only asked about when
-/// it pokes by more than [`TOUCH`], and such a one pokes at every radius
-/// alike (near `p` the balls are one cone), so its answer is 0 anyway.
-/// Regula falsi with the Illinois halving keeps a bracket that shrinks on
-/// both sides; `g` is piecewise linear, so a step on the final piece lands
-/// on the root.
+/// `g(s) = reach(t, p − s·v) − s ≥ 0`, given that `t` pokes at `hi` by
+/// more than the [`Slack`] (`g(0) ≥ 0`: a gauge). No slack in `g`, so the
+/// answer is the crossing itself: a triangle through `p` that only touches
+/// there (its `g` zero up to rounding at every radius) never gets here,
+/// as the caller asks only about triangles that poke beyond rounding, and
+/// one through `p` that pokes does so at every radius (near `p` the balls
+/// are one cone), so its answer is 0. Regula falsi with the Illinois
+/// halving keeps a bracket that shrinks on both sides; `g` is piecewise
+/// linear, so a step on the final piece lands on the root.
 fn entry_radius(reach: &Reach<'_>, p: Point3, v: Point3, t: [Point3; 3], hi: f64) -> f64 {
     let mut hint = ReachHint::default();
     let mut g = |s: f64| reach.triangle(p - v * s, t, &mut hint).radius - s;
