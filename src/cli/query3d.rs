@@ -68,6 +68,9 @@ pub fn run(mesh_path: &Path, ball: Option<&str>, points: &Path, json_out: Option
     let mesh = Mesh3d::from_path(mesh_path, &MeshOptions::default())
         .map_err(|e| fail(format!("{}: {e}", mesh_path.display()), 1))?;
     let points = read_points(points).map_err(|m| fail(m, 2))?;
+    // The ball prepared once for all points (its facet graph and
+    // direction table), not once per point.
+    let reach = ball.as_ref().map(|b| b.reach());
     let results: Vec<Value> = points
         .par_iter()
         .map(|&p| {
@@ -79,8 +82,8 @@ pub fn run(mesh_path: &Path, ball: Option<&str>, points: &Path, json_out: Option
                 "distance": c.squared_distance.sqrt(),
                 "closest": c.point.to_array(),
             });
-            if let (Some(b), Some(true)) = (&ball, side) {
-                let k = mesh.ball_radius(p, b);
+            if let (Some(b), Some(true)) = (&reach, side) {
+                let k = mesh.tree().ball_radius_with(p, b).expect("a valid solid has triangles");
                 r["ball_radius"] = json!(k.radius);
                 r["contact"] = json!({"point": k.point.to_array(), "triangle": k.triangle, "kind": kind_name(k.kind)});
             }
