@@ -17,8 +17,10 @@
 //! in practice one or two.
 //!
 //! The value returned is the gauge evaluated at the point found, a point
-//! of T (clamped there), so it bounds the true minimum from above whatever
-//! rounding did to the point; the exact contact class is decided apart.
+//! of T (clamped there), so rounding that moved the point can only raise
+//! it: it bounds the true minimum from above up to the rounding of that
+//! one gauge (itself a climb in `f64`). The exact contact class is to be
+//! decided apart.
 
 use super::Ball3;
 use crate::kernel::{BBox3, Point3};
