@@ -12,13 +12,17 @@
 //! hull of 66 points of a Fibonacci sphere (128 facets; the geodesic balls
 //! have 80 or 320), against closest points at the same inside points
 //! (ctest/bench_mesh.cpp times the C API beside CGAL on the same family).
+//! A third table times the exact contacts (`exact_contacts_many`: the
+//! same search, then the triangles near the answer again in exact
+//! arithmetic) against the `f64` ball radius on the first 10^4 inside
+//! points, with how often the floating filter had to give way.
 //!
 //! `cargo run --release --example bench_mesh -- [threads] [max_triangles]`
 
 use medax::io::mesh::{write_off, write_ply, MeshFormat};
 use medax::kernel::Point3;
 use medax::shape::mesh_samples::torus;
-use medax::shape::{Ball3, Mesh3d, MeshOptions, TriangleTree};
+use medax::shape::{Ball3, ContactKind3, Mesh3d, MeshOptions, TriangleTree};
 use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
 use std::time::Instant;
@@ -121,6 +125,36 @@ fn queries(max: usize) {
     }
 }
 
+fn exact(max: usize) {
+    let balls = [Ball3::tetrahedron(), fibonacci_ball()];
+    println!("\nExact contacts at 10^4 inside points (\"near\" family), against the f64 ball radius:\n");
+    println!("| triangles | ball | f64 radius | exact contacts | ratio | non-regular contacts | flat |");
+    println!("|---:|---|---:|---:|---:|---:|---:|");
+    for n in [10_000usize, 100_000, 1_000_000].into_iter().filter(|&n| n <= max) {
+        let b = ((n / 4) as f64).sqrt().round() as usize;
+        let (v, t) = torus(3.0, 1.0, 2 * b, b);
+        let mesh = Mesh3d::from_triangles(&v, &t, &MeshOptions::default()).unwrap();
+        let tree = mesh.tree();
+        let [(_, pts), _] = families(&v, &t, 20261207 + n as u64);
+        let sides = tree.inside_many(&pts);
+        let inner: Vec<Point3> =
+            pts.iter().zip(&sides).filter(|(_, s)| **s == Some(true)).map(|(p, _)| *p).take(10_000).collect();
+        for (name, ball) in [("tetra", &balls[0]), ("128 facets", &balls[1])] {
+            let f = time(|| {
+                tree.ball_radii(&inner, ball);
+            });
+            let e = time(|| {
+                tree.exact_contacts_many(&inner, ball);
+            });
+            let got = tree.exact_contacts_many(&inner, ball);
+            let regular = [ContactKind3::VertexFace, ContactKind3::EdgeEdge, ContactKind3::FaceVertex];
+            let odd = got.iter().flatten().filter(|x| x.contacts.iter().any(|c| !regular.contains(&c.kind))).count();
+            let flat = got.iter().flatten().filter(|x| x.flat).count();
+            println!("| {} | {name} | {f:.4} s | {e:.4} s | {:.1} | {odd} | {flat} |", t.len(), e / f);
+        }
+    }
+}
+
 fn stl(v: &[[f64; 3]], t: &[[u32; 3]]) -> Vec<u8> {
     let mut out = vec![0u8; 80];
     out.extend((t.len() as u32).to_le_bytes());
@@ -178,4 +212,5 @@ fn main() {
         println!("growth exponent (arrays): {:.2}", (b.1 / a.1).ln() / (b.0 / a.0).ln());
     }
     queries(max);
+    exact(max);
 }

@@ -307,9 +307,22 @@ typedef enum mx_contact3_kind {
    */
   MX_CONTACT3_EE = 1,
   /**
-   * A corner of a triangle on the ball's boundary (FV, EV or VV).
+   * A vertex of the surface on a ball facet (FV; from the `f64` queries
+   * any point of the ball's boundary).
    */
   MX_CONTACT3_FV = 2,
+  /**
+   * A vertex of the ball on an edge of the surface (VE; exact queries).
+   */
+  MX_CONTACT3_VE = 3,
+  /**
+   * A vertex of the surface on an edge of the ball (EV; exact queries).
+   */
+  MX_CONTACT3_EV = 4,
+  /**
+   * A vertex of the ball on a vertex of the surface (VV; exact queries).
+   */
+  MX_CONTACT3_VV = 5,
 } mx_contact3_kind;
 
 /**

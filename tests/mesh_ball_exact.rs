@@ -13,140 +13,14 @@
 //! * In `f64`, for balls no integer can give (icosahedron, geodesic
 //!   spheres, turned balls): the same enumeration in floating point.
 
+mod common;
+
+use common::rational::{exact_on_triangle, exact_planes, integer_meshes, v_of, Soup};
 use medax::kernel::Point3;
 use medax::shape::mesh_samples::{cuboid, sphere, torus, union};
 use medax::shape::{Ball3, Mesh3d, MeshOptions};
 use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
-use std::cmp::Ordering;
-
-/// A rational `n / d` with `d > 0`, reduced.
-#[derive(Clone, Copy, Debug)]
-struct Q(i128, i128);
-
-fn gcd(a: i128, b: i128) -> i128 {
-    let (mut a, mut b) = (a.abs(), b.abs());
-    while b != 0 {
-        (a, b) = (b, a % b);
-    }
-    a.max(1)
-}
-
-impl Q {
-    fn new(n: i128, d: i128) -> Q {
-        assert!(d != 0);
-        let g = gcd(n, d) * d.signum();
-        Q(n / g, d / g)
-    }
-    fn int(n: i128) -> Q {
-        Q(n, 1)
-    }
-    fn add(self, o: Q) -> Q {
-        Q::new(self.0.checked_mul(o.1).unwrap() + o.0.checked_mul(self.1).unwrap(), self.1.checked_mul(o.1).unwrap())
-    }
-    fn sub(self, o: Q) -> Q {
-        self.add(Q(-o.0, o.1))
-    }
-    fn mul(self, o: Q) -> Q {
-        Q::new(self.0.checked_mul(o.0).unwrap(), self.1.checked_mul(o.1).unwrap())
-    }
-    fn div(self, o: Q) -> Q {
-        Q::new(self.0.checked_mul(o.1).unwrap(), self.1.checked_mul(o.0).unwrap())
-    }
-    fn cmp(self, o: Q) -> Ordering {
-        self.0.checked_mul(o.1).unwrap().cmp(&o.0.checked_mul(self.1).unwrap())
-    }
-    fn sign(self) -> Ordering {
-        self.0.cmp(&0)
-    }
-    fn f64(self) -> f64 {
-        self.0 as f64 / self.1 as f64
-    }
-}
-
-type V = [Q; 3];
-
-fn sub(a: V, b: V) -> V {
-    [a[0].sub(b[0]), a[1].sub(b[1]), a[2].sub(b[2])]
-}
-fn dot(a: V, b: V) -> Q {
-    a[0].mul(b[0]).add(a[1].mul(b[1])).add(a[2].mul(b[2]))
-}
-fn cross(a: V, b: V) -> V {
-    [a[1].mul(b[2]).sub(a[2].mul(b[1])), a[2].mul(b[0]).sub(a[0].mul(b[2])), a[0].mul(b[1]).sub(a[1].mul(b[0]))]
-}
-fn along(p: V, d: V, t: Q) -> V {
-    [p[0].add(d[0].mul(t)), p[1].add(d[1].mul(t)), p[2].add(d[2].mul(t))]
-}
-/// Exact value of an `f64` that is a multiple of 1/2 (asserted).
-fn q_of(x: f64) -> Q {
-    assert!((2.0 * x).fract() == 0.0 && x.abs() < 1e9, "{x} is not a half-integer");
-    Q::new((2.0 * x) as i128, 2)
-}
-fn v_of(p: Point3) -> V {
-    [q_of(p.x), q_of(p.y), q_of(p.z)]
-}
-
-/// The ball's facet planes from its own corners: (n, h) with x ∈ B iff
-/// n·x ≤ h for all, h > 0.
-fn exact_planes(ball: &Ball3) -> Vec<(V, Q)> {
-    ball.facets()
-        .iter()
-        .map(|f| {
-            let [a, b, c] = [0, 1, 2].map(|k| v_of(ball.vertices()[f.vertices[k]]));
-            let n = cross(sub(b, a), sub(c, a));
-            let h = dot(n, a);
-            assert_eq!(h.sign(), Ordering::Greater, "origin inside, facets outward");
-            (n, h)
-        })
-        .collect()
-}
-
-fn gauge(planes: &[(V, Q)], x: V) -> Q {
-    planes.iter().map(|&(n, h)| dot(n, x).div(h)).fold(Q::int(0), |m, g| if g.cmp(m).is_gt() { g } else { m })
-}
-
-/// The exact least gauge of `y − c` over triangle `t`.
-fn exact_on_triangle(ball: &Ball3, planes: &[(V, Q)], c: V, t: [V; 3]) -> Q {
-    let mut best: Option<Q> = None;
-    let mut offer = |y: V| {
-        let g = gauge(planes, sub(y, c));
-        if best.is_none_or(|b| g.cmp(b).is_lt()) {
-            best = Some(g);
-        }
-    };
-    t.iter().for_each(|&p| offer(p));
-    let w: Vec<V> = ball.vertices().iter().map(|&p| v_of(p)).collect();
-    for e in ball.edges() {
-        let m = cross(w[e.vertices[0]], w[e.vertices[1]]);
-        for (p, q) in [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])] {
-            let den = dot(m, sub(q, p));
-            if den.sign().is_ne() {
-                let u = dot(m, sub(c, p)).div(den);
-                if u.sign().is_ge() && u.cmp(Q::int(1)).is_le() {
-                    offer(along(p, sub(q, p), u));
-                }
-            }
-        }
-    }
-    let n = cross(sub(t[1], t[0]), sub(t[2], t[0]));
-    for &wv in &w {
-        let den = dot(n, wv);
-        if den.sign().is_eq() {
-            continue;
-        }
-        let s = dot(n, sub(t[0], c)).div(den);
-        if s.sign().is_lt() {
-            continue;
-        }
-        let y = along(c, wv, s);
-        let inside = (0..3).all(|k| dot(cross(sub(t[(k + 1) % 3], t[k]), sub(y, t[k])), n).sign().is_ge());
-        if inside {
-            offer(y);
-        }
-    }
-    best.unwrap()
-}
 
 /// The same enumeration in `f64`, the gauge from the facets' normals.
 fn float_on_triangle(ball: &Ball3, c: Point3, [a, b, d]: [Point3; 3]) -> f64 {
@@ -185,22 +59,6 @@ fn box_distance(t: [Point3; 3], c: Point3) -> f64 {
         (lo - c.coord(k)).max(c.coord(k) - hi).max(0.0)
     };
     (gap(0).powi(2) + gap(1).powi(2) + gap(2).powi(2)).sqrt()
-}
-
-type Soup = (Vec<[f64; 3]>, Vec<[u32; 3]>);
-
-/// Integer meshes: a box with a box-shaped cavity, a coarse sphere and a
-/// torus scaled by 8 and rounded to the integer grid.
-fn integer_meshes() -> Vec<(&'static str, Soup)> {
-    let round = |(v, t): Soup, k: f64| -> Soup { (v.iter().map(|p| p.map(|x| (x * k).round())).collect(), t) };
-    let mut cavity = cuboid([-6.0, -6.0, -6.0], [6.0, 6.0, 6.0]);
-    let inner = cuboid([-2.0, -2.0, -3.0], [3.0, 2.0, 2.0]);
-    cavity = union(&[cavity, (inner.0, inner.1.iter().map(|t| [t[0], t[2], t[1]]).collect())]);
-    vec![
-        ("box with cavity", cavity),
-        ("sphere", round(sphere([0.0, 0.0, 0.0], 1.0, 8, 6), 8.0)),
-        ("torus", round(torus(3.0, 1.3, 12, 8), 8.0)),
-    ]
 }
 
 /// Integer balls: presets and random integer hulls about an off-centre

@@ -56,6 +56,9 @@ fn kind_name(k: ContactKind3) -> &'static str {
         ContactKind3::VertexFace => "VF",
         ContactKind3::EdgeEdge => "EE",
         ContactKind3::FaceVertex => "FV",
+        ContactKind3::VertexEdge => "VE",
+        ContactKind3::EdgeVertex => "EV",
+        ContactKind3::VertexVertex => "VV",
     }
 }
 

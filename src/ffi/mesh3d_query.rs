@@ -31,8 +31,15 @@ pub enum mx_contact3_kind {
     MX_CONTACT3_VF = 0,
     /// An edge of the ball on an edge of a triangle (EE).
     MX_CONTACT3_EE = 1,
-    /// A corner of a triangle on the ball's boundary (FV, EV or VV).
+    /// A vertex of the surface on a ball facet (FV; from the `f64` queries
+    /// any point of the ball's boundary).
     MX_CONTACT3_FV = 2,
+    /// A vertex of the ball on an edge of the surface (VE; exact queries).
+    MX_CONTACT3_VE = 3,
+    /// A vertex of the surface on an edge of the ball (EV; exact queries).
+    MX_CONTACT3_EV = 4,
+    /// A vertex of the ball on a vertex of the surface (VV; exact queries).
+    MX_CONTACT3_VV = 5,
 }
 
 /// Everything `mx_mesh3d_query_points` tells about one point.
@@ -72,6 +79,9 @@ pub(super) fn kind_of(k: ContactKind3) -> mx_contact3_kind {
         ContactKind3::VertexFace => mx_contact3_kind::MX_CONTACT3_VF,
         ContactKind3::EdgeEdge => mx_contact3_kind::MX_CONTACT3_EE,
         ContactKind3::FaceVertex => mx_contact3_kind::MX_CONTACT3_FV,
+        ContactKind3::VertexEdge => mx_contact3_kind::MX_CONTACT3_VE,
+        ContactKind3::EdgeVertex => mx_contact3_kind::MX_CONTACT3_EV,
+        ContactKind3::VertexVertex => mx_contact3_kind::MX_CONTACT3_VV,
     }
 }
 

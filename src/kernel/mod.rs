@@ -28,7 +28,7 @@ pub mod axis_kernel;
 mod bbox;
 // Always built: the exact lines of the polygon-ball axis use it with or
 // without `gmp` (the predicates' fallback only without it).
-mod bigint;
+pub(crate) mod bigint;
 pub mod bisector;
 mod circle_arc;
 pub mod construct;
@@ -40,6 +40,7 @@ mod exact;
 #[cfg(any(test, not(feature = "gmp")))]
 mod exact_int;
 pub(crate) mod exact_line;
+pub(crate) mod exact_space;
 pub mod fan;
 pub mod growing_disk;
 mod limbs;

@@ -32,7 +32,10 @@ pub(crate) mod shape2d;
 pub(crate) mod validate;
 
 pub use crate::kernel::element::{Arc, Element, Segment};
-pub use ball::{Ball2, Ball3, BallEdge3, BallError, BallFacet3, Feature, Feature3, Reach, ReachHint, TriangleReach};
+pub use ball::{
+    touch_exact, Ball2, Ball3, BallEdge3, BallError, BallFacet3, ExactTouch, Feature, Feature3, Reach, ReachHint,
+    TouchPoint, TrianglePart, TriangleReach,
+};
 pub use build::chain::chain_loops;
 pub use build::import::sniff;
 pub use build::profiles::{profiles, unit_name, Drawing2d, DrawingOptions, Ignored, IgnoredKind, Touching};
@@ -41,7 +44,9 @@ pub use draw::{draw_joints, push_loop_path, shape_document, shape_path};
 pub use index::box_tree::BoxTree;
 pub use index::chain_tree::ChainTree;
 pub use mesh::samples as mesh_samples;
-pub use mesh::{BallContact, Closest, ContactKind3, Hit, MaximalBall, TriangleTree};
+pub use mesh::{
+    BallContact, Closest, ContactKind3, ExactContact, ExactContacts, Hit, MaximalBall, SurfacePart, TriangleTree,
+};
 pub use mesh::{Component, FaceRef, Faces, Mesh3d, MeshError, MeshOptions, MeshReport};
 pub use model::bulge_loop::{winding_contribution, Loop, LoopKind, Vertex};
 pub use model::error::{Degeneracy, ElementRef, ShapeError};

@@ -6,6 +6,7 @@ pub mod c_header;
 pub mod ffi;
 pub mod offset_oracle;
 pub mod oracle;
+pub mod rational;
 
 use medax::kernel::Point;
 use medax::plane::{AxisNode, MedialAxis2d};

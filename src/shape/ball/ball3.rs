@@ -59,7 +59,7 @@ pub struct BallEdge3 {
 
 /// A feature of a [`Ball3`]: where a plane touches it, the contact class
 /// of chapter 3 in space.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Feature3 {
     /// A vertex, by index into [`Ball3::vertices`].
     Vertex(usize),

@@ -34,6 +34,9 @@
 //! * `reach3.rs`: where a space ball grown from a centre first touches a
 //!   triangle (the least gauge over it, by a walk through the ball's facet
 //!   cones) and lower bounds over boxes for searches that prune.
+//! * `touch_exact.rs`: the same least gauge over a triangle decided
+//!   exactly (filter, then integers), with every contact point and the
+//!   least ball and triangle features holding it (VF, EE, FV, VE, EV, VV).
 
 mod ball2;
 mod ball3;
@@ -42,9 +45,12 @@ mod gauge;
 mod hull3;
 mod reach3;
 mod spec;
+mod touch_exact;
 
 pub use ball2::Ball2;
 pub use ball3::{Ball3, BallEdge3, BallFacet3, Feature3};
 pub use error::BallError;
 pub use gauge::Feature;
 pub use reach3::{ContactKind3, Reach, ReachHint, TriangleReach};
+pub(crate) use touch_exact::touch_exact_many;
+pub use touch_exact::{touch_exact, ExactTouch, TouchPoint, TrianglePart};

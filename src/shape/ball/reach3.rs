@@ -19,23 +19,33 @@
 //! The value returned is the gauge evaluated at the point found, a point
 //! of T (clamped there), so rounding that moved the point can only raise
 //! it: it bounds the true minimum from above up to the rounding of that
-//! one gauge (itself a climb in `f64`). The exact contact class is to be
-//! decided apart.
+//! one gauge (itself a climb in `f64`). The exact contact, with its
+//! non-regular types, is decided apart (`touch_exact.rs`).
 
 use super::Ball3;
 use crate::kernel::{BBox3, Point3};
 
-/// What kind of contact realises the least gauge (thesis 3.1.2), as found
-/// in `f64`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+/// The type of a contact between a ball and a surface (thesis 3.1.2):
+/// the ball's feature, then the surface's. The `f64` queries name the
+/// regular type of the linear program's vertex they stop at (VF, EE or
+/// FV, where a degenerate contact counts as the regular type it was found
+/// by); the exact contact queries name the least features, so also the
+/// non-regular VE, EV and VV.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum ContactKind3 {
-    /// A vertex of the ball on the triangle's interior (VF).
+    /// A vertex of the ball on the interior of a triangle (VF).
     VertexFace,
-    /// An edge of the ball on an edge of the triangle (EE).
+    /// An edge of the ball crossing an edge of the surface (EE).
     EdgeEdge,
-    /// A corner of the triangle on the ball's boundary (FV, or EV/VV when
-    /// it meets an edge or a vertex of the ball).
+    /// A vertex of the surface on the interior of a ball facet (FV; found
+    /// in `f64`: any point of the ball's boundary).
     FaceVertex,
+    /// A vertex of the ball on the interior of an edge of the surface (VE).
+    VertexEdge,
+    /// A vertex of the surface on the interior of a ball edge (EV).
+    EdgeVertex,
+    /// A vertex of the ball on a vertex of the surface (VV).
+    VertexVertex,
 }
 
 /// The least gauge over a triangle, where and how.

@@ -29,6 +29,8 @@ use crate::kernel::{BBox3, Point3};
 mod ball_radius;
 pub use ball_radius::{BallContact, ContactKind3};
 mod closest;
+mod contact_exact;
+pub use contact_exact::{ExactContact, ExactContacts, SurfacePart};
 mod inside;
 mod intersect;
 mod maximal;

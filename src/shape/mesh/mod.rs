@@ -23,7 +23,9 @@ mod topology;
 mod triangulate;
 mod weld;
 
-pub use aabb::{BallContact, Closest, ContactKind3, Hit, MaximalBall, TriangleTree};
+pub use aabb::{
+    BallContact, Closest, ContactKind3, ExactContact, ExactContacts, Hit, MaximalBall, SurfacePart, TriangleTree,
+};
 pub use error::{FaceRef, MeshError};
 pub use mesh3d::{Component, Faces, Mesh3d, MeshReport};
 pub use options::MeshOptions;

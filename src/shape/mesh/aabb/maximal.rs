@@ -19,7 +19,7 @@
 
 use super::{BallContact, TriangleTree};
 use crate::kernel::Point3;
-use crate::shape::ball::{Ball3, Reach, ReachHint};
+use crate::shape::ball::{Ball3, Reach, ReachHint, TriangleReach};
 
 /// A maximal* ball: `centre + radius·B`, its vertex `ṽ` at the point asked.
 #[derive(Debug, Clone, PartialEq)]
@@ -136,7 +136,18 @@ impl TriangleTree {
     /// (its least gauge from `c` at most `r·(1 + tol)`), with where.
     pub fn ball_contacts(&self, c: Point3, r: f64, ball: &Ball3, tol: f64) -> Vec<BallContact> {
         let reach = ball.reach();
-        let limit = r * (1.0 + tol);
+        let mut out: Vec<BallContact> = self
+            .near_triangles(c, r * (1.0 + tol), &reach)
+            .into_iter()
+            .map(|(k, got)| BallContact { radius: got.radius, triangle: self.ids[k], point: got.point, kind: got.kind })
+            .collect();
+        out.sort_by_key(|c| c.triangle);
+        out
+    }
+
+    /// The tree positions of the triangles whose least gauge from `c` is at
+    /// most `limit`, with where they reach it.
+    pub(super) fn near_triangles(&self, c: Point3, limit: f64, reach: &Reach<'_>) -> Vec<(usize, TriangleReach)> {
         let mut hint = ReachHint::default();
         let mut out = Vec::new();
         let _ = self.visit(
@@ -146,18 +157,12 @@ impl TriangleTree {
                 if reach.over_triangle(t, c, f64::INFINITY, &mut hint) <= limit {
                     let got = reach.triangle(c, t, &mut hint);
                     if got.radius <= limit {
-                        out.push(BallContact {
-                            radius: got.radius,
-                            triangle: self.ids[k],
-                            point: got.point,
-                            kind: got.kind,
-                        });
+                        out.push((k, got));
                     }
                 }
                 std::ops::ControlFlow::Continue(())
             },
         );
-        out.sort_by_key(|c| c.triangle);
         out
     }
 }
