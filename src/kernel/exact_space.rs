@@ -1,4 +1,4 @@
-//! Vectors of space over a ring that answers signs: [`Fx`] (a floating
+//! Vectors of space over a ring that answers signs: [`Fb`] (a floating
 //! filter that may answer "unsure") or [`BigInt`] (exact, always sure).
 //! A construction written once against [`Ring`] runs first on the filter
 //! and, when some sign it needs is unsure, again on the integers: the
@@ -6,18 +6,23 @@
 //! answers are rational (thesis Lemma 8) and small linear systems give
 //! them.
 //!
-//! Inputs enter as `f64`: exactly as [`Fx`] values, or as integers in
+//! Inputs enter as `f64`: exactly as [`Fb`] values, or as integers in
 //! [`Units`] common to every value of one question (then every equation
 //! is homogeneous in those units and its signs do not depend on them).
 
 use super::bigint::BigInt;
 use super::exact_line::Units;
-use super::xfloat::Fx;
 use super::Point3;
 use std::cmp::Ordering;
 
 /// A ring whose elements answer their sign, when sure.
 pub(crate) trait Ring: Clone {
+    /// The finite `v`, exactly (in `units` where the ring needs them).
+    fn of(v: f64, units: Units) -> Self;
+    /// `a − b` for finite inputs `a`, `b`: one rounding in the filter
+    /// (so its bound is relative to the difference, not to `|a| + |b|`:
+    /// a question moved to its centre keeps bounds of its own size).
+    fn diff(a: f64, b: f64, units: Units) -> Self;
     fn add(&self, o: &Self) -> Self;
     fn sub(&self, o: &Self) -> Self;
     fn mul(&self, o: &Self) -> Self;
@@ -28,28 +33,66 @@ pub(crate) trait Ring: Clone {
     fn ratio(num: &Self, den: &Self, shift: i64) -> f64;
 }
 
-impl Ring for Fx {
-    fn add(&self, o: &Fx) -> Fx {
-        *self + *o
+/// An `f64` with a bound on its rounding: `m` is the same expression
+/// evaluated on absolute values, and each operation adds at most 2⁻⁵³·m
+/// of error, so below 2¹³ operations the value is within 2⁻⁴⁰·m of the
+/// exact one (Shewchuk's semi-static filter, the idea of
+/// [`Fx`](super::xfloat::Fx) at plain `f64` speed). Unsure when the
+/// magnitude left `f64`'s comfortable range (overflow, or below 2⁻⁹⁰⁰
+/// where underflow could matter).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Fb {
+    v: f64,
+    m: f64,
+}
+
+/// 2⁻⁴⁰ and 2⁻⁹⁰⁰.
+const REL: f64 = 1.0 / (1u64 << 40) as f64;
+const TINY: f64 = f64::from_bits((1023 - 900) << 52);
+
+impl Ring for Fb {
+    fn of(v: f64, _units: Units) -> Fb {
+        Fb { v, m: v.abs() }
     }
-    fn sub(&self, o: &Fx) -> Fx {
-        *self - *o
+    fn diff(a: f64, b: f64, _units: Units) -> Fb {
+        // Correctly rounded: the error is at most 2⁻⁵³ of the result.
+        let v = a - b;
+        Fb { v, m: v.abs() }
     }
-    fn mul(&self, o: &Fx) -> Fx {
-        *self * *o
+    fn add(&self, o: &Fb) -> Fb {
+        Fb { v: self.v + o.v, m: self.m + o.m }
     }
-    fn neg(&self) -> Fx {
-        -*self
+    fn sub(&self, o: &Fb) -> Fb {
+        Fb { v: self.v - o.v, m: self.m + o.m }
+    }
+    fn mul(&self, o: &Fb) -> Fb {
+        Fb { v: self.v * o.v, m: self.m * o.m }
+    }
+    fn neg(&self) -> Fb {
+        Fb { v: -self.v, m: self.m }
     }
     fn sign(&self) -> Option<Ordering> {
-        Fx::sign(*self)
+        if self.m == 0.0 {
+            // Every input was exactly zero.
+            return Some(Ordering::Equal);
+        }
+        if !(self.m.is_finite() && self.m > TINY && self.v.abs() > self.m * REL) {
+            return None;
+        }
+        Some(if self.v > 0.0 { Ordering::Greater } else { Ordering::Less })
     }
-    fn ratio(num: &Fx, den: &Fx, shift: i64) -> f64 {
-        Fx::ratio(*num, *den, shift)
+    fn ratio(num: &Fb, den: &Fb, shift: i64) -> f64 {
+        num.v / den.v * 2f64.powi(shift.clamp(-2000, 2000) as i32)
     }
 }
 
 impl Ring for BigInt {
+    fn of(v: f64, units: Units) -> BigInt {
+        units.int(v)
+    }
+    fn diff(a: f64, b: f64, units: Units) -> BigInt {
+        &units.int(a) - &units.int(b)
+    }
     fn add(&self, o: &BigInt) -> BigInt {
         self + o
     }
@@ -78,21 +121,17 @@ pub(crate) struct V3<R> {
     pub z: R,
 }
 
-impl V3<Fx> {
-    /// `p` exactly, as filter values.
-    pub(crate) fn fx(p: Point3) -> V3<Fx> {
-        V3 { x: Fx::of_f64(p.x), y: Fx::of_f64(p.y), z: Fx::of_f64(p.z) }
-    }
-}
-
-impl V3<BigInt> {
-    /// `p` as integers in `units` (exact when the units cover it).
-    pub(crate) fn int(units: Units, p: Point3) -> V3<BigInt> {
-        V3 { x: units.int(p.x), y: units.int(p.y), z: units.int(p.z) }
-    }
-}
-
 impl<R: Ring> V3<R> {
+    /// `p` exactly (in `units` where the ring needs them).
+    pub(crate) fn of(p: Point3, units: Units) -> V3<R> {
+        V3 { x: R::of(p.x, units), y: R::of(p.y, units), z: R::of(p.z, units) }
+    }
+
+    /// `p − q` ([`Ring::diff`]).
+    pub(crate) fn diff(p: Point3, q: Point3, units: Units) -> V3<R> {
+        V3 { x: R::diff(p.x, q.x, units), y: R::diff(p.y, q.y, units), z: R::diff(p.z, q.z, units) }
+    }
+
     pub(crate) fn add(&self, o: &V3<R>) -> V3<R> {
         V3 { x: self.x.add(&o.x), y: self.y.add(&o.y), z: self.z.add(&o.z) }
     }
@@ -141,8 +180,8 @@ mod tests {
     fn filter_and_integers_agree_where_the_filter_is_sure() {
         let ps = [Point3::new(0.5, 3.0, -1.25), Point3::new(1e-3, 7.0, 2.0), Point3::new(-1.25, 0.5, 3.0)];
         let units = Units::covering(ps.iter().flat_map(|p| p.to_array()));
-        let f: Vec<V3<Fx>> = ps.iter().map(|&p| V3::fx(p)).collect();
-        let b: Vec<V3<BigInt>> = ps.iter().map(|&p| V3::int(units, p)).collect();
+        let f: Vec<V3<Fb>> = ps.iter().map(|&p| V3::of(p, units)).collect();
+        let b: Vec<V3<BigInt>> = ps.iter().map(|&p| V3::of(p, units)).collect();
         let df = f[0].det(&f[1], &f[2]);
         let db = b[0].det(&b[1], &b[2]);
         assert_eq!(Ring::sign(&df), Some(db.signum()));
@@ -153,7 +192,7 @@ mod tests {
         assert_ne!(Ring::sign(&zf), Some(Ordering::Greater));
         assert_ne!(Ring::sign(&zf), Some(Ordering::Less));
         let r = <BigInt as Ring>::ratio(&db, &b[0].dot(&b[0]), units.exponent() as i64);
-        let rf = <Fx as Ring>::ratio(&df, &f[0].dot(&f[0]), 0);
+        let rf = <Fb as Ring>::ratio(&df, &f[0].dot(&f[0]), 0);
         assert!((r - rf).abs() <= 1e-12 * rf.abs(), "{r} vs {rf}");
     }
 }

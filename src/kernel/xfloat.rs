@@ -119,24 +119,6 @@ impl Fx {
         Fx { v, mag: v.abs() }
     }
 
-    /// The finite `v`, exactly (a non-finite one counts as zero: callers
-    /// validate finiteness first).
-    pub(crate) fn of_f64(v: f64) -> Fx {
-        let x = if v.is_finite() { Xf { m: v, e: 0 }.norm() } else { Xf::ZERO };
-        Fx { v: x, mag: x.abs() }
-    }
-
-    /// `num / den · 2^shift` as an `f64` (infinite or zero outside its
-    /// range; NaN for a zero `den`), from the approximate values.
-    pub(crate) fn ratio(num: Fx, den: Fx, shift: i64) -> f64 {
-        if den.v.m == 0.0 {
-            return f64::NAN;
-        }
-        let e = (num.v.e - den.v.e + shift).clamp(-4000, 4000) as i32;
-        let half = e / 2;
-        (num.v.m / den.v.m) * 2f64.powi(half) * 2f64.powi(e - half)
-    }
-
     /// The sign of the exact value when the filter certifies it.
     pub(crate) fn sign(self) -> Option<Ordering> {
         let bound = Xf { m: self.mag.m, e: self.mag.e - REL_BITS };

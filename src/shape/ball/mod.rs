@@ -46,6 +46,7 @@ mod hull3;
 mod reach3;
 mod spec;
 mod touch_exact;
+mod touch_lp;
 
 pub use ball2::Ball2;
 pub use ball3::{Ball3, BallEdge3, BallFacet3, Feature3};

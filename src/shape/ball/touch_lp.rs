@@ -1,0 +1,308 @@
+//! The vertices of the linear program "least `r` with a point of triangle
+//! `T` in `c + r·B`" (see `touch_exact.rs`), written once over a
+//! [`Ring`]: each vertex's radius `num / den`, point `at / den` and the
+//! least features holding it, or "not a vertex", or "the ring cannot
+//! tell" (`Err`).
+
+use super::ball3::{Ball3, Feature3};
+use super::touch_exact::TrianglePart;
+use crate::kernel::exact_line::Units;
+use crate::kernel::exact_space::{cmp_ratios, Ring, V3};
+use crate::kernel::Point3;
+use std::cell::OnceCell;
+use std::cmp::Ordering;
+
+/// "The ring cannot tell": ask again on exact integers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) struct Unsure;
+
+fn sure(o: Option<Ordering>) -> Result<Ordering, Unsure> {
+    o.ok_or(Unsure)
+}
+
+/// The three kinds of vertex of the program, by the features that meet.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Which {
+    /// Corner `k` on the plane of facet `f`, a facet the corner's gauge
+    /// is largest on.
+    Fv { corner: usize, facet: usize },
+    /// Ball edge `e` meeting side `k` (from corner `k` to `k + 1 mod 3`).
+    Ee { edge: usize, side: usize },
+    /// Ball vertex `v` on the triangle's plane.
+    Vf { vertex: usize },
+}
+
+/// What a candidate was computed from, when two triangles can share it:
+/// a corner (its coordinates' bits) on a facet, or a side (its ends'
+/// bits, in order) on a ball edge. Equal sources give equal numbers, so
+/// the tie of a vertex or edge shared by two triangles needs no sign.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Source {
+    Corner([u64; 3], usize),
+    Side([[u64; 3]; 2], usize),
+    /// A ball vertex on one triangle's plane.
+    Own,
+}
+
+/// A vertex of the program: `r = num / den` (`den > 0`), the point
+/// `at / den`, and its least features.
+#[derive(Debug, Clone)]
+pub(super) struct Candidate<R> {
+    /// Which triangle of the question.
+    pub triangle_index: usize,
+    pub which: Which,
+    pub source: Source,
+    pub num: R,
+    pub den: R,
+    pub at: V3<R>,
+    pub ball: Feature3,
+    pub triangle: TrianglePart,
+}
+
+/// One question's numbers in ring `R`, moved so that the centre is the
+/// origin (the filter's bounds then scale with the question, not with
+/// its distance from the origin): the triangles, and the ball's vertices
+/// and facet planes `n·x ≤ h` (`h > 0`: the origin is inside), converted
+/// when first needed (on integers most are never).
+pub(super) struct Setting<'a, R> {
+    ball: &'a Ball3,
+    units: Units,
+    /// The triangles as given, for [`Source`]s.
+    given: &'a [[Point3; 3]],
+    /// The centre where it was, for the points reported.
+    pub at_centre: V3<R>,
+    /// The origin: the centre moved.
+    c: V3<R>,
+    /// The triangles moved with it.
+    pub ts: Vec<[V3<R>; 3]>,
+    vertices: Vec<OnceCell<V3<R>>>,
+    planes: Vec<OnceCell<(V3<R>, R)>>,
+}
+
+impl<'a, R: Ring> Setting<'a, R> {
+    /// The question in `units` (integers: common to every value of the
+    /// question, so each equation is homogeneous and `r` unitless).
+    pub fn new(ball: &'a Ball3, units: Units, c: Point3, ts: &'a [[Point3; 3]]) -> Setting<'a, R> {
+        Setting {
+            ball,
+            units,
+            given: ts,
+            at_centre: V3::of(c, units),
+            c: V3::of(Point3::new(0.0, 0.0, 0.0), units),
+            ts: ts.iter().map(|t| t.map(|p| V3::diff(p, c, units))).collect(),
+            vertices: (0..ball.vertices().len()).map(|_| OnceCell::new()).collect(),
+            planes: (0..ball.facets().len()).map(|_| OnceCell::new()).collect(),
+        }
+    }
+
+    /// Values are integers times `2^shift`.
+    pub fn shift(&self) -> i64 {
+        self.units.exponent() as i64
+    }
+
+    fn vertex(&self, v: usize) -> &V3<R> {
+        self.vertices[v].get_or_init(|| V3::of(self.ball.vertices()[v], self.units))
+    }
+
+    fn plane(&self, f: usize) -> &(V3<R>, R) {
+        self.planes[f].get_or_init(|| {
+            // The first three corners are not collinear (the hull keeps no
+            // three consecutive corners collinear): they span the plane.
+            let k = &self.ball.facets()[f].vertices;
+            let (a, b, c) = (self.vertex(k[0]), self.vertex(k[1]), self.vertex(k[2]));
+            let n = b.sub(a).cross(&c.sub(a));
+            let h = n.dot(a);
+            (n, h)
+        })
+    }
+
+    /// The program's vertices of triangle `ti` that can be least: the
+    /// three corners; a ball edge on a side only where the side's gauge
+    /// turns from falling to rising (its two facets' planes do not both
+    /// rise or both fall along the side: elsewhere the point is not least
+    /// even on the side); a ball vertex only when no neighbour lies
+    /// farther toward the plane (else the point is not least even on the
+    /// plane, or it lies on a side or corner, found there).
+    pub fn plausible(&self, ti: usize) -> Vec<Which> {
+        let ball = self.ball;
+        let t = &self.ts[ti];
+        let mut out: Vec<Which> = (0..3).map(|corner| Which::Fv { corner, facet: usize::MAX }).collect();
+        for side in 0..3 {
+            let d = t[(side + 1) % 3].sub(&t[side]);
+            let slope: Vec<Option<Ordering>> =
+                (0..ball.facets().len()).map(|f| self.plane(f).0.dot(&d).sign()).collect();
+            for (edge, e) in ball.edges().iter().enumerate() {
+                let [a, b] = e.facets.map(|f| slope[f]);
+                let monotone = a == b && matches!(a, Some(Ordering::Greater | Ordering::Less));
+                if !monotone {
+                    out.push(Which::Ee { edge, side });
+                }
+            }
+        }
+        let n = t[1].sub(&t[0]).cross(&t[2].sub(&t[0]));
+        let mut dominated = vec![false; ball.vertices().len()];
+        if let Some(toward @ (Ordering::Greater | Ordering::Less)) = n.dot(&t[0].sub(&self.c)).sign() {
+            for e in ball.edges() {
+                let [a, b] = e.vertices;
+                match n.dot(&self.vertex(b).sub(self.vertex(a))).sign().map(|o| {
+                    if toward.is_lt() {
+                        o.reverse()
+                    } else {
+                        o
+                    }
+                }) {
+                    Some(Ordering::Greater) => dominated[a] = true,
+                    Some(Ordering::Less) => dominated[b] = true,
+                    _ => {}
+                }
+            }
+        }
+        out.extend((0..ball.vertices().len()).filter(|&v| !dominated[v]).map(|vertex| Which::Vf { vertex }));
+        out
+    }
+
+    /// Vertex `which` of triangle `ti`, `Ok(None)` when it is not a
+    /// feasible vertex. For a corner (`facet` `usize::MAX`) the facets are
+    /// scanned for the largest gauge and its ties; with a facet given,
+    /// the winner is known and only its numbers are computed.
+    pub fn candidate(&self, ti: usize, which: Which) -> Result<Option<Candidate<R>>, Unsure> {
+        let t = &self.ts[ti];
+        let bits = |k: usize| self.given[ti][k % 3].to_array().map(f64::to_bits);
+        let found = |which, num, den, at, ball_feature, part| {
+            let source = match which {
+                Which::Fv { corner, facet } => Source::Corner(bits(corner), facet),
+                Which::Ee { edge, side } => {
+                    let (a, b) = (bits(side), bits(side + 1));
+                    Source::Side(if a <= b { [a, b] } else { [b, a] }, edge)
+                }
+                Which::Vf { .. } => Source::Own,
+            };
+            Ok(Some(Candidate { triangle_index: ti, which, source, num, den, at, ball: ball_feature, triangle: part }))
+        };
+        match which {
+            Which::Fv { corner, facet } => {
+                let d = t[corner].sub(&self.c);
+                let part = TrianglePart::Corner(corner as u8);
+                if facet != usize::MAX {
+                    let (n, h) = self.plane(facet);
+                    return found(which, n.dot(&d), h.clone(), t[corner].scale(h), Feature3::Facet(facet), part);
+                }
+                let (mut best, mut tight) = (0, vec![0]);
+                let value = |f: usize| {
+                    let (n, h) = self.plane(f);
+                    (n.dot(&d), h.clone())
+                };
+                let (mut num, mut den) = value(0);
+                for g in 1..self.ball.facets().len() {
+                    let (ng, hg) = value(g);
+                    match sure(cmp_ratios(&ng, &hg, &num, &den))? {
+                        Ordering::Greater => (best, tight, num, den) = (g, vec![g], ng, hg),
+                        Ordering::Equal => tight.push(g),
+                        Ordering::Less => {}
+                    }
+                }
+                let at = t[corner].scale(&den);
+                found(Which::Fv { corner, facet: best }, num, den, at, ball_part(self.ball, &tight), part)
+            }
+            Which::Vf { vertex } => {
+                let n = t[1].sub(&t[0]).cross(&t[2].sub(&t[0]));
+                let w = self.vertex(vertex);
+                let (mut num, mut den) = (n.dot(&t[0].sub(&self.c)), n.dot(w));
+                match sure(den.sign())? {
+                    Ordering::Equal => return Ok(None),
+                    Ordering::Less => (num, den) = (num.neg(), den.neg()),
+                    Ordering::Greater => {}
+                }
+                if sure(num.sign())? == Ordering::Less {
+                    return Ok(None);
+                }
+                let at = self.c.scale(&den).add(&w.scale(&num));
+                match triangle_part(t, &at, &den)? {
+                    Some(part) => found(which, num, den, at, Feature3::Vertex(vertex), part),
+                    None => Ok(None),
+                }
+            }
+            Which::Ee { edge, side } => {
+                let [a, b] = self.ball.edges()[edge].vertices;
+                let va = self.vertex(a);
+                let ev = self.vertex(b).sub(va);
+                let tk = &t[side];
+                let back = tk.sub(&t[(side + 1) % 3]); // −(the side's direction)
+                let g = tk.sub(&self.c);
+                // r·va + w·ev − u·side = tk − c, by Cramer's rule.
+                let mut den = va.det(&ev, &back);
+                let (mut r, mut w, mut u) = (g.det(&ev, &back), va.det(&g, &back), va.det(&ev, &g));
+                match sure(den.sign())? {
+                    Ordering::Equal => return Ok(None),
+                    Ordering::Less => (den, r, w, u) = (den.neg(), r.neg(), w.neg(), u.neg()),
+                    Ordering::Greater => {}
+                }
+                let (w_lo, w_hi) = (sure(w.sign())?, sure(r.sub(&w).sign())?);
+                let (u_lo, u_hi) = (sure(u.sign())?, sure(den.sub(&u).sign())?);
+                if sure(r.sign())?.is_lt() || [w_lo, w_hi, u_lo, u_hi].iter().any(|o| o.is_lt()) {
+                    return Ok(None);
+                }
+                let ball_feature = match (w_lo, w_hi) {
+                    (Ordering::Equal, _) => Feature3::Vertex(a),
+                    (_, Ordering::Equal) => Feature3::Vertex(b),
+                    _ => Feature3::Edge(edge),
+                };
+                let part = match (u_lo, u_hi) {
+                    (Ordering::Equal, _) => TrianglePart::Corner(side as u8),
+                    (_, Ordering::Equal) => TrianglePart::Corner(((side + 1) % 3) as u8),
+                    _ => TrianglePart::Side(side as u8),
+                };
+                let at = tk.scale(&den).sub(&back.scale(&u));
+                found(which, r, den, at, ball_feature, part)
+            }
+        }
+    }
+}
+
+/// The least feature of the triangle holding the point `at / den` of its
+/// plane (`den > 0`); `None` when outside.
+fn triangle_part<R: Ring>(t: &[V3<R>; 3], at: &V3<R>, den: &R) -> Result<Option<TrianglePart>, Unsure> {
+    let n = t[1].sub(&t[0]).cross(&t[2].sub(&t[0]));
+    let mut zero = [false; 3];
+    for k in 0..3 {
+        let side = t[(k + 1) % 3].sub(&t[k]);
+        let rel = at.sub(&t[k].scale(den));
+        match sure(n.dot(&side.cross(&rel)).sign())? {
+            Ordering::Less => return Ok(None),
+            o => zero[k] = o == Ordering::Equal,
+        }
+    }
+    Ok(Some(match zero {
+        [false, false, false] => TrianglePart::Face,
+        [true, false, false] => TrianglePart::Side(0),
+        [false, true, false] => TrianglePart::Side(1),
+        [false, false, true] => TrianglePart::Side(2),
+        // Sides k and k + 1 meet at corner k + 1.
+        [true, true, _] => TrianglePart::Corner(1),
+        [false, true, true] => TrianglePart::Corner(2),
+        [true, false, true] => TrianglePart::Corner(0),
+    }))
+}
+
+/// The ball feature of a boundary point where exactly the facets `tight`
+/// are tight: one a facet, two an edge, more a vertex.
+fn ball_part(ball: &Ball3, tight: &[usize]) -> Feature3 {
+    match tight {
+        [f] => Feature3::Facet(*f),
+        [f, g] => match ball.edges().iter().position(|e| e.facets.contains(f) && e.facets.contains(g)) {
+            Some(e) => Feature3::Edge(e),
+            None => common_vertex(ball, tight),
+        },
+        _ => common_vertex(ball, tight),
+    }
+}
+
+fn common_vertex(ball: &Ball3, tight: &[usize]) -> Feature3 {
+    let first = &ball.facets()[tight[0]].vertices;
+    let v = first
+        .iter()
+        .copied()
+        .find(|v| tight.iter().all(|&f| ball.facets()[f].vertices.contains(v)))
+        .unwrap_or(first[0]);
+    Feature3::Vertex(v)
+}
