@@ -22,24 +22,13 @@
 //! whole search (the walk of `reach3.rs` finds those triangles first).
 
 use super::ball3::{Ball3, Feature3};
+pub use super::touch_lp::TrianglePart;
 use super::touch_lp::{Candidate, Setting, Source, Unsure};
 use crate::kernel::bigint::BigInt;
 use crate::kernel::exact_line::Units;
 use crate::kernel::exact_space::{cmp_ratios, Fb, Ring};
 use crate::kernel::Point3;
 use std::cmp::Ordering;
-
-/// The least feature of a triangle holding a point: corner `k`, side `k`
-/// (from corner `k` to corner `k + 1 mod 3`), or its interior.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum TrianglePart {
-    /// A corner, 0, 1 or 2.
-    Corner(u8),
-    /// The open side from corner `k` to corner `k + 1 mod 3`.
-    Side(u8),
-    /// The open interior.
-    Face,
-}
 
 /// One point where the ball touches the triangle.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -5,12 +5,23 @@
 //! tell" (`Err`).
 
 use super::ball3::{Ball3, Feature3};
-use super::touch_exact::TrianglePart;
 use crate::kernel::exact_line::Units;
 use crate::kernel::exact_space::{cmp_ratios, Ring, V3};
 use crate::kernel::Point3;
 use std::cell::OnceCell;
 use std::cmp::Ordering;
+
+/// The least feature of a triangle holding a point: corner `k`, side `k`
+/// (from corner `k` to corner `k + 1 mod 3`), or its interior.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum TrianglePart {
+    /// A corner, 0, 1 or 2.
+    Corner(u8),
+    /// The open side from corner `k` to corner `k + 1 mod 3`.
+    Side(u8),
+    /// The open interior.
+    Face,
+}
 
 /// "The ring cannot tell": ask again on exact integers.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
