@@ -326,6 +326,42 @@ typedef enum mx_contact3_kind {
 } mx_contact3_kind;
 
 /**
+ * Which feature of a space ball holds a contact.
+ */
+typedef enum mx_ball_part3 {
+  /**
+   * A vertex (an index into `mx_ball_vertices`).
+   */
+  MX_BALL_VERTEX = 0,
+  /**
+   * An edge (its index in the ball's edge list, sorted by end vertices).
+   */
+  MX_BALL_EDGE = 1,
+  /**
+   * A facet (its index in the ball's facet list).
+   */
+  MX_BALL_FACET = 2,
+} mx_ball_part3;
+
+/**
+ * Which feature of a solid's surface holds a contact.
+ */
+typedef enum mx_surface_part3 {
+  /**
+   * A vertex.
+   */
+  MX_SURFACE_VERTEX = 0,
+  /**
+   * The inside of an edge.
+   */
+  MX_SURFACE_EDGE = 1,
+  /**
+   * The inside of a triangle.
+   */
+  MX_SURFACE_FACE = 2,
+} mx_surface_part3;
+
+/**
  * Where a point lies relative to a solid.
  */
 typedef enum mx_point_side {
@@ -1103,6 +1139,52 @@ typedef struct mx_mesh3d_component {
    */
   int32_t reversed;
 } mx_mesh3d_component;
+
+/**
+ * One contact of the largest ball at a centre (`mx_mesh3d_ball_contacts`).
+ */
+typedef struct mx_contact3 {
+  /**
+   * The ball's radius (the exact value rounded; the same in every
+   * contact of one call).
+   */
+  double radius;
+  /**
+   * The point of contact (the exact value rounded).
+   */
+  double point[3];
+  /**
+   * The contact type: VF, EE, FV or the non-regular VE, EV, VV.
+   */
+  enum mx_contact3_kind kind;
+  /**
+   * The least feature of the ball holding the point.
+   */
+  enum mx_ball_part3 ball_part;
+  /**
+   * Its index (vertex, edge or facet of the ball).
+   */
+  size_t ball_part_index;
+  /**
+   * The least feature of the surface holding the point.
+   */
+  enum mx_surface_part3 surface_part;
+  /**
+   * Its vertices: a vertex twice, an edge's two ends (the lesser
+   * first), a face's first two corners (see `triangle`).
+   */
+  size_t surface_vertices[2];
+  /**
+   * A triangle holding the point (the least index among them).
+   */
+  size_t triangle;
+  /**
+   * 1 when the ball lies flat on a triangle holding the point (a ball
+   * edge or facet along it: the contact is a segment or polygon and the
+   * point one of its corners), else 0.
+   */
+  int32_t flat;
+} mx_contact3;
 
 /**
  * A maximal* ball (`mx_mesh3d_maximal_ball`): `centre + radius·B`.
@@ -2405,6 +2487,28 @@ enum mx_status mx_mesh3d_triangles(const struct mx_mesh3d *mesh,
  * `mesh` NULL or a live handle; `path` NULL or NUL-terminated UTF-8.
  */
 enum mx_status mx_mesh3d_write(const struct mx_mesh3d *mesh, const char *path, uint32_t format);
+
+/**
+ * The largest ball `point + r·B` under `ball` (a space ball) that holds
+ * no point of the surface inside (inside the solid: the largest ball
+ * inside it there), with its radius and contacts decided exactly: every
+ * contact with the least ball and surface features holding it, into
+ * `contacts` of `capacity` entries, their number in `*count` (capacity
+ * 0: a size query; a shorter buffer: `MX_ERR_BUFFER_TOO_SMALL`, nothing
+ * written). About five times the time of `mx_mesh3d_query_point`'s
+ * `f64` ball radius.
+ *
+ * # Safety
+ * `mesh` and `ball` NULL or live handles; `point` NULL or three readable
+ * doubles; `contacts` NULL or `capacity` writable entries; `count` NULL
+ * or writable.
+ */
+enum mx_status mx_mesh3d_ball_contacts(const struct mx_mesh3d *mesh,
+                                       const struct mx_ball *ball,
+                                       const double *point,
+                                       struct mx_contact3 *contacts,
+                                       size_t capacity,
+                                       size_t *count);
 
 /**
  * The maximal* ball under `ball` (a space ball) whose vertex `vertex`

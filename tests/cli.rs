@@ -576,17 +576,22 @@ fn query3d_answers_points_as_json() {
     let pts = dir.join("points.json");
     std::fs::write(&pts, r#"{"points": [[1, 1, 1], [5, 1, 1], [2, 2, 0.5]]}"#).unwrap();
     let out_json = dir.join("out.json");
-    let out = medax()
-        .args(["query3d"])
-        .arg(&off)
-        .args(["--ball", "octa", "--points"])
-        .arg(&pts)
-        .arg("--json")
-        .arg(&out_json)
-        .output()
-        .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&out_json).unwrap()).unwrap();
+    let query = |extra: &[&str]| {
+        let out = medax()
+            .args(["query3d"])
+            .arg(&off)
+            .args(["--ball", "octa"])
+            .args(extra)
+            .arg("--points")
+            .arg(&pts)
+            .arg("--json")
+            .arg(&out_json)
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        serde_json::from_str::<serde_json::Value>(&std::fs::read_to_string(&out_json).unwrap()).unwrap()
+    };
+    let doc = query(&[]);
     let r = doc["results"].as_array().unwrap();
     assert_eq!(r.len(), 3);
     assert_eq!(
@@ -598,4 +603,29 @@ fn query3d_answers_points_as_json() {
     assert_eq!(r[2]["ball_radius"].as_f64(), Some(0.5));
     let bad = medax().args(["query3d"]).arg(&off).args(["--ball", "dodeca", "--points"]).arg(&pts).output().unwrap();
     assert_eq!(bad.status.code(), Some(2));
+    // --exact lists every contact: at (1, 1, 1) the octahedron touches the
+    // floor z = 0, the ceiling z = 2 and the walls x = 0 and y = 0, each
+    // with a vertex; floor and ceiling where their triangles' diagonals
+    // run (VE), the walls inside a triangle (VF).
+    let doc = query(&["--exact"]);
+    let first = &doc["results"][0];
+    assert_eq!(first["ball_radius"].as_f64(), Some(1.0));
+    let contacts = first["contacts"].as_array().unwrap();
+    assert_eq!(contacts.len(), 4, "{contacts:?}");
+    let kinds: Vec<&str> = contacts.iter().map(|c| c["kind"].as_str().unwrap()).collect();
+    assert_eq!(kinds.iter().filter(|&&k| k == "VE").count(), 2, "{contacts:?}");
+    assert!(contacts.iter().all(|c| c["ball"]["vertex"].is_u64() && c["flat"] == serde_json::json!(false)));
+    let on_walls: Vec<[f64; 3]> = contacts
+        .iter()
+        .map(|c| {
+            let p = c["point"].as_array().unwrap();
+            [0, 1, 2].map(|k| p[k].as_f64().unwrap())
+        })
+        .collect();
+    for want in [[0.0, 1.0, 1.0], [1.0, 0.0, 1.0], [1.0, 1.0, 0.0], [1.0, 1.0, 2.0]] {
+        assert!(on_walls.contains(&want), "{on_walls:?}");
+    }
+    // --exact without --ball is a usage error.
+    let lone = medax().args(["query3d"]).arg(&off).args(["--exact", "--points"]).arg(&pts).output().unwrap();
+    assert_eq!(lone.status.code(), Some(2));
 }

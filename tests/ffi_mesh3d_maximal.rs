@@ -6,24 +6,18 @@
 
 mod common;
 
-use common::ffi::last_message;
+use common::ffi::{c_solid, last_message};
 use medax::ffi::*;
 use medax::kernel::Point3;
 use medax::shape::mesh_samples::{cuboid, union};
-use medax::shape::{Ball3, Mesh3d, MeshOptions};
+use medax::shape::{Ball3, Mesh3d};
 use std::ptr::{null, null_mut};
 
 /// A box 0..10 with a cavity 3..7 (the cavity's triangles turned inward).
 fn solid() -> (Mesh3d, *mut mx_mesh3d) {
     let inner = cuboid([3.0; 3], [7.0; 3]);
     let soup = union(&[cuboid([0.0; 3], [10.0; 3]), (inner.0, inner.1.iter().map(|t| [t[0], t[2], t[1]]).collect())]);
-    let rust = Mesh3d::from_triangles(&soup.0, &soup.1, &MeshOptions::default()).unwrap();
-    let xyz: Vec<f64> = soup.0.iter().flatten().copied().collect();
-    let abc: Vec<u32> = soup.1.iter().flatten().copied().collect();
-    let mut m = null_mut();
-    let st = unsafe { mx_mesh3d_from_arrays(xyz.as_ptr(), xyz.len(), abc.as_ptr(), abc.len(), null(), &mut m) };
-    assert_eq!(st, mx_status::MX_OK, "{}", last_message());
-    (rust, m)
+    c_solid(&soup)
 }
 
 const SENTINEL: mx_maximal_ball3 = mx_maximal_ball3 {

@@ -5,11 +5,11 @@
 
 mod common;
 
-use common::ffi::last_message;
+use common::ffi::{c_solid, last_message};
 use medax::ffi::*;
 use medax::kernel::{BBox3, Point3};
 use medax::shape::mesh_samples::{cuboid, torus, union};
-use medax::shape::{Mesh3d, MeshOptions};
+use medax::shape::Mesh3d;
 use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
 use std::ptr::{null, null_mut};
@@ -19,13 +19,7 @@ fn solid() -> (Mesh3d, *mut mx_mesh3d) {
     let (tv, tt) = torus(3.0, 1.0, 24, 12);
     let torus_aside = (tv.iter().map(|p| [p[0] + 30.0, p[1], p[2]]).collect::<Vec<_>>(), tt);
     let soup = union(&[cuboid([0.0; 3], [10.0; 3]), cuboid([3.0; 3], [7.0; 3]), torus_aside]);
-    let rust = Mesh3d::from_triangles(&soup.0, &soup.1, &MeshOptions::default()).unwrap();
-    let xyz: Vec<f64> = soup.0.iter().flatten().copied().collect();
-    let abc: Vec<u32> = soup.1.iter().flatten().copied().collect();
-    let mut m = null_mut();
-    let st = unsafe { mx_mesh3d_from_arrays(xyz.as_ptr(), xyz.len(), abc.as_ptr(), abc.len(), null(), &mut m) };
-    assert_eq!(st, mx_status::MX_OK, "{}", last_message());
-    (rust, m)
+    c_solid(&soup)
 }
 
 const SENTINEL: mx_ray_hit3 = mx_ray_hit3 { hit: 7, t: -1.0, point: [-1.0; 3], triangle: 99 };

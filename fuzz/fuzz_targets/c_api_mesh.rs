@@ -110,7 +110,8 @@ fn check(m: *mut mx_mesh3d, points: &[[f64; 3]]) {
     unsafe { mx_mesh3d_free(m) };
 }
 
-/// Largest and maximal* balls under a tetrahedron at the fuzzed points
+/// Largest balls (in f64 and with exact contacts) and maximal* balls
+/// under a tetrahedron at the fuzzed points
 /// (often the solid's own vertices, so on the surface): a status, never a
 /// panic; a largest ball's radius is finite and ≥ 0, a maximal* ball's
 /// is ≥ 0 (infinite only without an opposite contact), and the batch
@@ -126,6 +127,21 @@ fn balls(m: *const mx_mesh3d, points: &[[f64; 3]]) {
         assert_ne!(st, mx_status::MX_ERR_PANIC);
         if st == mx_status::MX_OK && q.has_ball == 1 {
             assert!(q.ball_radius.is_finite() && q.ball_radius >= 0.0);
+        }
+        // Exact contacts: at least one, all at one radius, near the f64 one.
+        let mut n = 0usize;
+        let st = unsafe { mx_mesh3d_ball_contacts(m, tetra, p.as_ptr(), null_mut(), 0, &mut n) };
+        assert_ne!(st, mx_status::MX_ERR_PANIC);
+        if st == mx_status::MX_OK {
+            assert!(n >= 1);
+            let mut cs = vec![unsafe { std::mem::zeroed::<mx_contact3>() }; n];
+            let st = unsafe { mx_mesh3d_ball_contacts(m, tetra, p.as_ptr(), cs.as_mut_ptr(), n, &mut n) };
+            assert_eq!(st, mx_status::MX_OK);
+            assert!(cs.iter().all(|c| c.radius == cs[0].radius && c.radius >= 0.0));
+            if q.has_ball == 1 && q.ball_radius.is_finite() && q.ball_radius > 0.0 {
+                let r = cs[0].radius;
+                assert!((r - q.ball_radius).abs() <= 1e-6 * (r + 1.0) || !r.is_finite(), "{r} vs {}", q.ball_radius);
+            }
         }
         let mut b = unsafe { std::mem::zeroed::<mx_maximal_ball3>() };
         let st = unsafe { mx_mesh3d_maximal_ball(m, tetra, p.as_ptr(), i % 5, &mut b) };

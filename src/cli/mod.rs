@@ -236,6 +236,10 @@ enum Command {
         /// The points file.
         #[arg(long)]
         points: PathBuf,
+        /// With --ball: decide the largest ball's radius and contacts exactly and list every contact
+        /// (`contacts`: ball and surface features, VF/EE/FV/VE/EV/VV); about five times slower.
+        #[arg(long, requires = "ball")]
+        exact: bool,
         /// Write `{"results": [...]}` here (default: print it).
         #[arg(long)]
         json: Option<PathBuf>,
@@ -316,7 +320,9 @@ pub fn run() -> ExitCode {
     let result = match cli.command.unwrap_or(Command::Demo { output: "medax-demo.svg".into() }) {
         Command::Info { shape, json } => info::run(&shape, json.as_deref()),
         Command::Convert { input, output } => mesh::run_convert(&input, &output),
-        Command::Query3d { mesh, ball, points, json } => query3d::run(&mesh, ball.as_deref(), &points, json.as_deref()),
+        Command::Query3d { mesh, ball, points, exact, json } => {
+            query3d::run(&mesh, ball.as_deref(), &points, exact, json.as_deref())
+        }
         Command::Axis(args) => axis::run(&args),
         Command::Voronoi(args) => voronoi::run(&args),
         Command::Offset(args) => offset::run(&args),

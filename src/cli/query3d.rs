@@ -4,7 +4,7 @@
 
 use medax::io::mesh::read_mesh;
 use medax::kernel::Point3;
-use medax::shape::{Ball3, ContactKind3, Mesh3d, MeshOptions};
+use medax::shape::{Ball3, ContactKind3, ExactContacts, Feature3, Mesh3d, MeshOptions, SurfacePart};
 use rayon::prelude::*;
 use serde_json::{json, Value};
 use std::path::Path;
@@ -62,7 +62,37 @@ fn kind_name(k: ContactKind3) -> &'static str {
     }
 }
 
-pub fn run(mesh_path: &Path, ball: Option<&str>, points: &Path, json_out: Option<&Path>) -> Result<(), ExitCode> {
+/// The exact contacts as JSON: `[{"kind", "ball": {"vertex"|"edge"|"facet": i},
+/// "surface": {"vertex": v}|{"edge": [a, b]}|{"face": t}, "triangle", "point", "flat"}, ...]`.
+fn contacts_json(x: &ExactContacts) -> Value {
+    let list: Vec<Value> = x
+        .contacts
+        .iter()
+        .map(|c| {
+            let ball = match c.ball {
+                Feature3::Vertex(i) => json!({ "vertex": i }),
+                Feature3::Edge(i) => json!({ "edge": i }),
+                Feature3::Facet(i) => json!({ "facet": i }),
+            };
+            let surface = match c.surface {
+                SurfacePart::Vertex(v) => json!({ "vertex": v }),
+                SurfacePart::Edge(e) => json!({ "edge": e }),
+                SurfacePart::Face(t) => json!({ "face": t }),
+            };
+            json!({"kind": kind_name(c.kind), "ball": ball, "surface": surface, "triangle": c.triangle,
+                   "point": c.point.to_array(), "flat": c.flat})
+        })
+        .collect();
+    Value::Array(list)
+}
+
+pub fn run(
+    mesh_path: &Path,
+    ball: Option<&str>,
+    points: &Path,
+    exact: bool,
+    json_out: Option<&Path>,
+) -> Result<(), ExitCode> {
     let fail = |msg: String, code: u8| {
         eprintln!("medax: {msg}");
         ExitCode::from(code)
@@ -85,7 +115,14 @@ pub fn run(mesh_path: &Path, ball: Option<&str>, points: &Path, json_out: Option
                 "distance": c.squared_distance.sqrt(),
                 "closest": c.point.to_array(),
             });
-            if let (Some(b), Some(true)) = (&reach, side) {
+            if let (Some(b), Some(true), true) = (&reach, side, exact) {
+                let x = mesh.tree().exact_contacts(p, b).expect("a valid solid has triangles");
+                r["ball_radius"] = json!(x.radius);
+                let first = x.contacts[0];
+                r["contact"] =
+                    json!({"point": first.point.to_array(), "triangle": first.triangle, "kind": kind_name(first.kind)});
+                r["contacts"] = contacts_json(&x);
+            } else if let (Some(b), Some(true)) = (&reach, side) {
                 let k = mesh.tree().ball_radius_with(p, b).expect("a valid solid has triangles");
                 r["ball_radius"] = json!(k.radius);
                 r["contact"] = json!({"point": k.point.to_array(), "triangle": k.triangle, "kind": kind_name(k.kind)});

@@ -4,11 +4,11 @@
 //! many at once.
 
 use super::ball::mx_ball;
-use super::boundary::{batch_room, check_out, fill_items, guard, slice};
+use super::boundary::{batch_room, fill_items, guard, slice};
 use super::handles::{arg, query};
 use super::last_error::FfiError;
 use super::mesh3d::mx_mesh3d;
-use super::mesh3d_query::{kind_of, mx_contact3_kind};
+use super::mesh3d_query::{kind_of, mx_contact3_kind, solid_and_ball};
 use super::status::mx_status;
 use crate::kernel::Point3;
 use crate::shape::{Ball3, MaximalBall, Mesh3d, Reach};
@@ -133,11 +133,8 @@ pub unsafe extern "C" fn mx_mesh3d_maximal_balls(
     count: *mut usize,
 ) -> mx_status {
     guard(|| {
-        check_out(count, "count")?;
         // SAFETY: caller contract.
-        let m = unsafe { arg(mesh)? };
-        // SAFETY: caller contract.
-        let b = unsafe { arg(ball)? }.as_space()?;
+        let (m, b) = unsafe { solid_and_ball(mesh, ball, count)? };
         if xyz_len % 3 != 0 || vertices_len != xyz_len / 3 {
             return Err(FfiError::new(
                 mx_status::MX_ERR_INVALID_ARGUMENT,

@@ -74,6 +74,23 @@ fn point_of(xyz: &[f64]) -> Result<Point3, FfiError> {
     Ok(Point3::new(xyz[0], xyz[1], xyz[2]))
 }
 
+/// The prologue of a buffer query of a solid under a space ball: `count`
+/// writable, `mesh` live, `ball` a live space ball.
+///
+/// # Safety
+/// `mesh` and `ball` NULL or live handles.
+pub(super) unsafe fn solid_and_ball<'a>(
+    mesh: *const mx_mesh3d,
+    ball: *const mx_ball,
+    count: *mut usize,
+) -> Result<(&'a mx_mesh3d, &'a crate::shape::Ball3), FfiError> {
+    check_out(count, "count")?;
+    // SAFETY: forwarded contract.
+    let m = unsafe { arg(mesh)? };
+    // SAFETY: forwarded contract.
+    Ok((m, unsafe { arg(ball)? }.as_space()?))
+}
+
 pub(super) fn kind_of(k: ContactKind3) -> mx_contact3_kind {
     match k {
         ContactKind3::VertexFace => mx_contact3_kind::MX_CONTACT3_VF,

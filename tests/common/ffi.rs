@@ -1,8 +1,20 @@
 //! Helpers for the tests that call the C ABI from Rust as a C caller would.
 
 use medax::ffi::*;
+use medax::shape::{Mesh3d, MeshOptions};
 use std::ffi::CStr;
-use std::ptr::null_mut;
+use std::ptr::{null, null_mut};
+
+/// A triangle soup as a Rust solid and as a C handle (`mx_mesh3d_from_arrays`).
+pub fn c_solid((v, t): &(Vec<[f64; 3]>, Vec<[u32; 3]>)) -> (Mesh3d, *mut mx_mesh3d) {
+    let rust = Mesh3d::from_triangles(v, t, &MeshOptions::default()).unwrap();
+    let xyz: Vec<f64> = v.iter().flatten().copied().collect();
+    let abc: Vec<u32> = t.iter().flatten().copied().collect();
+    let mut m = null_mut();
+    let st = unsafe { mx_mesh3d_from_arrays(xyz.as_ptr(), xyz.len(), abc.as_ptr(), abc.len(), null(), &mut m) };
+    assert_eq!(st, mx_status::MX_OK, "{}", last_message());
+    (rust, m)
+}
 
 /// The thread's last error message.
 pub fn last_message() -> String {

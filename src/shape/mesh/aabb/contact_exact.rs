@@ -44,6 +44,10 @@ pub struct ExactContact {
     pub triangle: u32,
     /// The point (exact value rounded to `f64`).
     pub point: Point3,
+    /// True when the ball lies flat on a triangle holding the point (a ball
+    /// edge or facet along it): the point is a corner of a contact segment
+    /// or polygon.
+    pub flat: bool,
 }
 
 /// The largest ball at a centre, decided exactly.
@@ -103,10 +107,10 @@ impl TriangleTree {
         let corners: Vec<[Point3; 3]> = near.iter().map(|&k| self.corners(k)).collect();
         let (radius, points) = touch_exact_many(ball, c, &corners)?;
         let mut per_triangle = vec![0usize; near.len()];
+        points.iter().for_each(|(i, _)| per_triangle[*i] += 1);
         let mut contacts: Vec<ExactContact> = points
             .into_iter()
             .map(|(i, p)| {
-                per_triangle[i] += 1;
                 let k = near[i];
                 let vs = self.triangles[k];
                 let surface = match p.triangle {
@@ -117,18 +121,22 @@ impl TriangleTree {
                     }
                     TrianglePart::Face => SurfacePart::Face(self.ids[k]),
                 };
-                ExactContact {
-                    ball: p.ball,
-                    surface,
-                    kind: kind(p.ball, surface),
-                    triangle: self.ids[k],
-                    point: p.point,
-                }
+                let (triangle, point, flat) = (self.ids[k], p.point, per_triangle[i] > 1);
+                ExactContact { ball: p.ball, surface, kind: kind(p.ball, surface), triangle, point, flat }
             })
             .collect();
-        let flat = per_triangle.iter().any(|&n| n > 1);
+        let flat = contacts.iter().any(|x| x.flat);
+        // One contact per pair of features: the least triangle, flat when
+        // any triangle holding it is.
         contacts.sort_by_key(|x| (x.surface, x.ball, x.triangle));
-        contacts.dedup_by_key(|x| (x.surface, x.ball));
+        let mut merged: Vec<ExactContact> = Vec::with_capacity(contacts.len());
+        for x in contacts {
+            match merged.last_mut() {
+                Some(m) if (m.surface, m.ball) == (x.surface, x.ball) => m.flat |= x.flat,
+                _ => merged.push(x),
+            }
+        }
+        let contacts = merged;
         Some(ExactContacts { radius, contacts, flat })
     }
 }
