@@ -15,7 +15,7 @@
 
 mod common;
 
-use common::rational::{cross, dot, exact_planes, gauge, integer_meshes, lp_points, sub, v_of, Q, V};
+use common::rational::{check_features, exact_planes, gauge, integer_meshes, lp_points, sub, v_of, Q, V};
 use medax::kernel::Point3;
 use medax::shape::mesh_samples::torus;
 use medax::shape::{Ball3, ContactKind3, ExactContacts, Feature3, Mesh3d, MeshOptions, SurfacePart, TriangleTree};
@@ -112,46 +112,13 @@ fn check(m: &Mesh3d, ball: &Ball3, planes: &[(V, Q)], c: Point3, got: &ExactCont
     assert_eq!(got.radius, r.f64(), "{what}: radius");
     let near = |a: Point3, b: Point3| (a - b).norm() <= 1e-12 * (1.0 + a.norm());
     let cq = v_of(c);
-    let pos = |i: u32| v_of(m.positions()[i as usize]);
     for x in &got.contacts {
         let y = *points
             .iter()
             .find(|&&y| near(f64_of(y), x.point))
             .unwrap_or_else(|| panic!("{what}: contact {x:?} is not a least point of the oracle {points:?}"));
-        match x.surface {
-            SurfacePart::Vertex(i) => assert!(same(y, pos(i)), "{what}: {x:?} not at that vertex"),
-            SurfacePart::Edge([a, b]) => {
-                let (pa, pb) = (pos(a), pos(b));
-                let along = sub(pb, pa);
-                let on = cross(along, sub(y, pa)).iter().all(|q| q.sign().is_eq());
-                let s = dot(sub(y, pa), along);
-                assert!(
-                    on && s.sign().is_gt() && s.cmp(dot(along, along)).is_lt(),
-                    "{what}: {x:?} not inside its edge"
-                );
-            }
-            SurfacePart::Face(t) => {
-                let tq = m.triangles()[t as usize].map(pos);
-                let n = cross(sub(tq[1], tq[0]), sub(tq[2], tq[0]));
-                let inside = (0..3).all(|k| dot(cross(sub(tq[(k + 1) % 3], tq[k]), sub(y, tq[k])), n).sign().is_gt());
-                assert!(inside && dot(n, sub(y, tq[0])).sign().is_eq(), "{what}: {x:?} not inside its face");
-            }
-        }
+        check_features(m, ball, planes, y, (cq, r), x, what);
         let d = sub(y, cq);
-        let tight: Vec<usize> =
-            planes.iter().enumerate().filter(|(_, (n, h))| dot(*n, d).cmp(h.mul(r)).is_eq()).map(|(f, _)| f).collect();
-        match x.ball {
-            Feature3::Vertex(v) => {
-                let w = v_of(ball.vertices()[v]);
-                assert!((0..3).all(|k| d[k].cmp(w[k].mul(r)).is_eq()), "{what}: {x:?} not at that ball vertex");
-            }
-            Feature3::Edge(e) => {
-                let mut want = ball.edges()[e].facets.to_vec();
-                want.sort_unstable();
-                assert_eq!(tight, want, "{what}: {x:?} not inside that ball edge");
-            }
-            Feature3::Facet(f) => assert_eq!(tight, vec![f], "{what}: {x:?} not inside that ball facet"),
-        }
         assert!(gauge(planes, d).cmp(r).is_eq());
         let kind = match (x.ball, x.surface) {
             (Feature3::Vertex(_), SurfacePart::Face(_)) => ContactKind3::VertexFace,
@@ -170,10 +137,6 @@ fn check(m: &Mesh3d, ball: &Ball3, planes: &[(V, Q)], c: Point3, got: &ExactCont
             assert!(got.contacts.iter().any(|x| near(f64_of(*y), x.point)), "{what}: least point {y:?} missing");
         }
     }
-}
-
-fn same(a: V, b: V) -> bool {
-    (0..3).all(|k| a[k].cmp(b[k]).is_eq())
 }
 
 #[test]

@@ -45,7 +45,8 @@ pub use index::box_tree::BoxTree;
 pub use index::chain_tree::ChainTree;
 pub use mesh::samples as mesh_samples;
 pub use mesh::{
-    BallContact, Closest, ContactKind3, ExactContact, ExactContacts, Hit, MaximalBall, SurfacePart, TriangleTree,
+    BallContact, Closest, ContactKind3, ExactContact, ExactContacts, ExactMaximalBall, Hit, MaximalBall, SurfacePart,
+    TriangleTree,
 };
 pub use mesh::{Component, FaceRef, Faces, Mesh3d, MeshError, MeshOptions, MeshReport};
 pub use model::bulge_loop::{winding_contribution, Loop, LoopKind, Vertex};

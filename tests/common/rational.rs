@@ -5,7 +5,7 @@
 
 use medax::kernel::Point3;
 use medax::shape::mesh_samples::{cuboid, sphere, torus, union};
-use medax::shape::Ball3;
+use medax::shape::{Ball3, ExactContact, Feature3, Mesh3d, SurfacePart};
 use std::cmp::Ordering;
 
 /// A rational `n / d` with `d > 0`, reduced.
@@ -153,4 +153,52 @@ pub fn integer_meshes() -> Vec<(&'static str, Soup)> {
         ("sphere", round(sphere([0.0, 0.0, 0.0], 1.0, 8, 6), 8.0)),
         ("torus", round(torus(3.0, 1.3, 12, 8), 8.0)),
     ]
+}
+
+/// Checks a contact's features on the oracle's exact point `y` of a ball
+/// of centre `centre` and radius `r`: the surface part holds `y` (a
+/// vertex is `y`, an edge has it strictly inside, a face too), and the
+/// ball part is the least one (`y − centre` is `r` times that vertex, or
+/// exactly that edge's two facets or that facet are tight).
+pub fn check_features(
+    m: &Mesh3d,
+    ball: &Ball3,
+    planes: &[(V, Q)],
+    y: V,
+    (centre, r): (V, Q),
+    x: &ExactContact,
+    what: &str,
+) {
+    let pos = |i: u32| v_of(m.positions()[i as usize]);
+    let same = |a: V, b: V| (0..3).all(|k| a[k].cmp(b[k]).is_eq());
+    match x.surface {
+        SurfacePart::Vertex(i) => assert!(same(y, pos(i)), "{what}: {x:?} not at that vertex"),
+        SurfacePart::Edge([a, b]) => {
+            let along = sub(pos(b), pos(a));
+            let on = cross(along, sub(y, pos(a))).iter().all(|q| q.sign().is_eq());
+            let t = dot(sub(y, pos(a)), along);
+            assert!(on && t.sign().is_gt() && t.cmp(dot(along, along)).is_lt(), "{what}: {x:?} off its edge");
+        }
+        SurfacePart::Face(t) => {
+            let tq = m.triangles()[t as usize].map(pos);
+            let n = cross(sub(tq[1], tq[0]), sub(tq[2], tq[0]));
+            let inside = (0..3).all(|k| dot(cross(sub(tq[(k + 1) % 3], tq[k]), sub(y, tq[k])), n).sign().is_gt());
+            assert!(inside && dot(n, sub(y, tq[0])).sign().is_eq(), "{what}: {x:?} not inside its face");
+        }
+    }
+    let d = sub(y, centre);
+    let tight: Vec<usize> =
+        planes.iter().enumerate().filter(|(_, (n, h))| dot(*n, d).cmp(h.mul(r)).is_eq()).map(|(f, _)| f).collect();
+    match x.ball {
+        Feature3::Vertex(u) => {
+            let w = v_of(ball.vertices()[u]);
+            assert!((0..3).all(|k| d[k].cmp(w[k].mul(r)).is_eq()), "{what}: {x:?} not at that ball vertex");
+        }
+        Feature3::Edge(e) => {
+            let mut want = ball.edges()[e].facets.to_vec();
+            want.sort_unstable();
+            assert_eq!(tight, want, "{what}: {x:?} not inside that ball edge");
+        }
+        Feature3::Facet(f) => assert_eq!(tight, vec![f], "{what}: {x:?} not inside that ball facet"),
+    }
 }

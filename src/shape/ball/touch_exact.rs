@@ -86,6 +86,47 @@ pub fn touch_exact(ball: &Ball3, c: Point3, t: [Point3; 3]) -> Option<ExactTouch
 /// point once per triangle). `None` when a coordinate is not finite or
 /// `ts` is empty.
 pub(crate) fn touch_exact_many(ball: &Ball3, c: Point3, ts: &[[Point3; 3]]) -> Option<(f64, Vec<(usize, TouchPoint)>)> {
+    solve(ball, None, c, ts).map(|s| (s.radius, s.points))
+}
+
+/// The exact answer of a question, rounded.
+pub(crate) struct Solved {
+    /// The least radius.
+    pub radius: f64,
+    /// Where it is reached, with the triangle's index in the question.
+    pub points: Vec<(usize, TouchPoint)>,
+    /// The ball's centre: the point asked, or for a ball grown from a
+    /// vertex `p − radius·ṽ`.
+    pub centre: Point3,
+}
+
+/// The ball `p + s·(B − ṽ)` grown about `p` from ball vertex `apex`
+/// (maximal* balls, thesis 3.3.2.2): the exact least `s` at which it
+/// touches one of `ts`, where, and its centre `p − s·ṽ`. Triangles
+/// through `p` answer 0; the caller leaves them out. `None` as for
+/// [`touch_exact_many`], or when no triangle meets the vertex's cone.
+pub(crate) fn grow_exact_many(ball: &Ball3, apex: usize, p: Point3, ts: &[[Point3; 3]]) -> Option<Solved> {
+    solve(ball, Some(apex), p, ts)
+}
+
+/// Whether triangle `t` meets the open cone of the balls grown about `p`
+/// from ball vertex `apex` (see `Setting::enters_cone`): only such a
+/// triangle can stop a maximal* ball. Filter first, integers behind.
+pub(crate) fn enters_cone(ball: &Ball3, apex: usize, p: Point3, t: [Point3; 3]) -> bool {
+    let ts = [t];
+    let values = ball.vertices().iter().chain(ts.iter().flatten()).chain([&p]).flat_map(|q| q.to_array());
+    let units = Units::covering(values);
+    let filtered: Setting<'_, Fb> = Setting::new(ball, Some(apex), units, p, &ts);
+    match filtered.enters_cone(0) {
+        Ok(answer) => answer,
+        Err(Unsure) => {
+            let exact: Setting<'_, BigInt> = Setting::new(ball, Some(apex), units, p, &ts);
+            exact.enters_cone(0).unwrap_or(true)
+        }
+    }
+}
+
+fn solve(ball: &Ball3, apex: Option<usize>, c: Point3, ts: &[[Point3; 3]]) -> Option<Solved> {
     let finite = |p: &Point3| p.to_array().iter().all(|v| v.is_finite());
     if ts.is_empty() || !finite(&c) || !ts.iter().flatten().all(finite) {
         return None;
@@ -93,10 +134,10 @@ pub(crate) fn touch_exact_many(ball: &Ball3, c: Point3, ts: &[[Point3; 3]]) -> O
     // Integers in units common to the ball, the centre and the triangles.
     let values = ball.vertices().iter().chain(ts.iter().flatten()).chain([&c]).flat_map(|p| p.to_array());
     let units = Units::covering(values);
-    let exact: Setting<'_, BigInt> = Setting::new(ball, units, c, ts);
+    let exact: Setting<'_, BigInt> = Setting::new(ball, apex, units, c, ts);
     // A sure, single winner of the filter has its features decided; its
     // numbers come again from the integers. Otherwise everything does.
-    let filtered: Setting<'_, Fb> = Setting::new(ball, units, c, ts);
+    let filtered: Setting<'_, Fb> = Setting::new(ball, apex, units, c, ts);
     let winners: Vec<Candidate<BigInt>> = match least(&filtered) {
         // One point (maybe reached from several triangles sharing it).
         Ok(best)
@@ -113,16 +154,22 @@ pub(crate) fn touch_exact_many(ball: &Ball3, c: Point3, ts: &[[Point3; 3]]) -> O
         }
         _ => least(&exact).ok()?,
     };
-    let mut radius = f64::NAN;
+    let first = winners.first()?;
+    let radius = Ring::ratio(&first.num, &first.den, 0);
+    // The centre: the point asked, less `s·ṽ` for a grown ball.
+    let mut centre = exact.at_centre.scale(&first.den);
+    if let Some(a) = apex {
+        centre = centre.sub(&exact.vertex_as_given(a).scale(&first.num));
+    }
+    let centre = centre.approx_over(&first.den, exact.shift());
     let mut points: Vec<(usize, TouchPoint)> = winners
         .iter()
         .map(|cand| {
-            radius = Ring::ratio(&cand.num, &cand.den, 0);
             let point = cand.at.add(&exact.at_centre.scale(&cand.den)).approx_over(&cand.den, exact.shift());
             (cand.triangle_index, TouchPoint { point, ball: cand.ball, triangle: cand.triangle })
         })
         .collect();
     points.sort_by_key(|(ti, p)| (*ti, p.triangle, p.ball));
     points.dedup_by_key(|(ti, p)| (*ti, p.triangle, p.ball));
-    Some((radius, points))
+    Some(Solved { radius, points, centre })
 }

@@ -78,6 +78,11 @@ pub(super) struct Candidate<R> {
 pub(super) struct Setting<'a, R> {
     ball: &'a Ball3,
     units: Units,
+    /// For a ball grown about a point from one of its vertices (a
+    /// maximal* ball): that vertex, the origin of the ball `B − ṽ` (its
+    /// facets through `ṽ` have `h = 0`: the walls of the cone the balls
+    /// fill).
+    apex: Option<usize>,
     /// The triangles as given, for [`Source`]s.
     given: &'a [[Point3; 3]],
     /// The centre where it was, for the points reported.
@@ -93,10 +98,11 @@ pub(super) struct Setting<'a, R> {
 impl<'a, R: Ring> Setting<'a, R> {
     /// The question in `units` (integers: common to every value of the
     /// question, so each equation is homogeneous and `r` unitless).
-    pub fn new(ball: &'a Ball3, units: Units, c: Point3, ts: &'a [[Point3; 3]]) -> Setting<'a, R> {
+    pub fn new(ball: &'a Ball3, apex: Option<usize>, units: Units, c: Point3, ts: &'a [[Point3; 3]]) -> Setting<'a, R> {
         Setting {
             ball,
             units,
+            apex,
             given: ts,
             at_centre: V3::of(c, units),
             c: V3::of(Point3::new(0.0, 0.0, 0.0), units),
@@ -112,7 +118,17 @@ impl<'a, R: Ring> Setting<'a, R> {
     }
 
     fn vertex(&self, v: usize) -> &V3<R> {
-        self.vertices[v].get_or_init(|| V3::of(self.ball.vertices()[v], self.units))
+        let w = self.ball.vertices();
+        self.vertices[v].get_or_init(|| match self.apex {
+            Some(a) => V3::diff(w[v], w[a], self.units),
+            None => V3::of(w[v], self.units),
+        })
+    }
+
+    /// The ball's vertex `v` where the ball was given (not moved to an
+    /// apex), for centres reported.
+    pub fn vertex_as_given(&self, v: usize) -> V3<R> {
+        V3::of(self.ball.vertices()[v], self.units)
     }
 
     fn plane(&self, f: usize) -> &(V3<R>, R) {
@@ -124,6 +140,76 @@ impl<'a, R: Ring> Setting<'a, R> {
             let n = b.sub(a).cross(&c.sub(a));
             let h = n.dot(a);
             (n, h)
+        })
+    }
+
+    /// For a ball grown from the apex: whether triangle `ti` meets the
+    /// open cone the balls fill (some point strictly inside every wall).
+    /// A triangle that meets only the closed cone touches the balls on
+    /// their walls at most and never enters one, so it stops no growth; one
+    /// that meets the open cone enters the ball right after its least
+    /// touching radius (the closure of its part in the open cone is its
+    /// part in the closed cone). Decided by the linear program "largest
+    /// `t ≤ 1` with a point of the triangle at least `t` inside every
+    /// wall", every vertex of it enumerated (a handful of walls).
+    pub fn enters_cone(&self, ti: usize) -> Result<bool, Unsure> {
+        let Some(apex) = self.apex else { return Ok(true) };
+        let t = &self.ts[ti];
+        let (e1, e2) = (t[1].sub(&t[0]), t[2].sub(&t[0]));
+        let zero = R::of(0.0, self.units);
+        let one = R::of(1.0, self.units);
+        let minus = one.neg();
+        // Rows `[ca, cb, ct, c0]` of `ca·a + cb·b + ct·t + c0 ≤ 0`.
+        let mut rows = vec![
+            [minus.clone(), zero.clone(), zero.clone(), zero.clone()],
+            [zero.clone(), minus.clone(), zero.clone(), zero.clone()],
+            [one.clone(), one.clone(), zero.clone(), minus.clone()],
+            [zero.clone(), zero.clone(), one.clone(), minus.clone()],
+        ];
+        for &w in self.ball.facets_around(apex) {
+            let (n, _) = self.plane(w);
+            rows.push([n.dot(&e1), n.dot(&e2), one.clone(), n.dot(&t[0])]);
+        }
+        let mut best: Option<(R, R)> = None;
+        let k = rows.len();
+        for i in 0..k {
+            for j in i + 1..k {
+                for l in j + 1..k {
+                    let m = [&rows[i], &rows[j], &rows[l]];
+                    let col = |c: usize| V3 { x: m[0][c].clone(), y: m[1][c].clone(), z: m[2][c].clone() };
+                    let c0 = col(3);
+                    let rhs = V3 { x: c0.x.neg(), y: c0.y.neg(), z: c0.z.neg() };
+                    let (ca, cb, ct) = (col(0), col(1), col(2));
+                    let mut d = ca.det(&cb, &ct);
+                    let (mut da, mut db, mut dt) = (rhs.det(&cb, &ct), ca.det(&rhs, &ct), ca.det(&cb, &rhs));
+                    match sure(d.sign())? {
+                        Ordering::Equal => continue,
+                        Ordering::Less => (d, da, db, dt) = (d.neg(), da.neg(), db.neg(), dt.neg()),
+                        Ordering::Greater => {}
+                    }
+                    let mut feasible = true;
+                    for r in &rows {
+                        let v = r[0].mul(&da).add(&r[1].mul(&db)).add(&r[2].mul(&dt)).add(&r[3].mul(&d));
+                        if sure(v.sign())? == Ordering::Greater {
+                            feasible = false;
+                            break;
+                        }
+                    }
+                    if feasible {
+                        let better = match &best {
+                            None => true,
+                            Some((bt, bd)) => sure(cmp_ratios(&dt, &d, bt, bd))? == Ordering::Greater,
+                        };
+                        if better {
+                            best = Some((dt, d));
+                        }
+                    }
+                }
+            }
+        }
+        Ok(match best {
+            Some((dt, _)) => sure(dt.sign())? == Ordering::Greater,
+            None => false,
         })
     }
 
@@ -198,20 +284,36 @@ impl<'a, R: Ring> Setting<'a, R> {
                     let (n, h) = self.plane(facet);
                     return found(which, n.dot(&d), h.clone(), t[corner].scale(h), Feature3::Facet(facet), part);
                 }
-                let (mut best, mut tight) = (0, vec![0]);
-                let value = |f: usize| {
-                    let (n, h) = self.plane(f);
-                    (n.dot(&d), h.clone())
-                };
-                let (mut num, mut den) = value(0);
-                for g in 1..self.ball.facets().len() {
-                    let (ng, hg) = value(g);
-                    match sure(cmp_ratios(&ng, &hg, &num, &den))? {
-                        Ordering::Greater => (best, tight, num, den) = (g, vec![g], ng, hg),
+                // The facet the corner's gauge is largest on, and its ties.
+                // A wall of the apex's cone (h = 0) bounds no radius: the
+                // corner is outside every ball when beyond it, on the wall
+                // when on it.
+                let mut best: Option<(usize, R, R)> = None;
+                let (mut tight, mut walls) = (Vec::new(), Vec::new());
+                for g in 0..self.ball.facets().len() {
+                    let (n, h) = self.plane(g);
+                    let ng = n.dot(&d);
+                    if sure(h.sign())? == Ordering::Equal {
+                        match sure(ng.sign())? {
+                            Ordering::Greater => return Ok(None),
+                            Ordering::Equal => walls.push(g),
+                            Ordering::Less => {}
+                        }
+                        continue;
+                    }
+                    let order = match &best {
+                        None => Ordering::Greater,
+                        Some((_, num, den)) => sure(cmp_ratios(&ng, h, num, den))?,
+                    };
+                    match order {
+                        Ordering::Greater => (best, tight) = (Some((g, ng, h.clone())), vec![g]),
                         Ordering::Equal => tight.push(g),
                         Ordering::Less => {}
                     }
                 }
+                let Some((best, num, den)) = best else { return Ok(None) };
+                tight.extend(walls);
+                tight.sort_unstable();
                 let at = t[corner].scale(&den);
                 found(Which::Fv { corner, facet: best }, num, den, at, ball_part(self.ball, &tight), part)
             }

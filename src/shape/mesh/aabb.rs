@@ -34,7 +34,9 @@ pub use contact_exact::{ExactContact, ExactContacts, SurfacePart};
 mod inside;
 mod intersect;
 mod maximal;
+mod maximal_exact;
 pub use maximal::MaximalBall;
+pub use maximal_exact::ExactMaximalBall;
 mod self_cross;
 
 /// Most triangles in a leaf: few enough that scanning a leaf costs about

@@ -24,7 +24,8 @@ mod triangulate;
 mod weld;
 
 pub use aabb::{
-    BallContact, Closest, ContactKind3, ExactContact, ExactContacts, Hit, MaximalBall, SurfacePart, TriangleTree,
+    BallContact, Closest, ContactKind3, ExactContact, ExactContacts, ExactMaximalBall, Hit, MaximalBall, SurfacePart,
+    TriangleTree,
 };
 pub use error::{FaceRef, MeshError};
 pub use mesh3d::{Component, Faces, Mesh3d, MeshReport};

@@ -14,10 +14,10 @@
 
 use super::TriangleTree;
 use crate::kernel::Point3;
-use crate::shape::ball::{touch_exact_many, Ball3, ContactKind3, Feature3, Reach, TrianglePart};
+use crate::shape::ball::{touch_exact_many, Ball3, ContactKind3, Feature3, Reach, TouchPoint, TrianglePart};
 
 /// Relative width of the band of triangles asked exactly.
-const BAND: f64 = 1e-9;
+pub(super) const BAND: f64 = 1e-9;
 
 /// A feature of the surface: a vertex, an edge (its two vertices, the
 /// lesser first) or the interior of a triangle (its index).
@@ -106,6 +106,14 @@ impl TriangleTree {
         }
         let corners: Vec<[Point3; 3]> = near.iter().map(|&k| self.corners(k)).collect();
         let (radius, points) = touch_exact_many(ball, c, &corners)?;
+        let (contacts, flat) = self.contacts_of(&near, points);
+        Some(ExactContacts { radius, contacts, flat })
+    }
+
+    /// The points of contact of triangles `near[i]` as contacts with
+    /// surface features, one per pair of features (the least triangle,
+    /// flat when any triangle holding it is), and whether any is flat.
+    pub(super) fn contacts_of(&self, near: &[usize], points: Vec<(usize, TouchPoint)>) -> (Vec<ExactContact>, bool) {
         let mut per_triangle = vec![0usize; near.len()];
         points.iter().for_each(|(i, _)| per_triangle[*i] += 1);
         let mut contacts: Vec<ExactContact> = points
@@ -137,6 +145,6 @@ impl TriangleTree {
             }
         }
         let contacts = merged;
-        Some(ExactContacts { radius, contacts, flat })
+        (contacts, flat)
     }
 }

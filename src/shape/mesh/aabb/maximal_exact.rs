@@ -1,0 +1,79 @@
+//! Maximal* balls decided exactly: the radius at which the ball
+//! `p + s·(B − ṽ)` grown about a point from a ball vertex first touches
+//! the surface elsewhere, its centre `p − s·ṽ`, and the contacts that
+//! stop it, each with the least ball and surface features holding it.
+//!
+//! The `f64` construction (`maximal.rs`) gives `s₀`; every triangle near
+//! the ball it found (least gauge from its centre within the band of
+//! `contact_exact.rs`) is asked exactly how far the ball grows before
+//! touching it: the same linear program as the largest ball's, with the
+//! ball's origin moved to `ṽ` (its facets through `ṽ` become the walls
+//! of the cone the balls fill). Triangles through `p` touch every ball
+//! there and never stop the growth unless they enter the cone, which the
+//! `f64` construction decides (radius 0); they are left out, and so are
+//! triangles that meet only the cone's walls (a ball edge lying along a
+//! face, common with axis-aligned solids and cube balls: the balls slide
+//! along them and never enter).
+
+use super::contact_exact::BAND;
+use super::{ExactContact, TriangleTree};
+use crate::kernel::Point3;
+use crate::shape::ball::{enters_cone, grow_exact_many, Reach};
+
+/// A maximal* ball with its stopping contacts decided exactly.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExactMaximalBall {
+    /// The radius: the exact value rounded; 0 (the vertex's cone enters
+    /// the surface at `p`) and infinity (nothing stops the ball: outside
+    /// the solid) as the `f64` construction decides them.
+    pub radius: f64,
+    /// The centre `p − radius·ṽ`: the exact value rounded (`p` itself for
+    /// radius 0 or infinity).
+    pub centre: Point3,
+    /// The contacts that stop the growth (away from `p`), each once,
+    /// ordered by surface then ball feature; empty for radius 0 or
+    /// infinity.
+    pub opposite: Vec<ExactContact>,
+    /// True when the ball lies flat on a triangle it stops at.
+    pub flat: bool,
+}
+
+impl TriangleTree {
+    /// The maximal* ball with ball vertex `vertex` at `p` (see
+    /// [`maximal_ball_with`](Self::maximal_ball_with)) with its radius,
+    /// centre and stopping contacts decided exactly. `None` as for the
+    /// `f64` construction.
+    pub fn maximal_ball_exact(&self, p: Point3, vertex: usize, reach: &Reach<'_>) -> Option<ExactMaximalBall> {
+        let found = self.maximal_ball_with(p, vertex, reach)?;
+        let (r, c) = (found.radius, found.centre);
+        if !(r > 0.0 && r.is_finite()) {
+            return Some(ExactMaximalBall { radius: r, centre: c, opposite: Vec::new(), flat: false });
+        }
+        let ball = reach.ball();
+        let b = self.bbox();
+        let size = [p, c, b.min, b.max].iter().flat_map(|q| q.to_array()).fold(0.0f64, |m, v| m.max(v.abs()));
+        // The band, and should rounding have put every stopping triangle
+        // outside it, every triangle the ball of twice the radius meets.
+        for limit in [r + BAND * (r + size / ball.inradius()), 2.0 * r] {
+            // Each near triangle on its own first: one through `p` answers
+            // 0, one the cone misses answers nothing, one that meets only
+            // the cone's walls never enters a ball: all left out.
+            let near: Vec<usize> = self
+                .near_triangles(c, limit, reach)
+                .into_iter()
+                .map(|(k, _)| k)
+                .filter(|&k| {
+                    let t = self.corners(k);
+                    enters_cone(ball, vertex, p, t)
+                        && grow_exact_many(ball, vertex, p, &[t]).is_some_and(|s| s.radius > 0.0)
+                })
+                .collect();
+            let corners: Vec<[Point3; 3]> = near.iter().map(|&k| self.corners(k)).collect();
+            if let Some(solved) = grow_exact_many(ball, vertex, p, &corners) {
+                let (opposite, flat) = self.contacts_of(&near, solved.points);
+                return Some(ExactMaximalBall { radius: solved.radius, centre: solved.centre, opposite, flat });
+            }
+        }
+        None
+    }
+}
