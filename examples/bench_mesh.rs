@@ -17,7 +17,8 @@
 //! arithmetic) against the `f64` ball radius on the first 10^4 inside
 //! points, with how often the floating filter had to give way.
 //!
-//! `cargo run --release --example bench_mesh -- [threads] [max_triangles]`
+//! `cargo run --release --example bench_mesh -- [threads] [max_triangles] [exact]`
+//! (`exact`: the third table only)
 
 use medax::io::mesh::{write_off, write_ply, MeshFormat};
 use medax::kernel::Point3;
@@ -128,8 +129,10 @@ fn queries(max: usize) {
 fn exact(max: usize) {
     let balls = [Ball3::tetrahedron(), fibonacci_ball()];
     println!("\nExact contacts at 10^4 inside points (\"near\" family), against the f64 ball radius:\n");
-    println!("| triangles | ball | f64 radius | exact contacts | ratio | non-regular contacts | flat |");
-    println!("|---:|---|---:|---:|---:|---:|---:|");
+    println!(
+        "| triangles | ball | f64 radius | exact contacts | ratio | non-regular contacts | flat | largest gap to f64 |"
+    );
+    println!("|---:|---|---:|---:|---:|---:|---:|---:|");
     for n in [10_000usize, 100_000, 1_000_000].into_iter().filter(|&n| n <= max) {
         let b = ((n / 4) as f64).sqrt().round() as usize;
         let (v, t) = torus(3.0, 1.0, 2 * b, b);
@@ -150,7 +153,80 @@ fn exact(max: usize) {
             let regular = [ContactKind3::VertexFace, ContactKind3::EdgeEdge, ContactKind3::FaceVertex];
             let odd = got.iter().flatten().filter(|x| x.contacts.iter().any(|c| !regular.contains(&c.kind))).count();
             let flat = got.iter().flatten().filter(|x| x.flat).count();
-            println!("| {} | {name} | {f:.4} s | {e:.4} s | {:.1} | {odd} | {flat} |", t.len(), e / f);
+            let radii = tree.ball_radii(&inner, ball);
+            let gap = got
+                .iter()
+                .zip(&radii)
+                .map(|(x, r)| match (x, r) {
+                    (Some(x), Some(r)) => (x.radius - r.radius).abs(),
+                    _ => f64::INFINITY,
+                })
+                .fold(0.0, f64::max);
+            println!("| {} | {name} | {f:.4} s | {e:.4} s | {:.1} | {odd} | {flat} | {gap:.1e} |", t.len(), e / f);
+        }
+    }
+}
+
+/// Maximal* balls at 10^4 surface points (a random point of a random
+/// triangle, a random ball vertex), `f64` against exact: time, how many
+/// grew, and the largest gap between their radii (absolute: the `f64`
+/// error is rounding of coordinates of size 4, about 10^-16 each, which
+/// is large against the radii near the surface).
+fn maximal(max: usize) {
+    let balls = [Ball3::tetrahedron(), fibonacci_ball()];
+    println!("\nMaximal* balls at 10^4 surface points, f64 against exact:\n");
+    println!("| triangles | ball | f64 | exact | ratio | grown | exact contacts per ball | radii apart by > 1e-9 | largest gap to f64 |");
+    println!("|---:|---|---:|---:|---:|---:|---:|---:|---:|");
+    for n in [10_000usize, 100_000, 1_000_000].into_iter().filter(|&n| n <= max) {
+        let b = ((n / 4) as f64).sqrt().round() as usize;
+        let (v, t) = torus(3.0, 1.0, 2 * b, b);
+        let mesh = Mesh3d::from_triangles(&v, &t, &MeshOptions::default()).unwrap();
+        let tree = mesh.tree();
+        let mut rng = SmallRng::seed_from_u64(54 + n as u64);
+        for (name, ball) in [("tetra", &balls[0]), ("128 facets", &balls[1])] {
+            // A point of a triangle by its parameters: exact on the plane
+            // for `maximal_ball_exact_on`, rounded for the f64 query.
+            let asked: Vec<(usize, (f64, f64), Point3, usize)> = (0..10_000)
+                .map(|_| {
+                    let tri = rng.gen_range(0..t.len());
+                    let [a, b, c] = t[tri].map(|i| Point3::from_array(v[i as usize]));
+                    let (s, w): (f64, f64) = (rng.gen::<f64>().sqrt(), rng.gen());
+                    let uv = (s * (1.0 - w), s * w);
+                    (tri, uv, a + (b - a) * uv.0 + (c - a) * uv.1, rng.gen_range(0..ball.vertices().len()))
+                })
+                .collect();
+            let reach = ball.reach();
+            let f = time(|| {
+                asked.iter().for_each(|&(_, _, p, k)| {
+                    tree.maximal_ball_with(p, k, &reach);
+                })
+            });
+            let e = time(|| {
+                asked.iter().for_each(|&(tri, uv, _, k)| {
+                    tree.maximal_ball_exact_on(tri, uv, k, &reach);
+                })
+            });
+            let (mut grown, mut contacts, mut gap, mut differ) = (0usize, 0usize, 0.0f64, 0usize);
+            for &(tri, uv, p, k) in &asked {
+                let (x, y) =
+                    (tree.maximal_ball_with(p, k, &reach).unwrap(), tree.maximal_ball_exact_on(tri, uv, k, &reach));
+                let Some(y) = y else {
+                    gap = f64::INFINITY;
+                    continue;
+                };
+                if x.radius > 0.0 && x.radius.is_finite() {
+                    grown += 1;
+                    contacts += y.opposite.len();
+                    gap = gap.max((x.radius - y.radius).abs());
+                    differ += ((x.radius - y.radius).abs() > 1e-9 * y.radius) as usize;
+                }
+            }
+            let per = contacts as f64 / grown.max(1) as f64;
+            println!(
+                "| {} | {name} | {f:.3} s | {e:.3} s | {:.1} | {grown} | {per:.2} | {differ} | {gap:.1e} |",
+                t.len(),
+                e / f
+            );
         }
     }
 }
@@ -176,6 +252,11 @@ fn main() {
     let max: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(1_000_000);
     if threads > 0 {
         rayon::ThreadPoolBuilder::new().num_threads(threads).build_global().unwrap();
+    }
+    if args.get(3).map(String::as_str) == Some("exact") {
+        exact(max);
+        maximal(max);
+        return;
     }
     println!("| triangles | arrays | binary STL | OFF | binary PLY | µs per triangle (arrays) |");
     println!("|---:|---:|---:|---:|---:|---:|");
@@ -213,4 +294,5 @@ fn main() {
     }
     queries(max);
     exact(max);
+    maximal(max);
 }

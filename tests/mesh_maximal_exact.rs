@@ -195,7 +195,8 @@ fn exact_maximal_balls_match_the_vertex_enumeration_oracle() {
                 let k = rng.gen_range(0..m.triangles().len());
                 let [a, b, c] = m.triangles()[k].map(|i| m.positions()[i as usize]);
                 // Dyadic points: inside the triangle, or an edge midpoint.
-                let p = if rng.gen_bool(0.7) { a + (b - a) * 0.25 + (c - a) * 0.25 } else { (a + b) * 0.5 };
+                let (u, w) = if rng.gen_bool(0.7) { (0.25, 0.25) } else { (0.5, 0.0) };
+                let p = a + (b - a) * u + (c - a) * w;
                 let vertex = rng.gen_range(0..ball.vertices().len());
                 let what = format!("{mesh_name}, ball {bi}, vertex {vertex} at {p:?}");
                 let got = m.tree().maximal_ball_exact(p, vertex, &reach);
@@ -206,6 +207,9 @@ fn exact_maximal_balls_match_the_vertex_enumeration_oracle() {
                     continue;
                 }
                 check(&m, ball, vertex, p, &got, &what, &mut seen);
+                // The same point given by its triangle (exact there too).
+                let on = m.tree().maximal_ball_exact_on(k, (u, w), vertex, &reach).unwrap();
+                assert_eq!(on, got, "{what}: on the triangle");
                 let f = m.tree().maximal_ball_with(p, vertex, &reach).unwrap();
                 assert!(
                     (f.radius - got.radius).abs() <= 1e-9 * got.radius,

@@ -22,6 +22,7 @@
 //! whole search (the walk of `reach3.rs` finds those triangles first).
 
 use super::ball3::{Ball3, Feature3};
+pub(crate) use super::touch_lp::Centre;
 pub use super::touch_lp::TrianglePart;
 use super::touch_lp::{Candidate, Setting, Source, Unsure};
 use crate::kernel::bigint::BigInt;
@@ -86,7 +87,7 @@ pub fn touch_exact(ball: &Ball3, c: Point3, t: [Point3; 3]) -> Option<ExactTouch
 /// point once per triangle). `None` when a coordinate is not finite or
 /// `ts` is empty.
 pub(crate) fn touch_exact_many(ball: &Ball3, c: Point3, ts: &[[Point3; 3]]) -> Option<(f64, Vec<(usize, TouchPoint)>)> {
-    solve(ball, None, c, ts).map(|s| (s.radius, s.points))
+    solve(ball, None, Centre::At(c), ts).map(|s| (s.radius, s.points))
 }
 
 /// The exact answer of a question, rounded.
@@ -105,17 +106,16 @@ pub(crate) struct Solved {
 /// touches one of `ts`, where, and its centre `p − s·ṽ`. Triangles
 /// through `p` answer 0; the caller leaves them out. `None` as for
 /// [`touch_exact_many`], or when no triangle meets the vertex's cone.
-pub(crate) fn grow_exact_many(ball: &Ball3, apex: usize, p: Point3, ts: &[[Point3; 3]]) -> Option<Solved> {
+pub(crate) fn grow_exact_many(ball: &Ball3, apex: usize, p: Centre, ts: &[[Point3; 3]]) -> Option<Solved> {
     solve(ball, Some(apex), p, ts)
 }
 
 /// Whether triangle `t` meets the open cone of the balls grown about `p`
 /// from ball vertex `apex` (see `Setting::enters_cone`): only such a
 /// triangle can stop a maximal* ball. Filter first, integers behind.
-pub(crate) fn enters_cone(ball: &Ball3, apex: usize, p: Point3, t: [Point3; 3]) -> bool {
+pub(crate) fn enters_cone(ball: &Ball3, apex: usize, p: Centre, t: [Point3; 3]) -> bool {
     let ts = [t];
-    let values = ball.vertices().iter().chain(ts.iter().flatten()).chain([&p]).flat_map(|q| q.to_array());
-    let units = Units::covering(values);
+    let units = units_of(ball, &p, &ts);
     let filtered: Setting<'_, Fb> = Setting::new(ball, Some(apex), units, p, &ts);
     match filtered.enters_cone(0) {
         Ok(answer) => answer,
@@ -126,14 +126,18 @@ pub(crate) fn enters_cone(ball: &Ball3, apex: usize, p: Point3, t: [Point3; 3]) 
     }
 }
 
-fn solve(ball: &Ball3, apex: Option<usize>, c: Point3, ts: &[[Point3; 3]]) -> Option<Solved> {
+/// Integers in units common to the ball, the centre and the triangles.
+fn units_of(ball: &Ball3, c: &Centre, ts: &[[Point3; 3]]) -> Units {
+    let values = ball.vertices().iter().chain(ts.iter().flatten()).flat_map(|p| p.to_array());
+    Units::covering(values.chain(c.values()))
+}
+
+fn solve(ball: &Ball3, apex: Option<usize>, c: Centre, ts: &[[Point3; 3]]) -> Option<Solved> {
     let finite = |p: &Point3| p.to_array().iter().all(|v| v.is_finite());
-    if ts.is_empty() || !finite(&c) || !ts.iter().flatten().all(finite) {
+    if ts.is_empty() || !c.values().iter().all(|v| v.is_finite()) || !ts.iter().flatten().all(finite) {
         return None;
     }
-    // Integers in units common to the ball, the centre and the triangles.
-    let values = ball.vertices().iter().chain(ts.iter().flatten()).chain([&c]).flat_map(|p| p.to_array());
-    let units = Units::covering(values);
+    let units = units_of(ball, &c, ts);
     let exact: Setting<'_, BigInt> = Setting::new(ball, apex, units, c, ts);
     // A sure, single winner of the filter has its features decided; its
     // numbers come again from the integers. Otherwise everything does.
@@ -155,17 +159,19 @@ fn solve(ball: &Ball3, apex: Option<usize>, c: Point3, ts: &[[Point3; 3]]) -> Op
         _ => least(&exact).ok()?,
     };
     let first = winners.first()?;
-    let radius = Ring::ratio(&first.num, &first.den, 0);
+    // Lengths carry the centre's scale `D`: r = num / (den·D).
+    let scaled = |den: &BigInt| exact.scale.as_ref().map_or(den.clone(), |d| den * d);
+    let radius = Ring::ratio(&first.num, &scaled(&first.den), 0);
     // The centre: the point asked, less `s·ṽ` for a grown ball.
     let mut centre = exact.at_centre.scale(&first.den);
     if let Some(a) = apex {
         centre = centre.sub(&exact.vertex_as_given(a).scale(&first.num));
     }
-    let centre = centre.approx_over(&first.den, exact.shift());
+    let centre = centre.approx_over(&scaled(&first.den), exact.shift());
     let mut points: Vec<(usize, TouchPoint)> = winners
         .iter()
         .map(|cand| {
-            let point = cand.at.add(&exact.at_centre.scale(&cand.den)).approx_over(&cand.den, exact.shift());
+            let point = cand.at.add(&exact.at_centre.scale(&cand.den)).approx_over(&scaled(&cand.den), exact.shift());
             (cand.triangle_index, TouchPoint { point, ball: cand.ball, triangle: cand.triangle })
         })
         .collect();

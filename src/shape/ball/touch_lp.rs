@@ -23,6 +23,34 @@ pub enum TrianglePart {
     Face,
 }
 
+/// Where a question's ball is centred (or grown from).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Centre {
+    /// A point, exactly as given.
+    At(Point3),
+    /// The point `t0 + a·(t1 − t0) + b·(t2 − t0)` of a triangle's plane,
+    /// exactly: on the plane, where an `f64` point seldom is.
+    On([Point3; 3], f64, f64),
+}
+
+impl Centre {
+    /// Every input value (for units).
+    pub fn values(&self) -> Vec<f64> {
+        match *self {
+            Centre::At(c) => c.to_array().to_vec(),
+            Centre::On(t, a, b) => t.iter().flat_map(|p| p.to_array()).chain([a, b, 1.0]).collect(),
+        }
+    }
+
+    /// The point, rounded.
+    pub fn approx(&self) -> Point3 {
+        match *self {
+            Centre::At(c) => c,
+            Centre::On([t0, t1, t2], a, b) => t0 + (t1 - t0) * a + (t2 - t0) * b,
+        }
+    }
+}
+
 /// "The ring cannot tell": ask again on exact integers.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(super) struct Unsure;
@@ -85,8 +113,11 @@ pub(super) struct Setting<'a, R> {
     apex: Option<usize>,
     /// The triangles as given, for [`Source`]s.
     given: &'a [[Point3; 3]],
-    /// The centre where it was, for the points reported.
+    /// The centre where it was, times `scale`, for the points reported.
     pub at_centre: V3<R>,
+    /// For a centre on a triangle, every length is multiplied by the
+    /// denominator `D` of its parameters (`a = A / D`); `None` for 1.
+    pub scale: Option<R>,
     /// The origin: the centre moved.
     c: V3<R>,
     /// The triangles moved with it.
@@ -98,15 +129,35 @@ pub(super) struct Setting<'a, R> {
 impl<'a, R: Ring> Setting<'a, R> {
     /// The question in `units` (integers: common to every value of the
     /// question, so each equation is homogeneous and `r` unitless).
-    pub fn new(ball: &'a Ball3, apex: Option<usize>, units: Units, c: Point3, ts: &'a [[Point3; 3]]) -> Setting<'a, R> {
+    pub fn new(
+        ball: &'a Ball3,
+        apex: Option<usize>,
+        units: Units,
+        centre: Centre,
+        ts: &'a [[Point3; 3]],
+    ) -> Setting<'a, R> {
+        // Triangles moved so that the centre is the origin: differences of
+        // inputs (one rounding in the filter), and for a centre on a
+        // triangle its offset `A·e1 + B·e2` from the triangle's corner.
+        let (at_centre, scale, moved): (V3<R>, Option<R>, Vec<[V3<R>; 3]>) = match centre {
+            Centre::At(c) => (V3::of(c, units), None, ts.iter().map(|t| t.map(|p| V3::diff(p, c, units))).collect()),
+            Centre::On([t0, t1, t2], a, b) => {
+                let d = R::of(1.0, units);
+                let (e1, e2) = (V3::<R>::diff(t1, t0, units), V3::<R>::diff(t2, t0, units));
+                let off = e1.scale(&R::of(a, units)).add(&e2.scale(&R::of(b, units)));
+                let moved = ts.iter().map(|t| t.map(|p| V3::diff(p, t0, units).scale(&d).sub(&off))).collect();
+                (V3::of(t0, units).scale(&d).add(&off), Some(d), moved)
+            }
+        };
         Setting {
             ball,
             units,
             apex,
             given: ts,
-            at_centre: V3::of(c, units),
+            at_centre,
+            scale,
             c: V3::of(Point3::new(0.0, 0.0, 0.0), units),
-            ts: ts.iter().map(|t| t.map(|p| V3::diff(p, c, units))).collect(),
+            ts: moved,
             vertices: (0..ball.vertices().len()).map(|_| OnceCell::new()).collect(),
             planes: (0..ball.facets().len()).map(|_| OnceCell::new()).collect(),
         }

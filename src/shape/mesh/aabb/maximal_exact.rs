@@ -18,7 +18,7 @@
 use super::contact_exact::BAND;
 use super::{ExactContact, TriangleTree};
 use crate::kernel::Point3;
-use crate::shape::ball::{enters_cone, grow_exact_many, Reach};
+use crate::shape::ball::{enters_cone, grow_exact_many, Centre, Reach};
 
 /// A maximal* ball with its stopping contacts decided exactly.
 #[derive(Debug, Clone, PartialEq)]
@@ -41,9 +41,34 @@ pub struct ExactMaximalBall {
 impl TriangleTree {
     /// The maximal* ball with ball vertex `vertex` at `p` (see
     /// [`maximal_ball_with`](Self::maximal_ball_with)) with its radius,
-    /// centre and stopping contacts decided exactly. `None` as for the
-    /// `f64` construction.
+    /// centre and stopping contacts decided exactly, for `p` exactly as
+    /// given. `None` as for the `f64` construction. A point meant to lie
+    /// on the surface but computed in `f64` (an interpolation) is seldom
+    /// exactly on it: a point just inside the material is stopped at
+    /// once by its own face. Use
+    /// [`maximal_ball_exact_on`](Self::maximal_ball_exact_on) then.
     pub fn maximal_ball_exact(&self, p: Point3, vertex: usize, reach: &Reach<'_>) -> Option<ExactMaximalBall> {
+        self.maximal_exact(Centre::At(p), vertex, reach)
+    }
+
+    /// [`maximal_ball_exact`](Self::maximal_ball_exact) at the point
+    /// `t0 + a·(t1 − t0) + b·(t2 − t0)` of triangle `triangle` (its index
+    /// in the tree's input), taken exactly: on the triangle's plane, so
+    /// its own face (and any through the point) never stops the ball.
+    /// `None` also for a triangle index out of range.
+    pub fn maximal_ball_exact_on(
+        &self,
+        triangle: usize,
+        (a, b): (f64, f64),
+        vertex: usize,
+        reach: &Reach<'_>,
+    ) -> Option<ExactMaximalBall> {
+        let k = self.ids.iter().position(|&id| id as usize == triangle)?;
+        self.maximal_exact(Centre::On(self.corners(k), a, b), vertex, reach)
+    }
+
+    fn maximal_exact(&self, centre: Centre, vertex: usize, reach: &Reach<'_>) -> Option<ExactMaximalBall> {
+        let p = centre.approx();
         let found = self.maximal_ball_with(p, vertex, reach)?;
         let (r, c) = (found.radius, found.centre);
         if !(r > 0.0 && r.is_finite()) {
@@ -64,12 +89,12 @@ impl TriangleTree {
                 .map(|(k, _)| k)
                 .filter(|&k| {
                     let t = self.corners(k);
-                    enters_cone(ball, vertex, p, t)
-                        && grow_exact_many(ball, vertex, p, &[t]).is_some_and(|s| s.radius > 0.0)
+                    enters_cone(ball, vertex, centre, t)
+                        && grow_exact_many(ball, vertex, centre, &[t]).is_some_and(|s| s.radius > 0.0)
                 })
                 .collect();
             let corners: Vec<[Point3; 3]> = near.iter().map(|&k| self.corners(k)).collect();
-            if let Some(solved) = grow_exact_many(ball, vertex, p, &corners) {
+            if let Some(solved) = grow_exact_many(ball, vertex, centre, &corners) {
                 let (opposite, flat) = self.contacts_of(&near, solved.points);
                 return Some(ExactMaximalBall { radius: solved.radius, centre: solved.centre, opposite, flat });
             }
