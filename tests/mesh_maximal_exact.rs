@@ -145,15 +145,13 @@ fn check(
         if gap > 2.0 * got.radius * reach_bound + 1.0 {
             continue;
         }
-        // A triangle through p, or one meeting only the cone's walls,
-        // never stops the growth.
+        // A triangle meeting only the cone's walls or its apex never
+        // stops the growth; one meeting the open cone through p stops it
+        // at 0.
         if !meets_open_cone(&planes, v, pq, tq) {
             continue;
         }
         let Some((s, pts)) = least_on(&planes, v, pq, tq) else { continue };
-        if s.sign().is_eq() {
-            continue; // through p
-        }
         match best.as_mut() {
             Some((bs, all)) if s.cmp(*bs).is_eq() => all.extend(pts),
             Some((bs, _)) if s.cmp(*bs).is_gt() => {}

@@ -102,10 +102,32 @@ impl TriangleTree {
         if !r.is_finite() {
             return None;
         }
-        let first = self.ball_radius_at(p - v * r, reach)?;
-        if !slack.pokes(first.0.radius, r) {
-            return Some(MaximalBall { radius: f64::INFINITY, centre: p, opposite: None });
-        }
+        // The first ball: when the ray from p through the centres
+        // (direction −ṽ) meets the surface at the centre of ball s₀, every
+        // larger ball holds that point inside, so the answer is below s₀
+        // and shrinking from there takes a few local steps; the ball the
+        // size of the solid (huge for a round ball, whose margin is small)
+        // costs a search over much of the surface. The ray starts a hair
+        // off p, past p's own face.
+        let lead = (1e-9 * size_of(p)).max(1e-300) / v.norm();
+        let near = self.first_hit(p - v * lead, -v).and_then(|hit| {
+            let s0 = (hit.t + lead) * (1.0 + 1e-9);
+            let at = self.ball_radius_at(p - v * s0, reach)?;
+            (s0 < r && slack.pokes(at.0.radius, s0)).then_some((s0, at))
+        });
+        let first = match near {
+            Some((s0, at)) => {
+                r = s0;
+                at
+            }
+            None => {
+                let at = self.ball_radius_at(p - v * r, reach)?;
+                if !slack.pokes(at.0.radius, r) {
+                    return Some(MaximalBall { radius: f64::INFINITY, centre: p, opposite: None });
+                }
+                at
+            }
+        };
         // Each step shrinks to the entry radius of a triangle that poked,
         // which pokes no more; balls are nested, so a triangle that stops
         // poking never pokes again, and the steps are at most the
@@ -165,6 +187,10 @@ impl TriangleTree {
         );
         out
     }
+}
+
+fn size_of(q: Point3) -> f64 {
+    q.x.abs().max(q.y.abs()).max(q.z.abs())
 }
 
 /// The radius below `hi` at which triangle `t` first enters the ball

@@ -8,12 +8,12 @@
 //! `contact_exact.rs`) is asked exactly how far the ball grows before
 //! touching it: the same linear program as the largest ball's, with the
 //! ball's origin moved to `ṽ` (its facets through `ṽ` become the walls
-//! of the cone the balls fill). Triangles through `p` touch every ball
-//! there and never stop the growth unless they enter the cone, which the
-//! `f64` construction decides (radius 0); they are left out, and so are
-//! triangles that meet only the cone's walls (a ball edge lying along a
-//! face, common with axis-aligned solids and cube balls: the balls slide
-//! along them and never enter).
+//! of the cone the balls fill). Only a triangle that meets the open cone
+//! stops the growth: one through `p` that only touches it there, or one
+//! that meets only the cone's walls (a ball edge lying along a face,
+//! common with axis-aligned solids and cube balls: the balls slide along
+//! it) never enters a ball. One through `p` that meets the open cone
+//! stops it at radius 0.
 
 use super::contact_exact::BAND;
 use super::{ExactContact, TriangleTree};
@@ -23,9 +23,10 @@ use crate::shape::ball::{enters_cone, grow_exact_many, Centre, Reach};
 /// A maximal* ball with its stopping contacts decided exactly.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ExactMaximalBall {
-    /// The radius: the exact value rounded; 0 (the vertex's cone enters
-    /// the surface at `p`) and infinity (nothing stops the ball: outside
-    /// the solid) as the `f64` construction decides them.
+    /// The radius: the exact value rounded, 0 when the vertex's cone
+    /// enters the surface at `p`; infinity (nothing stops the ball:
+    /// outside the solid) as the `f64` construction decides it, and so a
+    /// radius 0 that construction already found (by its rounding slack).
     pub radius: f64,
     /// The centre `p − radius·ṽ`: the exact value rounded (`p` itself for
     /// radius 0 or infinity).
@@ -80,18 +81,15 @@ impl TriangleTree {
         // The band, and should rounding have put every stopping triangle
         // outside it, every triangle the ball of twice the radius meets.
         for limit in [r + BAND * (r + size / ball.inradius()), 2.0 * r] {
-            // Each near triangle on its own first: one through `p` answers
-            // 0, one the cone misses answers nothing, one that meets only
-            // the cone's walls never enters a ball: all left out.
+            // Only triangles that meet the open cone can stop the growth:
+            // one that meets only its walls (or only `p`, the apex) never
+            // enters a ball. One through `p` that meets the open cone
+            // stops it at once (radius 0: the cone straddles the surface).
             let near: Vec<usize> = self
                 .near_triangles(c, limit, reach)
                 .into_iter()
                 .map(|(k, _)| k)
-                .filter(|&k| {
-                    let t = self.corners(k);
-                    enters_cone(ball, vertex, centre, t)
-                        && grow_exact_many(ball, vertex, centre, &[t]).is_some_and(|s| s.radius > 0.0)
-                })
+                .filter(|&k| enters_cone(ball, vertex, centre, self.corners(k)))
                 .collect();
             let corners: Vec<[Point3; 3]> = near.iter().map(|&k| self.corners(k)).collect();
             if let Some(solved) = grow_exact_many(ball, vertex, centre, &corners) {
