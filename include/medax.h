@@ -1150,6 +1150,11 @@ typedef struct mx_contact3 {
    */
   double radius;
   /**
+   * The ball's centre (the point asked for the largest ball; for a
+   * maximal* ball `point − radius·ṽ`, the exact value rounded).
+   */
+  double centre[3];
+  /**
    * The point of contact (the exact value rounded).
    */
   double point[3];
@@ -2509,6 +2514,31 @@ enum mx_status mx_mesh3d_ball_contacts(const struct mx_mesh3d *mesh,
                                        struct mx_contact3 *contacts,
                                        size_t capacity,
                                        size_t *count);
+
+/**
+ * The maximal* ball under `ball` (a space ball) whose vertex `vertex`
+ * sits at the point `t0 + uv[0]·(t1 − t0) + uv[1]·(t2 − t0)` of triangle
+ * `triangle` (taken exactly, on the triangle's plane), with its radius,
+ * centre and the contacts that stop its growth decided exactly, into
+ * `contacts` by the buffer protocol (as `mx_mesh3d_ball_contacts`). A
+ * ball that does not grow (radius 0: the vertex's cone enters the
+ * surface there) or grows without bound (outside the solid) has no
+ * stopping contact: the call succeeds with count 0; its radius is
+ * `mx_mesh3d_maximal_ball`'s.
+ *
+ * # Safety
+ * `mesh` and `ball` NULL or live handles; `uv` NULL or two readable
+ * doubles; `contacts` NULL or `capacity` writable entries; `count` NULL
+ * or writable.
+ */
+enum mx_status mx_mesh3d_maximal_ball_contacts(const struct mx_mesh3d *mesh,
+                                               const struct mx_ball *ball,
+                                               size_t triangle,
+                                               const double *uv,
+                                               size_t vertex,
+                                               struct mx_contact3 *contacts,
+                                               size_t capacity,
+                                               size_t *count);
 
 /**
  * The maximal* ball under `ball` (a space ball) whose vertex `vertex`

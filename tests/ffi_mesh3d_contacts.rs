@@ -21,6 +21,7 @@ fn solid() -> (Mesh3d, *mut mx_mesh3d) {
 
 const BLANK: mx_contact3 = mx_contact3 {
     radius: -1.0,
+    centre: [-1.0; 3],
     point: [-1.0; 3],
     kind: mx_contact3_kind::MX_CONTACT3_FV,
     ball_part: mx_ball_part3::MX_BALL_FACET,
@@ -82,6 +83,57 @@ fn contacts_in_a_box_match_closed_forms_and_the_rust_tree() {
     }
     unsafe {
         mx_ball_free(octa);
+        mx_ball_free(cube);
+        mx_mesh3d_free(m);
+    }
+}
+
+/// A cube ball grown from its vertex (−1, −1, −1) at a point of the box's
+/// floor: it slides along the floor (a wall of the vertex's cone, which
+/// never stops it) and stops flat against the nearer of the walls
+/// x = 10, y = 10, at radius (10 − max(x, y)) / 2.
+#[test]
+fn maximal_balls_on_the_floor_stop_flat_at_the_nearer_wall() {
+    let (rust, m) = solid();
+    let mut cube = null_mut();
+    assert_eq!(unsafe { mx_ball_cube(&mut cube) }, mx_status::MX_OK);
+    let ball = Ball3::cube();
+    let down = ball.vertices().iter().position(|w| w.x < 0.0 && w.y < 0.0 && w.z < 0.0).unwrap();
+    let floor: Vec<usize> = (0..rust.triangles().len())
+        .filter(|&k| rust.triangles()[k].iter().all(|&i| rust.positions()[i as usize].z == 0.0))
+        .collect();
+    assert_eq!(floor.len(), 2);
+    for &k in &floor {
+        let uv = [0.25, 0.25];
+        let [a, b, c] = rust.triangles()[k].map(|i| rust.positions()[i as usize]);
+        let p = a + (b - a) * uv[0] + (c - a) * uv[1];
+        let want = (10.0 - p.x.max(p.y)) / 2.0;
+        let (mut n, mut got) = (0usize, 0usize);
+        let call = |buf: *mut mx_contact3, cap: usize, count: &mut usize| unsafe {
+            mx_mesh3d_maximal_ball_contacts(m, cube, k, uv.as_ptr(), down, buf, cap, count)
+        };
+        assert_eq!(call(null_mut(), 0, &mut n), mx_status::MX_OK, "{}", last_message());
+        let mut buf = vec![BLANK; n];
+        assert_eq!(call(buf.as_mut_ptr(), n, &mut got), mx_status::MX_OK);
+        assert!(n >= 2 && got == n, "{n} contacts");
+        let rs = rust.tree().maximal_ball_exact_on(k, (0.25, 0.25), down, &ball.reach()).unwrap();
+        for x in &buf {
+            assert_eq!(x.radius, want, "{x:?}");
+            assert_eq!(x.centre, [p.x + want, p.y + want, want]);
+            assert_eq!(x.flat, 1, "{x:?}");
+            assert!(x.point[0] == 10.0 || x.point[1] == 10.0, "{x:?}");
+        }
+        assert_eq!(rs.opposite.len(), n);
+    }
+    // Out of range and NaN are refused.
+    let mut n = 7usize;
+    let uv = [0.25, 0.25];
+    let st = unsafe { mx_mesh3d_maximal_ball_contacts(m, cube, 99, uv.as_ptr(), down, null_mut(), 0, &mut n) };
+    assert_eq!((st, n), (mx_status::MX_ERR_INVALID_ARGUMENT, 7));
+    let bad = [f64::NAN, 0.0];
+    let st = unsafe { mx_mesh3d_maximal_ball_contacts(m, cube, floor[0], bad.as_ptr(), down, null_mut(), 0, &mut n) };
+    assert_eq!((st, n), (mx_status::MX_ERR_NON_FINITE, 7));
+    unsafe {
         mx_ball_free(cube);
         mx_mesh3d_free(m);
     }

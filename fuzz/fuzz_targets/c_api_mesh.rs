@@ -138,6 +138,11 @@ fn balls(m: *const mx_mesh3d, points: &[[f64; 3]]) {
             let st = unsafe { mx_mesh3d_ball_contacts(m, tetra, p.as_ptr(), cs.as_mut_ptr(), n, &mut n) };
             assert_eq!(st, mx_status::MX_OK);
             assert!(cs.iter().all(|c| c.radius == cs[0].radius && c.radius >= 0.0));
+            // The exact maximal* ball at a point of the first triangle.
+            let mut k = 0usize;
+            let uv = [0.25, 0.5];
+            let st = unsafe { mx_mesh3d_maximal_ball_contacts(m, tetra, 0, uv.as_ptr(), i % 4, null_mut(), 0, &mut k) };
+            assert_ne!(st, mx_status::MX_ERR_PANIC);
             if q.has_ball == 1 && q.ball_radius.is_finite() && q.ball_radius > 0.0 {
                 let r = cs[0].radius;
                 assert!((r - q.ball_radius).abs() <= 1e-6 * (r + 1.0) || !r.is_finite(), "{r} vs {}", q.ball_radius);

@@ -42,6 +42,9 @@ pub struct mx_contact3 {
     /// The ball's radius (the exact value rounded; the same in every
     /// contact of one call).
     pub radius: f64,
+    /// The ball's centre (the point asked for the largest ball; for a
+    /// maximal* ball `point − radius·ṽ`, the exact value rounded).
+    pub centre: [f64; 3],
     /// The point of contact (the exact value rounded).
     pub point: [f64; 3],
     /// The contact type: VF, EE, FV or the non-regular VE, EV, VV.
@@ -63,7 +66,7 @@ pub struct mx_contact3 {
     pub flat: i32,
 }
 
-fn to_c(x: &ExactContact, radius: f64, corners: impl Fn(u32) -> [u32; 3]) -> mx_contact3 {
+fn to_c(x: &ExactContact, (radius, centre): (f64, Point3), corners: impl Fn(u32) -> [u32; 3]) -> mx_contact3 {
     let (ball_part, ball_part_index) = match x.ball {
         Feature3::Vertex(v) => (mx_ball_part3::MX_BALL_VERTEX, v),
         Feature3::Edge(e) => (mx_ball_part3::MX_BALL_EDGE, e),
@@ -79,6 +82,7 @@ fn to_c(x: &ExactContact, radius: f64, corners: impl Fn(u32) -> [u32; 3]) -> mx_
     };
     mx_contact3 {
         radius,
+        centre: centre.to_array(),
         point: x.point.to_array(),
         kind: kind_of(x.kind),
         ball_part,
@@ -126,13 +130,79 @@ pub unsafe extern "C" fn mx_mesh3d_ball_contacts(
         })?;
         let tris = m.inner.triangles();
         let out: Vec<mx_contact3> =
-            found.contacts.iter().map(|x| to_c(x, found.radius, |t| tris[t as usize])).collect();
-        let n = out.len();
+            found.contacts.iter().map(|x| to_c(x, (found.radius, c), |t| tris[t as usize])).collect();
         // SAFETY: caller contract (`contacts` holds `capacity` entries).
-        unsafe {
-            fill_items((contacts, "contacts"), (capacity, count), (n, 1), out, || {
-                format!("{n} contacts, the buffer holds {capacity}")
-            })
+        unsafe { hand_out(out, contacts, capacity, count) }
+    })
+}
+
+/// Writes `out` by the buffer protocol.
+///
+/// # Safety
+/// `contacts` NULL or `capacity` writable entries; `count` writable.
+unsafe fn hand_out(
+    out: Vec<mx_contact3>,
+    contacts: *mut mx_contact3,
+    capacity: usize,
+    count: *mut usize,
+) -> Result<(), FfiError> {
+    let n = out.len();
+    // SAFETY: forwarded contract.
+    unsafe {
+        fill_items((contacts, "contacts"), (capacity, count), (n, 1), out, || {
+            format!("{n} contacts, the buffer holds {capacity}")
+        })
+    }
+}
+
+/// The maximal* ball under `ball` (a space ball) whose vertex `vertex`
+/// sits at the point `t0 + uv[0]·(t1 − t0) + uv[1]·(t2 − t0)` of triangle
+/// `triangle` (taken exactly, on the triangle's plane), with its radius,
+/// centre and the contacts that stop its growth decided exactly, into
+/// `contacts` by the buffer protocol (as `mx_mesh3d_ball_contacts`). A
+/// ball that does not grow (radius 0: the vertex's cone enters the
+/// surface there) or grows without bound (outside the solid) has no
+/// stopping contact: the call succeeds with count 0; its radius is
+/// `mx_mesh3d_maximal_ball`'s.
+///
+/// # Safety
+/// `mesh` and `ball` NULL or live handles; `uv` NULL or two readable
+/// doubles; `contacts` NULL or `capacity` writable entries; `count` NULL
+/// or writable.
+#[no_mangle]
+pub unsafe extern "C" fn mx_mesh3d_maximal_ball_contacts(
+    mesh: *const mx_mesh3d,
+    ball: *const mx_ball,
+    triangle: usize,
+    uv: *const f64,
+    vertex: usize,
+    contacts: *mut mx_contact3,
+    capacity: usize,
+    count: *mut usize,
+) -> mx_status {
+    guard(|| {
+        // SAFETY: caller contract.
+        let (m, b) = unsafe { solid_and_ball(mesh, ball, count)? };
+        // SAFETY: caller contract.
+        let uv = unsafe { slice(uv, 2, "uv")? };
+        if uv.iter().any(|v| !v.is_finite()) {
+            return Err(FfiError::new(mx_status::MX_ERR_NON_FINITE, "`uv` has a NaN or infinite parameter"));
         }
+        let tris = m.inner.triangles();
+        if triangle >= tris.len() || vertex >= b.vertices().len() {
+            let (nt, nv) = (tris.len(), b.vertices().len());
+            return Err(FfiError::new(
+                mx_status::MX_ERR_INVALID_ARGUMENT,
+                format!("triangle {triangle} (of {nt}) or vertex {vertex} (of {nv}) is out of range"),
+            ));
+        }
+        let found = m.inner.tree().maximal_ball_exact_on(triangle, (uv[0], uv[1]), vertex, &b.reach());
+        let found = found.ok_or_else(|| {
+            FfiError::new(mx_status::MX_ERR_NON_FINITE, "the point and the solid are too large for a ball's radius")
+        })?;
+        let out: Vec<mx_contact3> =
+            found.opposite.iter().map(|x| to_c(x, (found.radius, found.centre), |t| tris[t as usize])).collect();
+        // SAFETY: caller contract (`contacts` holds `capacity` entries).
+        unsafe { hand_out(out, contacts, capacity, count) }
     })
 }
