@@ -238,8 +238,13 @@ impl<'a, R: Ring> Setting<'a, R> {
                         Ordering::Less => (d, da, db, dt) = (d.neg(), da.neg(), db.neg(), dt.neg()),
                         Ordering::Greater => {}
                     }
+                    // The three chosen rows are tight by construction (their
+                    // value is 0, which the filter cannot certify).
                     let mut feasible = true;
-                    for r in &rows {
+                    for (q, r) in rows.iter().enumerate() {
+                        if q == i || q == j || q == l {
+                            continue;
+                        }
                         let v = r[0].mul(&da).add(&r[1].mul(&db)).add(&r[2].mul(&dt)).add(&r[3].mul(&d));
                         if sure(v.sign())? == Ordering::Greater {
                             feasible = false;
