@@ -203,13 +203,15 @@ fn maximal(max: usize) {
             });
             let e = time(|| {
                 asked.iter().for_each(|&(tri, uv, _, k)| {
-                    tree.maximal_ball_exact_on(tri, uv, k, &reach);
+                    tree.maximal_ball_exact_on(t[tri].map(|i| Point3::from_array(v[i as usize])), uv, k, &reach);
                 })
             });
             let (mut grown, mut contacts, mut gap, mut differ) = (0usize, 0usize, 0.0f64, 0usize);
             for &(tri, uv, p, k) in &asked {
-                let (x, y) =
-                    (tree.maximal_ball_with(p, k, &reach).unwrap(), tree.maximal_ball_exact_on(tri, uv, k, &reach));
+                let (x, y) = (
+                    tree.maximal_ball_with(p, k, &reach).unwrap(),
+                    tree.maximal_ball_exact_on(t[tri].map(|i| Point3::from_array(v[i as usize])), uv, k, &reach),
+                );
                 let Some(y) = y else {
                     gap = f64::INFINITY;
                     continue;

@@ -116,7 +116,7 @@ fn maximal_balls_on_the_floor_stop_flat_at_the_nearer_wall() {
         let mut buf = vec![BLANK; n];
         assert_eq!(call(buf.as_mut_ptr(), n, &mut got), mx_status::MX_OK);
         assert!(n >= 2 && got == n, "{n} contacts");
-        let rs = rust.tree().maximal_ball_exact_on(k, (0.25, 0.25), down, &ball.reach()).unwrap();
+        let rs = rust.tree().maximal_ball_exact_on([a, b, c], (0.25, 0.25), down, &ball.reach()).unwrap();
         for x in &buf {
             assert_eq!(x.radius, want, "{x:?}");
             assert_eq!(x.centre, [p.x + want, p.y + want, want]);

@@ -206,7 +206,7 @@ fn exact_maximal_balls_match_the_vertex_enumeration_oracle() {
                 }
                 check(&m, ball, vertex, p, &got, &what, &mut seen);
                 // The same point given by its triangle (exact there too).
-                let on = m.tree().maximal_ball_exact_on(k, (u, w), vertex, &reach).unwrap();
+                let on = m.tree().maximal_ball_exact_on([a, b, c], (u, w), vertex, &reach).unwrap();
                 assert_eq!(on, got, "{what}: on the triangle");
                 let f = m.tree().maximal_ball_with(p, vertex, &reach).unwrap();
                 assert!(

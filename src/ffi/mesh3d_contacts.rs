@@ -196,7 +196,8 @@ pub unsafe extern "C" fn mx_mesh3d_maximal_ball_contacts(
                 format!("triangle {triangle} (of {nt}) or vertex {vertex} (of {nv}) is out of range"),
             ));
         }
-        let found = m.inner.tree().maximal_ball_exact_on(triangle, (uv[0], uv[1]), vertex, &b.reach());
+        let corners = tris[triangle].map(|i| m.inner.positions()[i as usize]);
+        let found = m.inner.tree().maximal_ball_exact_on(corners, (uv[0], uv[1]), vertex, &b.reach());
         let found = found.ok_or_else(|| {
             FfiError::new(mx_status::MX_ERR_NON_FINITE, "the point and the solid are too large for a ball's radius")
         })?;

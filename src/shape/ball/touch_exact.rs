@@ -145,7 +145,8 @@ fn solve(ball: &Ball3, apex: Option<usize>, c: Centre, ts: &[[Point3; 3]]) -> Op
     let winners: Vec<Candidate<BigInt>> = match least(&filtered) {
         // One point (maybe reached from several triangles sharing it).
         Ok(best)
-            if best.iter().all(|w| w.source == best[0].source)
+            if !best.is_empty()
+                && best.iter().all(|w| w.source == best[0].source)
                 && (best.len() == 1 || best[0].source != Source::Own) =>
         {
             best.iter()

@@ -53,19 +53,18 @@ impl TriangleTree {
     }
 
     /// [`maximal_ball_exact`](Self::maximal_ball_exact) at the point
-    /// `t0 + a·(t1 − t0) + b·(t2 − t0)` of triangle `triangle` (its index
-    /// in the tree's input), taken exactly: on the triangle's plane, so
-    /// its own face (and any through the point) never stops the ball.
-    /// `None` also for a triangle index out of range.
+    /// `t0 + a·(t1 − t0) + b·(t2 − t0)` of the triangle with corners
+    /// `[t0, t1, t2]` (usually one of the surface's), taken exactly: on
+    /// the triangle's plane, so a face through the point stops the ball
+    /// only where the vertex's cone enters it.
     pub fn maximal_ball_exact_on(
         &self,
-        triangle: usize,
+        corners: [Point3; 3],
         (a, b): (f64, f64),
         vertex: usize,
         reach: &Reach<'_>,
     ) -> Option<ExactMaximalBall> {
-        let k = self.ids.iter().position(|&id| id as usize == triangle)?;
-        self.maximal_exact(Centre::On(self.corners(k), a, b), vertex, reach)
+        self.maximal_exact(Centre::On(corners, a, b), vertex, reach)
     }
 
     fn maximal_exact(&self, centre: Centre, vertex: usize, reach: &Reach<'_>) -> Option<ExactMaximalBall> {
