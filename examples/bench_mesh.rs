@@ -10,7 +10,8 @@
 //! of the surface; "box": uniform in the bounding box), and the ball radius
 //! at the points found inside under `Ball3::tetrahedron()` and under the
 //! hull of 66 points of a Fibonacci sphere (128 facets; the geodesic balls
-//! have 80 or 320), against closest points at the same inside points
+//! have 80 or 320), against closest points alone and against closest
+//! points and inside tests (the Euclidean query) at the same inside points
 //! (ctest/bench_mesh.cpp times the C API beside CGAL on the same family).
 //! A third table times the exact contacts (`exact_contacts_many`: the
 //! same search, then the triangles near the answer again in exact
@@ -18,7 +19,8 @@
 //! points, with how often the floating filter had to give way.
 //!
 //! `cargo run --release --example bench_mesh -- [threads] [max_triangles] [exact]`
-//! (`exact`: the third table only)
+//! (`exact`: the third table and the maximal* balls only; `queries`: the
+//! second table only)
 
 use medax::io::mesh::{write_off, write_ply, MeshFormat};
 use medax::kernel::Point3;
@@ -87,8 +89,8 @@ fn queries(max: usize) {
         balls[0].facets().len(),
         balls[1].facets().len()
     );
-    println!("| triangles | points | tree build | closest | inside | inside points | closest there | tetra ball | 128-facet ball | ball / closest (tetra, 128) |");
-    println!("|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|");
+    println!("| triangles | points | tree build | closest | inside | inside points | closest there | inside there | tetra ball | 128-facet ball | ball / closest (tetra, 128) | ball / (closest + inside) (tetra, 128) |");
+    println!("|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
     for n in [10_000usize, 100_000, 1_000_000].into_iter().filter(|&n| n <= max) {
         let b = ((n / 4) as f64).sqrt().round() as usize;
         let (v, t) = torus(3.0, 1.0, 2 * b, b);
@@ -110,17 +112,22 @@ fn queries(max: usize) {
             let closest_in = time(|| {
                 tree.closest_points(&inner);
             });
+            let inside_in = time(|| {
+                tree.inside_many(&inner);
+            });
             let [tetra, fib] = [0, 1].map(|k| {
                 time(|| {
                     tree.ball_radii(&inner, &balls[k]);
                 })
             });
             println!(
-                "| {} | {family} | {build:.4} s | {closest:.4} s | {inside_t:.4} s | {} | {closest_in:.4} s | {tetra:.4} s | {fib:.4} s | {:.2}, {:.2} |",
+                "| {} | {family} | {build:.4} s | {closest:.4} s | {inside_t:.4} s | {} | {closest_in:.4} s | {inside_in:.4} s | {tetra:.4} s | {fib:.4} s | {:.2}, {:.2} | {:.2}, {:.2} |",
                 t.len(),
                 inner.len(),
                 tetra / closest_in,
-                fib / closest_in
+                fib / closest_in,
+                tetra / (closest_in + inside_in),
+                fib / (closest_in + inside_in)
             );
         }
     }
@@ -258,6 +265,10 @@ fn main() {
     if args.get(3).map(String::as_str) == Some("exact") {
         exact(max);
         maximal(max);
+        return;
+    }
+    if args.get(3).map(String::as_str) == Some("queries") {
+        queries(max);
         return;
     }
     println!("| triangles | arrays | binary STL | OFF | binary PLY | µs per triangle (arrays) |");

@@ -2523,8 +2523,10 @@ enum mx_status mx_mesh3d_ball_contacts(const struct mx_mesh3d *mesh,
  * `contacts` by the buffer protocol (as `mx_mesh3d_ball_contacts`). A
  * ball that does not grow (radius 0: the vertex's cone enters the
  * surface there) or grows without bound (outside the solid) has no
- * stopping contact: the call succeeds with count 0; its radius is
- * `mx_mesh3d_maximal_ball`'s.
+ * stopping contact: the call succeeds with count 0. Those radii (0 and
+ * infinity) are decided exactly as well, also where the `f64`
+ * `mx_mesh3d_maximal_ball` is lost in rounding (a plate thinner than
+ * 10^-13 of the coordinates).
  *
  * # Safety
  * `mesh` and `ball` NULL or live handles; `uv` NULL or two readable

@@ -16,7 +16,7 @@
 mod common;
 
 use common::rational::{exact_on_triangle, exact_planes, integer_meshes, v_of, Soup};
-use medax::kernel::Point3;
+use medax::kernel::{BBox3, Point3};
 use medax::shape::mesh_samples::{cuboid, sphere, torus, union};
 use medax::shape::{Ball3, Mesh3d, MeshOptions};
 use rand::rngs::SmallRng;
@@ -189,6 +189,61 @@ fn the_radius_is_the_least_over_every_triangle_for_irrational_balls() {
                 );
             }
         }
+    }
+}
+
+/// Each triangle's own least gauge, not only the least over a mesh (where
+/// a wrong answer on a triangle that does not win stays hidden): random
+/// triangles around random centres, small and large, thin and fat, near
+/// and far, under every kind of ball, against the enumeration.
+#[test]
+fn every_triangle_alone_gives_its_least_gauge() {
+    let mut rng = SmallRng::seed_from_u64(21);
+    let cloud: Vec<Point3> = (0..40)
+        .map(|_| {
+            let v = Point3::new(rng.gen_range(-1.0..1.0), rng.gen_range(-1.0..1.0), rng.gen_range(-1.0..1.0));
+            v * (0.7 / v.norm()) + Point3::new(-0.1, 0.25, 0.05)
+        })
+        .collect();
+    let balls = [
+        ("tetrahedron", Ball3::tetrahedron()),
+        ("cube", Ball3::cube()),
+        ("turned octahedron", Ball3::octahedron().rotated([0.3, 0.2, -0.6]).unwrap()),
+        ("geodesic 80", Ball3::geodesic(80).unwrap()),
+        ("geodesic 320", Ball3::geodesic(320).unwrap()),
+        ("off-centre hull of 40 points", Ball3::from_points(&cloud).unwrap()),
+    ];
+    let random_point = |rng: &mut SmallRng, scale: f64| {
+        Point3::new(rng.gen_range(-1.0..1.0), rng.gen_range(-1.0..1.0), rng.gen_range(-1.0..1.0)) * scale
+    };
+    for (name, ball) in &balls {
+        let reach = ball.reach();
+        let mut hint = Default::default();
+        let mut lower_bounds = [0.0; 2];
+        for k in 0..4000 {
+            let c = random_point(&mut rng, 2.0);
+            let (size, away) = [(0.05, 0.3), (1.0, 1.0), (4.0, 0.5), (0.5, 6.0)][k % 4];
+            let centre = c + random_point(&mut rng, away);
+            let t = [0, 1, 2].map(|_| centre + random_point(&mut rng, size));
+            let want = float_on_triangle(ball, c, t);
+            // The same prepared ball for every question, as the searches
+            // use it (its hints carry over from triangle to triangle).
+            let got = reach.triangle(c, t, &mut hint);
+            let what = format!("{name}, centre {c:?}, triangle {t:?}");
+            assert!((got.radius - want).abs() <= 1e-9 * want.max(1e-300), "{what}: {} vs {want}", got.radius);
+            assert!((ball.gauge(got.point - c) - got.radius).abs() <= 1e-9 * want, "{what}: point not at the radius");
+            // The searches' pruning bounds must stay below the least gauge.
+            let tolerance = 1e-12 * want.max(1e-300);
+            let over_triangle = reach.over_triangle(t, c, f64::INFINITY, &mut hint);
+            assert!(over_triangle <= want + tolerance, "{what}: triangle bound {over_triangle} above {want}");
+            let over_box = reach.over_box(&BBox3::of(t), c);
+            assert!(over_box <= want + tolerance, "{what}: box bound {over_box} above {want}");
+            lower_bounds[0] += over_triangle / want;
+            lower_bounds[1] += over_box / want;
+        }
+        // And they must bound: on average within 40 % of the value (a bound
+        // of 0 would be safe and useless).
+        assert!(lower_bounds.iter().all(|&b| b / 4000.0 > 0.6), "{name}: loose bounds {lower_bounds:?}");
     }
 }
 

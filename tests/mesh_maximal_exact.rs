@@ -119,6 +119,17 @@ fn f64_of(v: V) -> Point3 {
     Point3::new(v[0].f64(), v[1].f64(), v[2].f64())
 }
 
+/// What an exact maximal* ball came to, counted over a test.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+enum Outcome {
+    /// Stopped by a contact of this kind.
+    Stopped(ContactKind3),
+    /// Radius 0: the vertex's cone straddles the surface.
+    Zero,
+    /// Radius infinity: nothing stops the ball.
+    Unbounded,
+}
+
 /// Checks one exact maximal* ball against the oracle; counts its kinds.
 #[allow(clippy::too_many_arguments)]
 fn check(
@@ -128,7 +139,7 @@ fn check(
     p: Point3,
     got: &ExactMaximalBall,
     what: &str,
-    seen: &mut BTreeMap<ContactKind3, usize>,
+    seen: &mut BTreeMap<Outcome, usize>,
 ) {
     let planes = exact_planes(ball);
     let (pq, v) = (v_of(p), v_of(ball.vertices()[vertex]));
@@ -142,7 +153,7 @@ fn check(
         let lo = (0..3).map(|k| tf.iter().map(|q| q.coord(k)).fold(f64::INFINITY, f64::min)).collect::<Vec<_>>();
         let hi = (0..3).map(|k| tf.iter().map(|q| q.coord(k)).fold(f64::NEG_INFINITY, f64::max)).collect::<Vec<_>>();
         let gap = (0..3).map(|k| (lo[k] - p.coord(k)).max(p.coord(k) - hi[k]).max(0.0).powi(2)).sum::<f64>().sqrt();
-        if gap > 2.0 * got.radius * reach_bound + 1.0 {
+        if got.radius.is_finite() && gap > 2.0 * got.radius * reach_bound + 1.0 {
             continue;
         }
         // A triangle meeting only the cone's walls or its apex never
@@ -158,8 +169,19 @@ fn check(
             _ => best = Some((s, pts)),
         }
     }
-    let (s, points) = best.unwrap_or_else(|| panic!("{what}: the oracle finds nothing stopping the ball"));
+    // Nothing stops the ball: it grows without bound (outside the solid).
+    let Some((s, points)) = best else {
+        assert_eq!(got.radius, f64::INFINITY, "{what}: the oracle finds nothing stopping the ball");
+        *seen.entry(Outcome::Unbounded).or_default() += 1;
+        return;
+    };
     assert_eq!(got.radius, s.f64(), "{what}: radius");
+    // A cone straddling the surface at p: radius 0, no contacts reported.
+    if s.sign().is_eq() {
+        assert_eq!(got.centre, p, "{what}: centre of a ball of radius 0");
+        *seen.entry(Outcome::Zero).or_default() += 1;
+        return;
+    }
     let centre = [0, 1, 2].map(|k| pq[k].sub(v[k].mul(s)));
     assert!((got.centre - f64_of(centre)).norm() <= 1e-12 * (1.0 + got.centre.norm()), "{what}: centre");
     let near = |a: Point3, b: Point3| (a - b).norm() <= 1e-12 * (1.0 + a.norm());
@@ -170,7 +192,7 @@ fn check(
             .find(|&&y| near(f64_of(y), x.point))
             .unwrap_or_else(|| panic!("{what}: contact {x:?} is not a least point of the oracle"));
         check_features(m, ball, &planes, y, (centre, s), x, what);
-        *seen.entry(x.kind).or_default() += 1;
+        *seen.entry(Outcome::Stopped(x.kind)).or_default() += 1;
     }
     if !got.flat {
         for y in &points {
@@ -201,13 +223,14 @@ fn exact_maximal_balls_match_the_vertex_enumeration_oracle() {
                 let got = got.unwrap_or_else(|| {
                     panic!("{what}: no exact ball ({:?})", m.tree().maximal_ball_with(p, vertex, &reach))
                 });
+                check(&m, ball, vertex, p, &got, &what, &mut seen);
+                // The same point given by its triangle (exact there too;
+                // radius 0 there by the cone crossing the plane).
+                let on = m.tree().maximal_ball_exact_on([a, b, c], (u, w), vertex, &reach).unwrap();
+                assert_eq!(on, got, "{what}: on the triangle");
                 if !(got.radius > 0.0 && got.radius.is_finite()) {
                     continue;
                 }
-                check(&m, ball, vertex, p, &got, &what, &mut seen);
-                // The same point given by its triangle (exact there too).
-                let on = m.tree().maximal_ball_exact_on([a, b, c], (u, w), vertex, &reach).unwrap();
-                assert_eq!(on, got, "{what}: on the triangle");
                 let f = m.tree().maximal_ball_with(p, vertex, &reach).unwrap();
                 assert!(
                     (f.radius - got.radius).abs() <= 1e-9 * got.radius,
@@ -219,7 +242,33 @@ fn exact_maximal_balls_match_the_vertex_enumeration_oracle() {
             }
         }
     }
-    eprintln!("grown {grown}, opposite contact types {seen:?}");
+    eprintln!("grown {grown}, outcomes {seen:?}");
     assert!(grown >= 40, "only {grown} balls grew");
-    assert!(seen.len() >= 4, "too few contact types: {seen:?}");
+    let kinds = seen.keys().filter(|o| matches!(o, Outcome::Stopped(_))).count();
+    assert!(kinds >= 4, "too few contact types: {seen:?}");
+    assert!(seen.get(&Outcome::Zero).is_some_and(|&n| n >= 3), "too few cones straddling: {seen:?}");
+    assert!(seen.get(&Outcome::Unbounded).is_some_and(|&n| n >= 3), "too few balls unbounded: {seen:?}");
+}
+
+/// A plate thinner than the `f64` construction's slack: the ball grown
+/// from the top face down into the plate is lost in rounding there (the
+/// first ray starts below the plate, and the huge ball's gauges agree to
+/// 10^-12: unbounded), the exact construction finds the bottom face at
+/// half the thickness (the cube ball's vertex (1, 1, 1) at p: the balls
+/// are p + s·[−2, 0]³).
+#[test]
+fn a_plate_thinner_than_rounding_stops_the_ball_at_half_its_thickness() {
+    let h = 2f64.powi(-45);
+    let (v, t) = medax::shape::mesh_samples::cuboid([0.0; 3], [1.0, 1.0, h]);
+    let m = Mesh3d::from_triangles(&v, &t, &MeshOptions::default()).unwrap();
+    let ball = Ball3::cube();
+    let vertex = ball.vertices().iter().position(|w| *w == Point3::new(1.0, 1.0, 1.0)).unwrap();
+    let reach = ball.reach();
+    let p = Point3::new(0.25, 0.5, h);
+    let f = m.tree().maximal_ball_with(p, vertex, &reach).unwrap();
+    assert!(f.radius == 0.0 || f.radius.is_infinite(), "the f64 construction finds this now ({f:?}): thinner plate");
+    let got = m.tree().maximal_ball_exact(p, vertex, &reach).unwrap();
+    assert_eq!(got.radius, h / 2.0);
+    assert_eq!(got.centre, Point3::new(0.25 - h / 2.0, 0.5 - h / 2.0, h / 2.0));
+    assert!(!got.opposite.is_empty() && got.opposite.iter().all(|c| c.point.z == 0.0), "{:?}", got.opposite);
 }

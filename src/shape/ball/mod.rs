@@ -53,5 +53,5 @@ pub use ball3::{Ball3, BallEdge3, BallFacet3, Feature3};
 pub use error::BallError;
 pub use gauge::Feature;
 pub use reach3::{ContactKind3, Reach, ReachHint, TriangleReach};
-pub(crate) use touch_exact::{enters_cone, grow_exact_many, touch_exact_many, Centre};
+pub(crate) use touch_exact::{cone_crosses_plane, enters_cone, grow_exact_many, touch_exact_many, Centre};
 pub use touch_exact::{touch_exact, ExactTouch, TouchPoint, TrianglePart};

@@ -27,7 +27,7 @@ pub use super::touch_lp::TrianglePart;
 use super::touch_lp::{Candidate, Setting, Source, Unsure};
 use crate::kernel::bigint::BigInt;
 use crate::kernel::exact_line::Units;
-use crate::kernel::exact_space::{cmp_ratios, Fb, Ring};
+use crate::kernel::exact_space::{cmp_ratios, Fb, Ring, V3};
 use crate::kernel::Point3;
 use std::cmp::Ordering;
 
@@ -126,6 +126,45 @@ pub(crate) fn enters_cone(ball: &Ball3, apex: usize, p: Centre, t: [Point3; 3]) 
     }
 }
 
+/// Whether the open cone of the balls grown from ball vertex `apex` about
+/// a point of the plane through `t` crosses that plane (meets both open
+/// sides): then a triangle of the plane holding the apex in its interior
+/// stops the growth at once (radius 0). The cone is spanned by the
+/// directions `w − ṽ` to the other ball vertices, and it crosses the plane
+/// unless `ṽ` is the farthest or the nearest vertex along its normal `n`;
+/// on a convex polytope that shows at `ṽ`'s neighbours: the cone crosses
+/// iff one neighbour `w` has `n·(w − ṽ) > 0` and one `< 0`. Signs of
+/// `det(t1 − t0, t2 − t0, w − ṽ)`: filter first, integers behind.
+pub(crate) fn cone_crosses_plane(ball: &Ball3, apex: usize, t: [Point3; 3]) -> bool {
+    let w = ball.vertices();
+    let around: Vec<usize> = ball
+        .edges()
+        .iter()
+        .filter_map(|e| match e.vertices {
+            [a, b] if a == apex => Some(b),
+            [a, b] if b == apex => Some(a),
+            _ => None,
+        })
+        .collect();
+    let values = t.iter().chain(w.iter()).flat_map(|p| p.to_array());
+    let units = Units::covering(values);
+    fn signs<R: Ring>(t: [Point3; 3], w: &[Point3], apex: usize, around: &[usize], units: Units) -> Option<[bool; 2]> {
+        let (e1, e2) = (V3::<R>::diff(t[1], t[0], units), V3::<R>::diff(t[2], t[0], units));
+        let mut seen = [false; 2];
+        for &k in around {
+            match e1.det(&e2, &V3::diff(w[k], w[apex], units)).sign()? {
+                Ordering::Greater => seen[0] = true,
+                Ordering::Less => seen[1] = true,
+                Ordering::Equal => {}
+            }
+        }
+        Some(seen)
+    }
+    let seen = signs::<Fb>(t, w, apex, &around, units)
+        .unwrap_or_else(|| signs::<BigInt>(t, w, apex, &around, units).unwrap_or([false; 2]));
+    seen == [true, true]
+}
+
 /// Integers in units common to the ball, the centre and the triangles.
 fn units_of(ball: &Ball3, c: &Centre, ts: &[[Point3; 3]]) -> Units {
     let values = ball.vertices().iter().chain(ts.iter().flatten()).flat_map(|p| p.to_array());
@@ -179,4 +218,65 @@ fn solve(ball: &Ball3, apex: Option<usize>, c: Centre, ts: &[[Point3; 3]]) -> Op
     points.sort_by_key(|(ti, p)| (*ti, p.triangle, p.ball));
     points.dedup_by_key(|(ti, p)| (*ti, p.triangle, p.ball));
     Some(Solved { radius, points, centre })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Against every vertex (not only the neighbours) in `f64`, on random
+    /// balls and planes where no sign is near 0.
+    #[test]
+    fn the_cone_crosses_a_plane_iff_the_apex_is_neither_top_nor_bottom() {
+        let mut seed = 5u64;
+        let mut next = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        let (mut crossing, mut not) = (0, 0);
+        for _ in 0..200 {
+            let pts: Vec<Point3> = (0..12).map(|_| Point3::new(next(), next(), next()) * 2.0).collect();
+            let Ok(ball) = Ball3::from_points(&pts.iter().map(|&p| p + Point3::new(0.1, 0.0, 0.0)).collect::<Vec<_>>())
+            else {
+                continue;
+            };
+            for _ in 0..10 {
+                let t = [0, 1, 2].map(|_| Point3::new(next(), next(), next()) * 3.0);
+                let n = (t[1] - t[0]).cross(t[2] - t[0]);
+                let w = ball.vertices();
+                let apex = ((next() + 1.0) * 0.5 * w.len() as f64) as usize % w.len();
+                let along: Vec<f64> = w.iter().map(|&x| n.dot(x - w[apex])).collect();
+                if along.iter().enumerate().any(|(k, &a)| k != apex && a.abs() < 1e-9) {
+                    continue;
+                }
+                let want = along.iter().any(|&a| a > 0.0) && along.iter().any(|&a| a < 0.0);
+                assert_eq!(cone_crosses_plane(&ball, apex, t), want, "apex {apex}, plane {t:?}");
+                if want {
+                    crossing += 1;
+                } else {
+                    not += 1;
+                }
+            }
+        }
+        assert!(crossing > 100 && not > 100, "{crossing} crossing, {not} not");
+    }
+
+    /// Exact ties: the cube's vertex (1, 1, 1) with planes through its
+    /// edges or facets (a neighbour on the plane) counts those as sides
+    /// the cone does not cross.
+    #[test]
+    fn a_plane_along_a_cone_wall_is_not_crossed() {
+        let cube = Ball3::cube();
+        let apex = cube.vertices().iter().position(|&w| w == Point3::new(1.0, 1.0, 1.0)).unwrap();
+        let o = Point3::new(0.0, 0.0, 0.0);
+        let plane = |n: Point3| {
+            let u = if n.x.abs() < 0.5 { Point3::new(1.0, 0.0, 0.0) } else { Point3::new(0.0, 1.0, 0.0) };
+            let a = n.cross(u);
+            [o, a, n.cross(a)]
+        };
+        assert!(!cone_crosses_plane(&cube, apex, plane(Point3::new(0.0, 0.0, 1.0))), "a facet's plane");
+        assert!(!cone_crosses_plane(&cube, apex, plane(Point3::new(1.0, 1.0, 0.0))), "along an edge");
+        assert!(cone_crosses_plane(&cube, apex, plane(Point3::new(1.0, -1.0, 0.0))), "through the cone");
+        assert!(!cone_crosses_plane(&cube, apex, plane(Point3::new(1.0, 1.0, 1.0))), "the vertex's own");
+    }
 }

@@ -89,19 +89,7 @@ impl TriangleTree {
         let v = *ball.vertices().get(vertex)?;
         let b = self.bbox();
         let slack = Slack::new(p, &b, ball);
-        // Beyond the radius `reach_all` the ball holds every point of the
-        // vertex's cone about p within `far` of p: the ball p + s·(B − ṽ)
-        // holds q when every facet not through ṽ has
-        // row·(q − p) ≤ s·(1 − row·ṽ), and row·(q − p) ≤ far / inradius.
-        // So a ball that large which holds no surface point inside is
-        // never stopped: unbounded (outside the solid).
-        let far = (b.max - b.min).norm().max((p - b.min).norm()).max((p - b.max).norm());
-        let rows = ball.gauge_rows();
-        let margin = rows.iter().map(|a| 1.0 - a.dot(v)).filter(|&m| m > 1e-9).fold(f64::INFINITY, f64::min);
-        let mut r = 2.0 * far / (ball.inradius() * margin.min(1.0));
-        if !r.is_finite() {
-            return None;
-        }
+        let mut r = self.unbounded_radius(p, v, ball)?;
         // The first ball: when the ray from p through the centres
         // (direction −ṽ) meets the surface at the centre of ball s₀, every
         // larger ball holds that point inside, so the answer is below s₀
@@ -152,6 +140,22 @@ impl TriangleTree {
             }
         }
         None
+    }
+
+    /// A radius beyond which the balls `p + s·(B − ṽ)` gain no point of
+    /// the tree's box: the ball of that radius holds every point of the
+    /// vertex's cone about `p` within `far` of `p` (it holds `q` when every
+    /// facet not through `ṽ` has `row·(q − p) ≤ s·(1 − row·ṽ)`, and
+    /// `row·(q − p) ≤ far / inradius`), with a factor 2 for rounding. So a
+    /// ball that large that no triangle enters is never stopped: it grows
+    /// without bound (outside the solid). `None` when it overflows.
+    pub(super) fn unbounded_radius(&self, p: Point3, v: Point3, ball: &Ball3) -> Option<f64> {
+        let b = self.bbox();
+        let far = (b.max - b.min).norm().max((p - b.min).norm()).max((p - b.max).norm());
+        let rows = ball.gauge_rows();
+        let margin = rows.iter().map(|a| 1.0 - a.dot(v)).filter(|&m| m > 1e-9).fold(f64::INFINITY, f64::min);
+        let r = 2.0 * far / (ball.inradius() * margin.min(1.0));
+        r.is_finite().then_some(r)
     }
 
     /// Every triangle the ball `c + r·B` touches within a relative `tol`
