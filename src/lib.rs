@@ -10,7 +10,12 @@
 //! * [`ffi`]: the C ABI (thin: convert, validate, call).
 //! * [`cam`]: pocketing rings and V-carve paths from offsets and the axis.
 //! * [`plane`]: medial axes in the Euclidean plane (thesis chapter 2).
-//! * [`shape`]: shape models — loops of segments and arcs, validated.
+//! * [`polymetric`]: medial axes under polygon balls in the plane
+//!   (chapter 3 in 2D).
+//! * [`space`]: chapter 3 in space: contact classes of solids under
+//!   polyhedral balls, toward their medial axis.
+//! * [`shape`]: shape models — loops of segments and arcs, solids,
+//!   unit balls, validated.
 //! * [`kernel`]: number types, predicates, constructions.
 //! * [`io`]: file formats as plain data.
 //!
@@ -40,6 +45,7 @@ pub mod kernel;
 pub mod plane;
 pub mod polymetric;
 pub mod shape;
+pub mod space;
 pub(crate) mod util;
 
 /// The crate version, `MAJOR.MINOR.PATCH`.

@@ -112,6 +112,7 @@ fn allowed(top: &str) -> Option<&'static [&'static str]> {
         // Chapter 3 beside chapter 2, not on it: it shares the shapes, the
         // ball and the kernel, never the Euclidean algorithms.
         "polymetric" => &["polymetric", "shape", "kernel", "io", "util"],
+        "space" => &["space", "shape", "kernel", "io", "util"],
         "cam" => &["cam", "plane", "shape", "kernel", "io", "util"],
         _ => return None,
     })

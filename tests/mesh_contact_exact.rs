@@ -15,7 +15,9 @@
 
 mod common;
 
-use common::rational::{check_features, exact_planes, gauge, integer_meshes, lp_points, sub, v_of, Q, V};
+use common::rational::{
+    check_features, exact_planes, gauge, inside_points, integer_meshes, lp_points, sub, v_of, Q, V,
+};
 use medax::kernel::Point3;
 use medax::shape::mesh_samples::torus;
 use medax::shape::{Ball3, ContactKind3, ExactContacts, Feature3, Mesh3d, MeshOptions, SurfacePart, TriangleTree};
@@ -223,20 +225,9 @@ fn exact_contacts_of_irrational_balls_lie_on_the_ball() {
     ];
     let (v, t) = torus(3.0, 1.0, 30, 16);
     let m = Mesh3d::from_triangles(&v, &t, &MeshOptions::default()).unwrap();
-    let b = m.bbox();
     for (ball_name, ball) in &balls {
         let reach = ball.reach();
-        let mut n = 0;
-        while n < 30 {
-            let c = Point3::new(
-                rng.gen_range(b.min.x..b.max.x),
-                rng.gen_range(b.min.y..b.max.y),
-                rng.gen_range(b.min.z..b.max.z),
-            );
-            if m.inside(c) != Some(true) {
-                continue;
-            }
-            n += 1;
+        for c in inside_points(&m, &mut rng, 30) {
             let got = m.tree().exact_contacts(c, &reach).unwrap();
             let f = m.ball_radius(c, ball);
             assert!((got.radius - f.radius).abs() <= 1e-12 * f.radius, "{ball_name} at {c:?}: {got:?} vs {f:?}");

@@ -202,3 +202,21 @@ pub fn check_features(
         Feature3::Facet(f) => assert_eq!(tight, vec![f], "{what}: {x:?} not inside that ball facet"),
     }
 }
+
+/// `n` points drawn uniformly from the mesh's box that lie inside it.
+pub fn inside_points(m: &Mesh3d, rng: &mut rand::rngs::SmallRng, n: usize) -> Vec<Point3> {
+    use rand::Rng;
+    let b = m.bbox();
+    let mut out = Vec::with_capacity(n);
+    while out.len() < n {
+        let c = Point3::new(
+            rng.gen_range(b.min.x..b.max.x),
+            rng.gen_range(b.min.y..b.max.y),
+            rng.gen_range(b.min.z..b.max.z),
+        );
+        if m.inside(c) == Some(true) {
+            out.push(c);
+        }
+    }
+    out
+}
