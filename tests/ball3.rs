@@ -389,3 +389,20 @@ fn large_geodesic_spheres() {
         eprintln!("geodesic({ask}): {:?}", t.elapsed());
     }
 }
+
+/// A ball keeps what its queries prepare (`Ball3::reach`), a cache that
+/// leaves equality alone and answers the same prepared or not, from any
+/// thread.
+#[test]
+fn a_prepared_ball_equals_its_twin_and_answers_the_same() {
+    let (a, b) = (Ball3::geodesic(80).unwrap(), Ball3::geodesic(80).unwrap());
+    let t = [Point3::new(2.0, 0.1, 0.3), Point3::new(2.5, 1.0, -0.2), Point3::new(1.8, -0.7, 0.9)];
+    let first = a.reach_triangle(Point3::new(0.0, 0.0, 0.0), t);
+    assert_eq!(a, b);
+    assert_eq!(a.clone(), b);
+    let answers: Vec<_> = std::thread::scope(|s| {
+        let handles: Vec<_> = (0..4).map(|_| s.spawn(|| b.reach_triangle(Point3::new(0.0, 0.0, 0.0), t))).collect();
+        handles.into_iter().map(|h| h.join().unwrap()).collect()
+    });
+    assert!(answers.iter().all(|x| *x == first), "{answers:?} vs {first:?}");
+}

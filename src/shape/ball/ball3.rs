@@ -4,6 +4,7 @@
 
 use super::error::BallError;
 use super::hull3::hull;
+use super::reach_data::PreparedCell;
 use crate::kernel::orient3::{plane_side, PlaneSide};
 use crate::kernel::Point3;
 use std::collections::HashMap;
@@ -29,6 +30,8 @@ pub struct Ball3 {
     rows: Vec<Point3>,
     /// Points given that are not vertices.
     dropped: usize,
+    /// What least-gauge questions need, made on the first (`reach3.rs`).
+    pub(super) prepared: PreparedCell,
 }
 
 /// A facet of a [`Ball3`]: a convex polygon in the plane `normal · x =
@@ -177,7 +180,7 @@ impl Ball3 {
                 star
             })
             .collect();
-        Ok(Ball3 { vertices, facets, edges, around, rows, dropped })
+        Ok(Ball3 { vertices, facets, edges, around, rows, dropped, prepared: PreparedCell::default() })
     }
 
     fn from_valid(xyz: &[[f64; 3]]) -> Ball3 {

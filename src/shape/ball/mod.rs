@@ -33,7 +33,9 @@
 //!   octahedron, icosahedron, geodesic spheres…) and its gauge.
 //! * `reach3.rs`: where a space ball grown from a centre first touches a
 //!   triangle (the least gauge over it, by a walk through the ball's facet
-//!   cones) and lower bounds over boxes for searches that prune.
+//!   cones) and lower bounds over boxes for searches that prune;
+//!   `reach_data.rs` what it prepares once per ball (graphs, a table of
+//!   directions), kept in the ball.
 //! * `touch_exact.rs`: the same least gauge over a triangle decided
 //!   exactly (filter, then integers), with every contact point and the
 //!   least ball and triangle features holding it (VF, EE, FV, VE, EV, VV).
@@ -44,6 +46,7 @@ mod error;
 mod gauge;
 mod hull3;
 mod reach3;
+mod reach_data;
 mod spec;
 mod touch_exact;
 mod touch_lp;

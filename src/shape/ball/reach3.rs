@@ -22,6 +22,7 @@
 //! one gauge (itself a climb in `f64`). The exact contact, with its
 //! non-regular types, is decided apart (`touch_exact.rs`).
 
+use super::reach_data::{DirectionTable, Neighbours, Prepared};
 use super::Ball3;
 use crate::kernel::{BBox3, Point3};
 
@@ -64,55 +65,11 @@ pub struct TriangleReach {
 /// and bounding box, which are then nearly as tight and much cheaper.
 const FACET_BOUND_LIMIT: usize = 16;
 
-/// Neighbour lists in one flat array: item `i`'s are
-/// `items[start[i]..start[i + 1]]`.
-#[derive(Debug, Clone)]
-struct Neighbours {
-    start: Vec<u32>,
-    items: Vec<u32>,
-}
-
-impl Neighbours {
-    /// From the pairs that are neighbours (each pair once).
-    fn of(n: usize, pairs: impl Iterator<Item = (usize, usize)> + Clone) -> Neighbours {
-        let mut start = vec![0u32; n + 1];
-        for (a, b) in pairs.clone() {
-            start[a + 1] += 1;
-            start[b + 1] += 1;
-        }
-        for i in 0..n {
-            start[i + 1] += start[i];
-        }
-        let mut fill = start.clone();
-        let mut items = vec![0u32; start[n] as usize];
-        for (a, b) in pairs {
-            items[fill[a] as usize] = b as u32;
-            fill[a] += 1;
-            items[fill[b] as usize] = a as u32;
-            fill[b] += 1;
-        }
-        Neighbours { start, items }
-    }
-
-    fn of_item(&self, i: usize) -> impl Iterator<Item = usize> + '_ {
-        self.items[self.start[i] as usize..self.start[i + 1] as usize].iter().map(|&j| j as usize)
-    }
-}
-
 /// Cells per side of each face of the cube of directions in a
 /// [`DirectionTable`]: 1536 cells, about ten per facet of a 128-facet ball,
 /// so that a cell's facet is mostly the top one anywhere in the cell
 /// (8 per side measured 35 % more triangles in full, 24 no fewer).
 const TABLE_SIDE: usize = 16;
-
-/// For a grid of directions (the cube's faces cut into cells), the facet
-/// whose cone holds the cell's centre and the vertex farthest toward it:
-/// a climb started there takes a step or none.
-#[derive(Debug, Clone)]
-struct DirectionTable {
-    facets: Vec<u32>,
-    vertices: Vec<u32>,
-}
 
 /// The cell of direction `x` (0 for a zero or non-finite one).
 #[inline]
@@ -166,55 +123,52 @@ pub struct ReachHint {
 /// found by a few steps from a nearby start instead of a scan of all of
 /// them; the facets' rows are the vertices of the polar polytope) and the
 /// lower bounds over boxes and triangles a search prunes with.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Copy)]
 pub struct Reach<'a> {
     ball: &'a Ball3,
-    facet_graph: Neighbours,
-    vertex_graph: Neighbours,
-    /// Climbs' starts by direction (balls of many facets only).
-    table: Option<DirectionTable>,
-    /// Few facets: boxes are bounded by every facet plane.
-    few: bool,
-    /// 1 / circumradius: `γ_B(x) ≥ |x| / R`.
-    inv_radius: f64,
-    /// Per axis 1 / (the ball's largest coordinate) and 1 / (minus its
-    /// least): B lies in its bounding box, whose gauge is below B's.
-    up: [f64; 3],
-    down: [f64; 3],
+    /// Made once per ball and kept in it (`Ball3::reach`).
+    p: &'a Prepared,
+}
+
+/// Prepares `ball` (O(edges), and the direction table for balls of many
+/// facets: about 90 µs for 128 facets, so a ball keeps what this makes).
+pub(super) fn prepare(ball: &Ball3) -> Prepared {
+    let bb = BBox3::of(ball.vertices().iter().copied());
+    let inv = |v: f64| if v > 0.0 { 1.0 / v } else { 0.0 };
+    let edges = ball.edges();
+    let few = ball.facets().len() <= FACET_BOUND_LIMIT;
+    let mut p = Prepared {
+        facet_graph: Neighbours::of(ball.facets().len(), edges.iter().map(|e| (e.facets[0], e.facets[1]))),
+        vertex_graph: Neighbours::of(ball.vertices().len(), edges.iter().map(|e| (e.vertices[0], e.vertices[1]))),
+        table: None,
+        few,
+        inv_radius: inv(ball.circumradius()),
+        up: [0, 1, 2].map(|a| inv(bb.max.coord(a))),
+        down: [0, 1, 2].map(|a| inv(-bb.min.coord(a))),
+    };
+    if !few {
+        // Cells in order are mostly neighbours: each climb starts from
+        // the last one's answer.
+        let reach = Reach { ball, p: &p };
+        let (mut f, mut v) = (0, 0);
+        let mut table = DirectionTable { facets: Vec::new(), vertices: Vec::new() };
+        for k in 0..6 * TABLE_SIDE * TABLE_SIDE {
+            let x = cell_centre(k);
+            f = reach.climb_facet(x, f);
+            v = reach.climb_vertex(x, v);
+            table.facets.push(f as u32);
+            table.vertices.push(v as u32);
+        }
+        p.table = Some(table);
+    }
+    p
 }
 
 impl<'a> Reach<'a> {
-    /// Prepares `ball` (O(edges)).
+    /// `ball` prepared for least-gauge questions ([`Ball3::reach`]: made on
+    /// the first call and kept in the ball).
     pub fn new(ball: &'a Ball3) -> Reach<'a> {
-        let bb = BBox3::of(ball.vertices().iter().copied());
-        let inv = |v: f64| if v > 0.0 { 1.0 / v } else { 0.0 };
-        let edges = ball.edges();
-        let few = ball.facets().len() <= FACET_BOUND_LIMIT;
-        let mut reach = Reach {
-            ball,
-            facet_graph: Neighbours::of(ball.facets().len(), edges.iter().map(|e| (e.facets[0], e.facets[1]))),
-            vertex_graph: Neighbours::of(ball.vertices().len(), edges.iter().map(|e| (e.vertices[0], e.vertices[1]))),
-            table: None,
-            few,
-            inv_radius: inv(ball.circumradius()),
-            up: [0, 1, 2].map(|a| inv(bb.max.coord(a))),
-            down: [0, 1, 2].map(|a| inv(-bb.min.coord(a))),
-        };
-        if !few {
-            // Cells in order are mostly neighbours: each climb starts from
-            // the last one's answer.
-            let (mut f, mut v) = (0, 0);
-            let mut table = DirectionTable { facets: Vec::new(), vertices: Vec::new() };
-            for k in 0..6 * TABLE_SIDE * TABLE_SIDE {
-                let x = cell_centre(k);
-                f = reach.climb_facet(x, f);
-                v = reach.climb_vertex(x, v);
-                table.facets.push(f as u32);
-                table.vertices.push(v as u32);
-            }
-            reach.table = Some(table);
-        }
-        reach
+        Reach { ball, p: ball.prepared.0.get_or_init(|| Box::new(prepare(ball))) }
     }
 
     /// The ball.
@@ -236,22 +190,22 @@ impl<'a> Reach<'a> {
         let above = Point3::new(lo.x.max(0.0), lo.y.max(0.0), lo.z.max(0.0));
         let below = Point3::new((-hi.x).max(0.0), (-hi.y).max(0.0), (-hi.z).max(0.0));
         let near = above - below;
-        let mut lb = (above.x * self.up[0] + below.x * self.down[0])
-            .max(above.y * self.up[1] + below.y * self.down[1])
-            .max(above.z * self.up[2] + below.z * self.down[2]);
+        let mut lb = (above.x * self.p.up[0] + below.x * self.p.down[0])
+            .max(above.y * self.p.up[1] + below.y * self.p.down[1])
+            .max(above.z * self.p.up[2] + below.z * self.p.down[2]);
         let d2 = near.norm2();
-        lb = lb.max(d2.sqrt() * self.inv_radius);
+        lb = lb.max(d2.sqrt() * self.p.inv_radius);
         // A facet's piece `a·(x − c)` is least over the box at the corner
         // its normal picks.
         let pick = |a: &Point3| {
             let at = |v: f64, l: f64, h: f64| v.max(0.0) * l + v.min(0.0) * h;
             at(a.x, lo.x, hi.x) + at(a.y, lo.y, hi.y) + at(a.z, lo.z, hi.z)
         };
-        if self.few {
+        if self.p.few {
             for a in self.ball.gauge_rows() {
                 lb = lb.max(pick(a));
             }
-        } else if let (Some(t), true) = (&self.table, d2 > 0.0) {
+        } else if let (Some(t), true) = (&self.p.table, d2 > 0.0) {
             // The table's facet toward the box's point nearest `c`: its
             // piece is about the gauge there. Even for a nearly round ball
             // (a 128-facet one, inradius 0.96 of circumradius) it halves
@@ -276,7 +230,7 @@ impl<'a> Reach<'a> {
         let (a, b, d) = (a - c, b - c, d - c);
         let least = |r: Point3| r.dot(a).min(r.dot(b)).min(r.dot(d));
         let rows = self.ball.gauge_rows();
-        if let (false, Some(t)) = (self.few, &self.table) {
+        if let (false, Some(t)) = (self.p.few, &self.p.table) {
             // The facet's piece alone: the box's bound, with a table
             // lookup of its own, is rarely tighter and costs as much again.
             return least(rows[t.facets[cell_of(a + b + d)] as usize]).max(0.0);
@@ -294,14 +248,14 @@ impl<'a> Reach<'a> {
     /// The facet whose piece of the gauge is largest at `x` (whose cone
     /// holds `x`), climbing from the table's start or `from`.
     fn top_facet(&self, x: Point3, from: usize) -> usize {
-        let from = self.table.as_ref().map_or(from, |t| t.facets[cell_of(x)] as usize);
+        let from = self.p.table.as_ref().map_or(from, |t| t.facets[cell_of(x)] as usize);
         self.climb_facet(x, from)
     }
 
     /// The vertex farthest in direction `n`, from the table's start or
     /// `from`.
     fn top_vertex(&self, n: Point3, from: usize) -> usize {
-        let from = self.table.as_ref().map_or(from, |t| t.vertices[cell_of(n)] as usize);
+        let from = self.p.table.as_ref().map_or(from, |t| t.vertices[cell_of(n)] as usize);
         self.climb_vertex(n, from)
     }
 
@@ -311,7 +265,7 @@ impl<'a> Reach<'a> {
         let mut f = from.min(rows.len() - 1);
         let mut value = rows[f].dot(x);
         loop {
-            let step = self.facet_graph.of_item(f).map(|g| (g, rows[g].dot(x))).max_by(|p, q| p.1.total_cmp(&q.1));
+            let step = self.p.facet_graph.of_item(f).map(|g| (g, rows[g].dot(x))).max_by(|p, q| p.1.total_cmp(&q.1));
             match step {
                 Some((g, v)) if v > value => (f, value) = (g, v),
                 _ => return f,
@@ -325,7 +279,7 @@ impl<'a> Reach<'a> {
         let mut v = from.min(w.len() - 1);
         let mut value = n.dot(w[v]);
         loop {
-            let step = self.vertex_graph.of_item(v).map(|u| (u, n.dot(w[u]))).max_by(|p, q| p.1.total_cmp(&q.1));
+            let step = self.p.vertex_graph.of_item(v).map(|u| (u, n.dot(w[u]))).max_by(|p, q| p.1.total_cmp(&q.1));
             match step {
                 Some((u, h)) if h > value => (v, value) = (u, h),
                 _ => return v,
@@ -412,7 +366,7 @@ impl<'a> Reach<'a> {
             return Ok(q);
         }
         // Usually no neighbour ties: then no list of the tying ones.
-        if !self.vertex_graph.of_item(hint.vertex).any(|u| toward.dot(w[u]) >= tie) {
+        if !self.p.vertex_graph.of_item(hint.vertex).any(|u| toward.dot(w[u]) >= tie) {
             return Err(outside);
         }
         let mut seen = vec![hint.vertex];
@@ -420,7 +374,7 @@ impl<'a> Reach<'a> {
         while at < seen.len() {
             let v = seen[at];
             at += 1;
-            for u in self.vertex_graph.of_item(v) {
+            for u in self.p.vertex_graph.of_item(v) {
                 if !seen.contains(&u) && toward.dot(w[u]) >= tie {
                     let q = ray(u);
                     if inside_triangle(q, t, n) {
@@ -448,7 +402,7 @@ impl<'a> Reach<'a> {
             // The next facet to take over: the first crossing ahead among
             // the steeper neighbours (on a tie, the steepest).
             let mut next: Option<(f64, usize, f64, f64)> = None;
-            for g in self.facet_graph.of_item(f) {
+            for g in self.p.facet_graph.of_item(f) {
                 let (ag, bg) = line(g);
                 if bg <= beta {
                     continue;
@@ -483,7 +437,9 @@ impl<'a> Reach<'a> {
 }
 
 impl Ball3 {
-    /// The ball prepared for least-gauge questions ([`Reach`]).
+    /// The ball prepared for least-gauge questions ([`Reach`]), made on
+    /// the first call and kept (every later call is free, from any
+    /// thread).
     pub fn reach(&self) -> Reach<'_> {
         Reach::new(self)
     }
