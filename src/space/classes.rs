@@ -29,6 +29,13 @@
 //!
 //! These are the classes that are locally possible; whether a maximal*
 //! ball features one is what its contact domain tells (empty or not).
+//!
+//! Cost: VF is a short climb per triangle; EE asks every ball edge at
+//! every reflex edge (reflex edges × ball edges tests). Output-sensitive
+//! would be a walk on the ball's Gauss map: the arc from the reflex edge's
+//! first normal to its second crosses exactly the fans of the ball edges
+//! of its classes, from the region of the vertex farthest along the first
+//! normal to that of the second (left for when large solids need it).
 //! Every sign is exact: the normals are cross products of coordinate
 //! differences, the signs triple products of them, decided on the `f64`
 //! filter of `kernel/exact_space.rs` and on integers where it is unsure.
