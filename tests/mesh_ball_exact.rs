@@ -15,7 +15,7 @@
 
 mod common;
 
-use common::rational::{exact_on_triangle, exact_planes, integer_meshes, v_of, Soup};
+use common::rational::{exact_on_triangle, exact_planes, inside_points, integer_meshes, v_of, Soup};
 use medax::kernel::{BBox3, Point3};
 use medax::shape::mesh_samples::{cuboid, sphere, torus, union};
 use medax::shape::{Ball3, Mesh3d, MeshOptions};
@@ -153,18 +153,7 @@ fn the_radius_is_the_least_over_every_triangle_for_irrational_balls() {
     ];
     for (mesh_name, (v, t)) in soups {
         let m = Mesh3d::from_triangles(&v, &t, &MeshOptions::default()).unwrap();
-        let b = m.bbox();
-        let mut points = Vec::new();
-        while points.len() < 25 {
-            let c = Point3::new(
-                rng.gen_range(b.min.x..b.max.x),
-                rng.gen_range(b.min.y..b.max.y),
-                rng.gen_range(b.min.z..b.max.z),
-            );
-            if m.inside(c) == Some(true) {
-                points.push(c);
-            }
-        }
+        let points = inside_points(&m, &mut rng, 25);
         for (ball_name, ball) in &balls {
             let radii = m.tree().ball_radii(&points, ball);
             for (&c, got) in points.iter().zip(radii) {
