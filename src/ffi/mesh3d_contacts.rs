@@ -6,7 +6,7 @@ use super::ball::mx_ball;
 use super::boundary::{fill_items, guard, slice};
 use super::last_error::FfiError;
 use super::mesh3d::mx_mesh3d;
-use super::mesh3d_query::{kind_of, mx_contact3_kind, solid_and_ball};
+use super::mesh3d_query::{kind_of, mx_contact3_kind, point_arg, solid_and_ball};
 use super::status::mx_status;
 use crate::kernel::Point3;
 use crate::shape::{ExactContact, Feature3, SurfacePart};
@@ -120,11 +120,7 @@ pub unsafe extern "C" fn mx_mesh3d_ball_contacts(
         // SAFETY: caller contract.
         let (m, b) = unsafe { solid_and_ball(mesh, ball, count)? };
         // SAFETY: caller contract.
-        let xyz = unsafe { slice(point, 3, "point")? };
-        if xyz.iter().any(|v| !v.is_finite()) {
-            return Err(FfiError::new(mx_status::MX_ERR_NON_FINITE, "`point` has a NaN or infinite coordinate"));
-        }
-        let c = Point3::new(xyz[0], xyz[1], xyz[2]);
+        let c = point_arg(unsafe { slice(point, 3, "point")? }, "`point`")?;
         let found = m.inner.tree().exact_contacts(c, &b.reach()).ok_or_else(|| {
             FfiError::new(mx_status::MX_ERR_NON_FINITE, "the point and the solid are too large for exact contacts")
         })?;

@@ -8,7 +8,7 @@ use super::boundary::{batch_room, fill_items, guard, slice};
 use super::handles::{arg, query};
 use super::last_error::FfiError;
 use super::mesh3d::mx_mesh3d;
-use super::mesh3d_query::{kind_of, mx_contact3_kind, solid_and_ball};
+use super::mesh3d_query::{kind_of, mx_contact3_kind, point_arg, solid_and_ball};
 use super::status::mx_status;
 use crate::kernel::Point3;
 use crate::shape::{Ball3, MaximalBall, Mesh3d, Reach};
@@ -32,13 +32,6 @@ pub struct mx_maximal_ball3 {
     pub opposite_point: [f64; 3],
     /// The contact's type.
     pub opposite_kind: mx_contact3_kind,
-}
-
-fn point_at(xyz: &[f64], what: &str) -> Result<Point3, FfiError> {
-    if xyz.iter().any(|v| !v.is_finite()) {
-        return Err(FfiError::new(mx_status::MX_ERR_NON_FINITE, format!("{what} has a NaN or infinite coordinate")));
-    }
-    Ok(Point3::new(xyz[0], xyz[1], xyz[2]))
 }
 
 fn vertex_in(ball: &Ball3, vertex: usize, what: &str) -> Result<(), FfiError> {
@@ -101,7 +94,7 @@ pub unsafe extern "C" fn mx_mesh3d_maximal_ball(
     unsafe {
         query(mesh, out, |m| {
             let b = arg(ball)?.as_space()?;
-            let p = point_at(slice(point, 3, "point")?, "`point`")?;
+            let p = point_arg(slice(point, 3, "point")?, "`point`")?;
             vertex_in(b, vertex, "vertex")?;
             maximal(&m.inner, &b.reach(), p, vertex)
         })
@@ -150,7 +143,7 @@ pub unsafe extern "C" fn mx_mesh3d_maximal_balls(
         }
         let mut asked = Vec::with_capacity(n);
         for (i, (c, &v)) in xyz.chunks_exact(3).zip(vertices).enumerate() {
-            let p = point_at(c, &format!("point {i}"))?;
+            let p = point_arg(c, &format!("point {i}"))?;
             vertex_in(b, v, &format!("vertices[{i}]"))?;
             asked.push((p, v));
         }

@@ -68,8 +68,14 @@ pub struct mx_point_query3 {
 }
 
 fn point_of(xyz: &[f64]) -> Result<Point3, FfiError> {
+    point_arg(xyz, "a point")
+}
+
+/// The point in `xyz` (three doubles; `what` in errors): finite, else
+/// `MX_ERR_NON_FINITE`. Shared by the solid's point arguments.
+pub(super) fn point_arg(xyz: &[f64], what: &str) -> Result<Point3, FfiError> {
     if xyz.iter().any(|v| !v.is_finite()) {
-        return Err(FfiError::new(mx_status::MX_ERR_NON_FINITE, "a point has a NaN or infinite coordinate"));
+        return Err(FfiError::new(mx_status::MX_ERR_NON_FINITE, format!("{what} has a NaN or infinite coordinate")));
     }
     Ok(Point3::new(xyz[0], xyz[1], xyz[2]))
 }

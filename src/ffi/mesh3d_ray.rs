@@ -6,6 +6,7 @@ use super::boundary::{batch_room, check_out, fill_items, guard, slice};
 use super::handles::{arg, query};
 use super::last_error::FfiError;
 use super::mesh3d::mx_mesh3d;
+use super::mesh3d_query::point_arg;
 use super::status::mx_status;
 use crate::kernel::{BBox3, Point3};
 use crate::shape::Hit;
@@ -35,18 +36,6 @@ impl mx_ray_hit3 {
             None => mx_ray_hit3 { hit: 0, t: 0.0, point: [0.0; 3], triangle: 0 },
         }
     }
-}
-
-fn non_finite(what: &str) -> FfiError {
-    FfiError::new(mx_status::MX_ERR_NON_FINITE, format!("{what} has a NaN or infinite coordinate"))
-}
-
-/// The point in `xyz` (three doubles; `what` in errors): finite.
-fn point_arg(xyz: &[f64], what: &str) -> Result<Point3, FfiError> {
-    if xyz.iter().any(|v| !v.is_finite()) {
-        return Err(non_finite(what));
-    }
-    Ok(Point3::new(xyz[0], xyz[1], xyz[2]))
 }
 
 /// A direction (`what` in errors): not zero.
