@@ -9,31 +9,13 @@
 mod common;
 
 use common::rational::{inside_points, integer_meshes};
+use common::solids::l_prism;
 use medax::kernel::Point3;
 use medax::shape::mesh_samples::cuboid;
 use medax::shape::{Ball3, ContactKind3, Feature3, Mesh3d, MeshOptions, SurfacePart};
 use medax::space::{contact_classes, ContactClass};
 use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
-
-/// An L-shaped prism, 2 × 2 × 1 with the corner [1, 2] × [1, 2] cut out:
-/// one reflex edge, the vertical one at (1, 1).
-fn l_prism() -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
-    let outline = [[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0], [1.0, 2.0], [0.0, 2.0]];
-    let mut v: Vec<[f64; 3]> = outline.iter().map(|p| [p[0], p[1], 0.0]).collect();
-    v.extend(outline.iter().map(|p| [p[0], p[1], 1.0]));
-    let mut t = Vec::new();
-    for [a, b, c] in [[0u32, 1, 2], [0, 2, 3], [0, 3, 4], [0, 4, 5]] {
-        t.push([a, c, b]);
-        t.push([a + 6, b + 6, c + 6]);
-    }
-    for i in 0..6u32 {
-        let j = (i + 1) % 6;
-        t.push([i, j, j + 6]);
-        t.push([i, j + 6, i + 6]);
-    }
-    (v, t)
-}
 
 fn mesh(soup: &(Vec<[f64; 3]>, Vec<[u32; 3]>)) -> Mesh3d {
     Mesh3d::from_triangles(&soup.0, &soup.1, &MeshOptions::default()).unwrap()
@@ -61,7 +43,7 @@ fn balls() -> Vec<(&'static str, Ball3)> {
 fn every_contact_of_an_inscribed_ball_is_a_class() {
     let mut rng = SmallRng::seed_from_u64(55);
     let mut solids: Vec<(&str, Mesh3d)> = integer_meshes().iter().map(|(n, s)| (*n, mesh(s))).collect();
-    solids.push(("L prism", mesh(&l_prism())));
+    solids.push(("L prism", mesh(&l_prism(1.0, 0.0))));
     let (mut checked, mut edge_edge) = (0, 0);
     for (solid, m) in &solids {
         for (name, ball) in balls() {
@@ -105,7 +87,7 @@ fn every_contact_of_an_inscribed_ball_is_a_class() {
 
 #[test]
 fn vertex_face_classes_are_the_farthest_ball_vertices() {
-    for (solid, soup) in integer_meshes().into_iter().chain([("L prism", l_prism())]) {
+    for (solid, soup) in integer_meshes().into_iter().chain([("L prism", l_prism(1.0, 0.0))]) {
         let m = mesh(&soup);
         for (name, ball) in balls() {
             let classes = contact_classes(&m, &ball);
@@ -156,7 +138,7 @@ fn a_box_has_no_reflex_edge_and_under_the_cube_every_face_ties() {
 /// positive), away from near-ties.
 #[test]
 fn the_l_prism_has_one_reflex_edge_and_its_edge_classes() {
-    let m = mesh(&l_prism());
+    let m = mesh(&l_prism(1.0, 0.0));
     let cube = Ball3::cube();
     let classes = contact_classes(&m, &cube);
     let at = |q: [f64; 3]| m.positions().iter().position(|p| p.to_array() == q).unwrap() as u32;

@@ -6,7 +6,17 @@
 //! * [`classes`]: the contact classes a solid and a ball can form (which
 //!   ball feature can touch which surface feature of an inscribed ball),
 //!   decided exactly from the normal cones.
+//! * [`radius`]: the radius at which a maximal* ball anchored at a point
+//!   of a contact domain reaches a given class: affine in the point, on
+//!   the convex region where that contact holds.
+//! * [`along`]: the contact arrangement of a VF class along a segment of
+//!   its domain (the opposite classes piece by piece, and where they
+//!   change: ties and handovers).
 
+pub mod along;
 pub mod classes;
+pub mod radius;
 
+pub use along::{opposite_along, Along, AlongChange, AlongError, AlongPiece, ChangeKind, Opposite};
 pub use classes::{contact_classes, ContactClass, ContactClasses};
+pub use radius::{radius_fn, Affine3, RadiusFn};

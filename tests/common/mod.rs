@@ -7,6 +7,7 @@ pub mod ffi;
 pub mod offset_oracle;
 pub mod oracle;
 pub mod rational;
+pub mod solids;
 
 use medax::kernel::Point;
 use medax::plane::{AxisNode, MedialAxis2d};
