@@ -270,3 +270,43 @@ fn a_contact_starting_against_the_cone_wall_makes_the_radius_jump() {
     let (l, r) = (got.pieces[i].radius.at(jump.point), got.pieces[i + 1].radius.at(jump.point));
     assert!(l > 0.7 && r < 0.37, "radii {l} → {r}");
 }
+
+/// The `sweep` test: the balls between two (their hull) against a box
+/// with a cavity, under a turned cube; touching a face is not entering.
+#[test]
+fn a_triangle_entering_the_hull_of_two_balls_is_found() {
+    let outer = cuboid([0.0, 0.0, 0.0], [10.0, 10.0, 10.0]);
+    let inner = cuboid([4.0, 4.0, 4.0], [6.0, 6.0, 6.0]);
+    let soup = union(&[outer, (inner.0, inner.1.iter().map(|t| [t[0], t[2], t[1]]).collect())]);
+    let m = Mesh3d::from_triangles(&soup.0, &soup.1, &MeshOptions::default()).unwrap();
+    let ball = Ball3::cube().rotated([0.3, -0.5, 0.2]).unwrap();
+    let reach = ball.reach();
+    let tree = m.tree();
+    let normal_of = |t: u32| {
+        let [a, b, c] = m.triangles()[t as usize].map(|i| m.positions()[i as usize]);
+        let n = (b - a).cross(c - a);
+        n * (1.0 / n.norm())
+    };
+    let p = Point3::new;
+    let tol = 1e-9;
+    // Both balls and everything between inside: nothing enters.
+    assert_eq!(tree.enters_hull((p(2.0, 2.0, 2.0), 1.0), (p(2.0, 8.0, 2.0), 1.0), &reach, tol), None);
+    // The far ball pokes through the face x = 10.
+    let through = tree.enters_hull((p(2.0, 2.0, 2.0), 1.0), (p(9.5, 2.0, 2.0), 1.0), &reach, tol).unwrap();
+    assert!((normal_of(through) - p(1.0, 0.0, 0.0)).norm() < 1e-12, "entered triangle {through}");
+    // Both end balls inside, the balls between cross the cavity.
+    let between = tree.enters_hull((p(2.0, 5.0, 5.0), 1.0), (p(8.0, 5.0, 5.0), 1.0), &reach, tol);
+    let t = between.expect("the cavity lies between the balls");
+    let [a, b, c] = m.triangles()[t as usize].map(|i| m.positions()[i as usize]);
+    assert!([a, b, c].iter().all(|q| (4.0..=6.0).contains(&q.x)), "entered triangle {t} is not the cavity's");
+    // A ball resting on the face z = 0 (its lowest vertex there), moved
+    // along the face: it touches all the way and never enters.
+    let low = ball.vertices().iter().map(|v| v.z).fold(f64::INFINITY, f64::min);
+    let r = 1.0;
+    let (c0, c1) = (p(3.0, 5.0, -low * r), p(7.0, 5.5, -low * r));
+    assert_eq!(tree.enters_hull((c0, r), (c1, r), &reach, tol), None);
+    // Lowered by a thousandth: it enters the face z = 0.
+    let down = p(0.0, 0.0, 1e-3);
+    let entered = tree.enters_hull((c0 - down, r), (c1 - down, r), &reach, tol).unwrap();
+    assert!((normal_of(entered) - p(0.0, 0.0, -1.0)).norm() < 1e-12);
+}

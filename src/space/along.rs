@@ -18,12 +18,17 @@
 //! `B`, more than one change lies between, and the interval is halved
 //! (`searchcc`).
 //!
+//! Between two samples with one class the stretch is crossing-free when
+//! no triangle enters the hull of their two balls (`sweep`: the balls in
+//! between fill it), and halved otherwise (`searchcc*`); so is each
+//! stretch from a sample to a confirmed change.
+//!
 //! Which class holds at a point is decided exactly (the exact maximal*
 //! ball at the sample, taken on the triangle's plane); the change points
-//! are computed in `f64`. Pieces narrower than the check's
-//! width (10^-6 of the interval being resolved) or than the first
-//! samples' spacing with the same class at both of their ends are not
-//! seen; inputs outside general position (a ball facet lying flat on a
+//! and the hull test are `f64` (a triangle entering the hull by less than
+//! 10^-10 of the solid's size is not seen, nor a piece narrower than the
+//! check's width, 10^-6 of the interval being resolved); inputs outside
+//! general position (a ball facet lying flat on a
 //! triangle) are refused, as are segments whose samples see no ball
 //! (radius 0 or unbounded: the segment leaves the open face).
 
@@ -147,6 +152,23 @@ impl std::fmt::Display for AlongError {
 
 impl std::error::Error for AlongError {}
 
+/// A sample: where, its maximal* ball and that ball's opposite class.
+#[derive(Debug, Clone, Copy)]
+struct Sample {
+    t: f64,
+    class: Opposite,
+    centre: Point3,
+    radius: f64,
+}
+
+/// A change found: where, the class after it, how.
+#[derive(Debug, Clone, Copy)]
+struct Change {
+    at: f64,
+    next: Opposite,
+    kind: ChangeKind,
+}
+
 /// One question: the face, its anchor and the segment in the face's own
 /// parameters (`corner0 + a·(corner1 − corner0) + b·(corner2 − corner0)`).
 struct Walk<'a> {
@@ -169,10 +191,10 @@ impl Walk<'_> {
         c0 + (c1 - c0) * a + (c2 - c0) * b
     }
 
-    /// The opposite class at `t`, exactly: `Ok(None)` when the ball there
-    /// touches more than one class or a non-regular one (a change lies
-    /// exactly there).
-    fn class_exactly_at(&self, t: f64) -> Result<Option<Opposite>, AlongError> {
+    /// The maximal* ball at `t` and its opposite class, exactly:
+    /// `Ok(None)` when the ball there touches more than one class or a
+    /// non-regular one (a change lies exactly there).
+    fn sample_exactly_at(&self, t: f64) -> Result<Option<Sample>, AlongError> {
         let got = self
             .mesh
             .tree()
@@ -184,27 +206,35 @@ impl Walk<'_> {
         if got.flat {
             return Err(AlongError::NotGeneral { at: t });
         }
-        let regular = matches!(
-            got.opposite.as_slice(),
-            [c] if matches!(c.kind, ContactKind3::VertexFace | ContactKind3::EdgeEdge | ContactKind3::FaceVertex)
-        );
-        Ok(regular.then(|| {
-            let c = got.opposite[0];
-            Opposite { ball: c.ball, surface: c.surface, kind: c.kind }
-        }))
+        Ok(match got.opposite.as_slice() {
+            [c] if matches!(c.kind, ContactKind3::VertexFace | ContactKind3::EdgeEdge | ContactKind3::FaceVertex) => {
+                let class = Opposite { ball: c.ball, surface: c.surface, kind: c.kind };
+                Some(Sample { t, class, centre: got.centre, radius: got.radius })
+            }
+            _ => None,
+        })
     }
 
-    /// The opposite class at `t`, or nudged toward `toward` by a few
-    /// millionths of the way when the ball at `t` itself touches several.
-    fn class_near(&self, t: f64, toward: f64) -> Result<Opposite, AlongError> {
+    /// The sample at `t`, or nudged toward `toward` by a few millionths
+    /// of the way when the ball at `t` itself touches several classes.
+    fn sample_near(&self, t: f64, toward: f64) -> Result<Sample, AlongError> {
         let mut at = t;
         for k in 0..4 {
-            if let Some(c) = self.class_exactly_at(at)? {
-                return Ok(c);
+            if let Some(s) = self.sample_exactly_at(at)? {
+                return Ok(s);
             }
             at = t + (toward - t) * 1e-6 * f64::from(1 << (2 * k));
         }
         Err(AlongError::NotGeneral { at: t })
+    }
+
+    /// Whether the balls between two samples of one class stay inside:
+    /// no triangle enters their hull (`sweep`), so no other class lies
+    /// between.
+    fn crossing_free(&self, a: &Sample, b: &Sample) -> bool {
+        let size = self.mesh.tree().bbox().diagonal();
+        let tol = 1e-10 * (size + a.radius.max(b.radius));
+        self.mesh.tree().enters_hull((a.centre, a.radius), (b.centre, b.radius), self.reach, tol).is_none()
     }
 
     fn radius_of(&self, c: Opposite) -> Result<RadiusFn, AlongError> {
@@ -212,22 +242,43 @@ impl Walk<'_> {
             .ok_or(AlongError::NotGeneral { at: 0.0 })
     }
 
-    /// The changes strictly between `t0` (class `a`) and `t1` (class `b`),
-    /// appended in order.
-    fn resolve(
-        &self,
-        (t0, a): (f64, Opposite),
-        (t1, b): (f64, Opposite),
-        depth: usize,
-        out: &mut Vec<(f64, Opposite, ChangeKind)>,
-    ) -> Result<(), AlongError> {
-        if a == b {
+    /// The changes strictly between samples `a` and `b`, appended in
+    /// order: none when they have one class and the balls between them
+    /// stay inside; one where a candidate is confirmed by the classes just
+    /// beside it (and the stretches from `a` and to `b` are crossing-free);
+    /// else those of the two halves.
+    fn resolve(&self, a: &Sample, b: &Sample, depth: usize, out: &mut Vec<Change>) -> Result<(), AlongError> {
+        let (t0, t1) = (a.t, b.t);
+        if a.class == b.class && self.crossing_free(a, b) {
             return Ok(());
         }
         if depth > MAX_DEPTH || t1 - t0 <= 4.0 * f64::EPSILON {
             return Err(AlongError::Unresolved { at: t0 });
         }
-        let (fa, fb) = (self.radius_of(a)?, self.radius_of(b)?);
+        if a.class != b.class {
+            if let Some((lo, kind, t, hi)) = self.confirmed_change(a, b)? {
+                self.resolve(a, &lo, depth + 1, out)?;
+                out.push(Change { at: t, next: b.class, kind });
+                return self.resolve(&hi, b, depth + 1, out);
+            }
+        }
+        // More than one change, or one class with another between: halve
+        // (`searchcc`, `searchcc*`).
+        let m = self.sample_near(0.5 * (t0 + t1), t1)?;
+        self.resolve(a, &m, depth + 1, out)?;
+        self.resolve(&m, b, depth + 1, out)
+    }
+
+    /// The single change between samples of two classes, when a candidate
+    /// for it has those classes just beside it: the samples there, its
+    /// kind and place.
+    fn confirmed_change(
+        &self,
+        a: &Sample,
+        b: &Sample,
+    ) -> Result<Option<(Sample, ChangeKind, f64, Sample)>, AlongError> {
+        let (t0, t1) = (a.t, b.t);
+        let (fa, fb) = (self.radius_of(a.class)?, self.radius_of(b.class)?);
         let same = self.same_function(&fa, &fb);
         // Where the radius is continuous, the change lies where the two
         // lines meet; where it jumps, where one of the two contacts
@@ -240,27 +291,27 @@ impl Walk<'_> {
         for t in candidates.into_iter().flatten() {
             let width = 1e-6 * (t1 - t0);
             let (lo, hi) = ((t - width).max(t0), (t + width).min(t1));
-            if lo > t0 && hi < t1 && self.class_near(lo, t0)? == a && self.class_near(hi, t1)? == b {
-                let p = self.point(t);
-                let tol = 1e-9 * (self.point(t0) - self.point(t1)).norm().max(fa.at(p).abs());
-                let kind = if same {
-                    ChangeKind::Continued
-                } else if (fa.at(p) - fb.at(p)).abs() > tol {
-                    ChangeKind::Jump
-                } else if fa.margin(p).min(fb.margin(p)) > tol {
-                    ChangeKind::Tie
-                } else {
-                    ChangeKind::Handover
-                };
-                out.push((t, b, kind));
-                return Ok(());
+            if !(lo > t0 && hi < t1) {
+                continue;
             }
+            let (slo, shi) = (self.sample_near(lo, t0)?, self.sample_near(hi, t1)?);
+            if slo.class != a.class || shi.class != b.class {
+                continue;
+            }
+            let p = self.point(t);
+            let tol = 1e-9 * (self.point(t0) - self.point(t1)).norm().max(fa.at(p).abs());
+            let kind = if same {
+                ChangeKind::Continued
+            } else if (fa.at(p) - fb.at(p)).abs() > tol {
+                ChangeKind::Jump
+            } else if fa.margin(p).min(fb.margin(p)) > tol {
+                ChangeKind::Tie
+            } else {
+                ChangeKind::Handover
+            };
+            return Ok(Some((slo, kind, t, shi)));
         }
-        // More than one change (or none where the lines meet): halve.
-        let m = 0.5 * (t0 + t1);
-        let c = self.class_near(m, t1)?;
-        self.resolve((t0, a), (m, c), depth + 1, out)?;
-        self.resolve((m, c), (t1, b), depth + 1, out)
+        Ok(None)
     }
 
     /// Whether two radius functions agree along the whole segment (to
@@ -337,16 +388,16 @@ pub fn opposite_along(
     let mut seen = Vec::with_capacity(ts.len());
     for (k, &t) in ts.iter().enumerate() {
         let toward = if k + 1 < ts.len() { ts[k + 1] } else { ts[k - 1] };
-        seen.push((t, walk.class_near(t, toward)?));
+        seen.push(walk.sample_near(t, toward)?);
     }
-    let mut changes: Vec<(f64, Opposite, ChangeKind)> = Vec::new();
+    let mut changes: Vec<Change> = Vec::new();
     for pair in seen.windows(2) {
-        walk.resolve(pair[0], pair[1], 0, &mut changes)?;
+        walk.resolve(&pair[0], &pair[1], 0, &mut changes)?;
     }
     let mut pieces = Vec::with_capacity(changes.len() + 1);
-    let mut start = (0.0, seen[0].1);
+    let mut start = (0.0, seen[0].class);
     let mut out_changes = Vec::with_capacity(changes.len());
-    for &(t, next, kind) in &changes {
+    for &Change { at: t, next, kind } in &changes {
         let radius = walk.radius_of(start.1)?;
         let p = walk.point(t);
         out_changes.push(AlongChange { at: t, point: p, radius: radius.at(p), kind });

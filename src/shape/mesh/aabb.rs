@@ -22,7 +22,8 @@
 //!   against itself.
 //! * `ball_radius.rs`: the largest ball `c + r·B` at a centre under a
 //!   space ball; `maximal.rs`: maximal* balls grown about a point, and
-//!   every contact of a ball.
+//!   every contact of a ball; `sweep.rs`: whether a triangle enters the
+//!   hull of two balls (the balls between them).
 
 use crate::kernel::{BBox3, Point3};
 
@@ -38,6 +39,7 @@ mod maximal_exact;
 pub use maximal::MaximalBall;
 pub use maximal_exact::ExactMaximalBall;
 mod self_cross;
+mod sweep;
 
 /// Most triangles in a leaf: few enough that scanning a leaf costs about
 /// as much as descending one more level.
