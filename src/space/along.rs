@@ -37,8 +37,10 @@ use crate::kernel::Point3;
 use crate::shape::ball::{ContactKind3, Feature3, Reach};
 use crate::shape::{Mesh3d, SurfacePart};
 
-/// Samples taken along the segment before any halving.
-const SAMPLES: usize = 16;
+/// Stretches the segment is cut into before any halving: one, as the
+/// hull test tells whether a stretch needs halving (16 found the same
+/// pieces on the test families at four times the cost).
+const SAMPLES: usize = 1;
 
 /// Halvings before a change is given up as unresolvable.
 const MAX_DEPTH: usize = 48;

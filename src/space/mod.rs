@@ -11,12 +11,16 @@
 //!   the convex region where that contact holds.
 //! * [`along`]: the contact arrangement of a VF class along a segment of
 //!   its domain (the opposite classes piece by piece, and where they
-//!   change: ties and handovers).
+//!   change: ties, handovers, flat continuations, jumps).
+//! * [`arrangement`]: the contact arrangement of a VF class, its face cut
+//!   by projection lines into cells of one opposite class each.
 
 pub mod along;
+pub mod arrangement;
 pub mod classes;
 pub mod radius;
 
 pub use along::{opposite_along, Along, AlongChange, AlongError, AlongPiece, ChangeKind, Opposite};
+pub use arrangement::{face_arrangement, Cell, FaceArrangement};
 pub use classes::{contact_classes, ContactClass, ContactClasses};
 pub use radius::{radius_fn, Affine3, RadiusFn};

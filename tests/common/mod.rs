@@ -4,6 +4,7 @@
 pub mod ball_oracle;
 pub mod c_header;
 pub mod ffi;
+pub mod maximal_oracle;
 pub mod offset_oracle;
 pub mod oracle;
 pub mod rational;

@@ -1,0 +1,236 @@
+//! The contact arrangement of a VF class (thesis 3.3.2.4, Algorithm 7
+//! `arrang`): its domain, the face itself, split into cells on each of
+//! which the maximal* balls anchored there touch one opposite class.
+//!
+//! A stack of convex subdomains starts with the face. For a subdomain,
+//! each edge moved a hair inside (the thesis's `e^D`, so that no sample
+//! lies on the projection line the edge came from) is walked by
+//! [`opposite_along`]; the first change found gives a projection line
+//! (where the two radius functions tie, or where a contact stops
+//! holding), and the subdomain is cut by it into two convex ones. A
+//! subdomain whose edges are all crossing-free is one cell: for a solid
+//! without cavities, crossing-free edges enclose no projection line
+//! (Property 3). With cavities an island of another class could hide
+//! inside a cell; the sample at each cell's centroid is checked too.
+//!
+//! Points are the face's own parameters `(a, b)`:
+//! `corner0 + a·(corner1 − corner0) + b·(corner2 − corner0)`. The cells
+//! are `f64` polygons; their classes are decided exactly at samples.
+
+use super::along::{opposite_along, AlongError, ChangeKind, Opposite};
+use super::radius::{radius_fn, Affine3, RadiusFn};
+use crate::kernel::Point3;
+use crate::shape::ball::Reach;
+use crate::shape::Mesh3d;
+
+/// How far inside the face its domain starts, and each walked edge lies
+/// inside its subdomain: a fraction of the way to the centroid.
+const INSET: f64 = 1e-6;
+
+/// Cuts before the arrangement is given up (a runaway would mean lines
+/// that do not separate what they were found between).
+const MAX_CUTS: usize = 4096;
+
+/// A polygon in a face's parameters.
+type Polygon2 = Vec<(f64, f64)>;
+
+/// A cell of a contact arrangement.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Cell {
+    /// Its corners, counter-clockwise in the face's parameters `(a, b)`.
+    pub polygon: Vec<(f64, f64)>,
+    /// The opposite class of the maximal* balls anchored in it.
+    pub opposite: Opposite,
+    /// Their radius there.
+    pub radius: RadiusFn,
+}
+
+/// The contact arrangement of one VF class.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FaceArrangement {
+    /// The face.
+    pub face: u32,
+    /// The ball vertex of the class.
+    pub anchor: usize,
+    /// The cells; together they cover the face (less a rim of
+    /// 10^-6 of the way to its centroid).
+    pub cells: Vec<Cell>,
+}
+
+/// A projection line in the face's parameters: `F(a, b) = 0`, `F` affine.
+#[derive(Debug, Clone, Copy)]
+struct Line2 {
+    ca: f64,
+    cb: f64,
+    c0: f64,
+}
+
+impl Line2 {
+    fn at(&self, (a, b): (f64, f64)) -> f64 {
+        self.ca * a + self.cb * b + self.c0
+    }
+}
+
+/// `f` (a function of space) on the face's plane, in its parameters.
+fn on_face(f: &Affine3, [c0, c1, c2]: [Point3; 3]) -> Line2 {
+    Line2 { ca: f.grad.dot(c1 - c0), cb: f.grad.dot(c2 - c0), c0: f.at(c0) }
+}
+
+/// The contact arrangement of the VF class `(anchor, face)`.
+///
+/// # Errors
+///
+/// As [`opposite_along`]; [`AlongError::Unresolved`] when the cutting
+/// runs away or a subdomain's edges disagree with no line to cut by.
+pub fn face_arrangement(
+    mesh: &Mesh3d,
+    reach: &Reach<'_>,
+    face: u32,
+    anchor: usize,
+) -> Result<FaceArrangement, AlongError> {
+    let tri = *mesh.triangles().get(face as usize).ok_or(AlongError::NoClass)?;
+    let corners = tri.map(|i| mesh.positions()[i as usize]);
+    let domain = inset(&[(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)]);
+    let mut stack = vec![domain];
+    let mut cells = Vec::new();
+    let mut cuts = 0;
+    while let Some(d) = stack.pop() {
+        match cut_of(mesh, reach, face, anchor, corners, &d)? {
+            Cut::Line(line) => {
+                cuts += 1;
+                if cuts > MAX_CUTS {
+                    return Err(AlongError::Unresolved { at: 0.0 });
+                }
+                let (left, right) = split(&d, &line);
+                stack.push(left);
+                stack.push(right);
+            }
+            Cut::Cell(opposite) => {
+                let radius = radius_fn(mesh, reach.ball(), anchor, opposite.ball, opposite.surface)
+                    .ok_or(AlongError::NotGeneral { at: 0.0 })?;
+                cells.push(Cell { polygon: d, opposite, radius });
+            }
+        }
+    }
+    Ok(FaceArrangement { face, anchor, cells })
+}
+
+/// What a subdomain needs: a cut, or nothing (a cell of this class).
+enum Cut {
+    Line(Line2),
+    Cell(Opposite),
+}
+
+/// The first projection line crossing an edge of `d` (moved inside)
+/// that separates `d`'s corners, or the class of `d` when there is none.
+fn cut_of(
+    mesh: &Mesh3d,
+    reach: &Reach<'_>,
+    face: u32,
+    anchor: usize,
+    corners: [Point3; 3],
+    d: &[(f64, f64)],
+) -> Result<Cut, AlongError> {
+    let inner = inset(d);
+    let size = d.iter().map(|&(a, b)| a.abs() + b.abs()).fold(0.0, f64::max).max(1.0);
+    let mut class: Option<Opposite> = None;
+    let mut disagree = false;
+    for k in 0..inner.len() {
+        let (from, to) = (inner[k], inner[(k + 1) % inner.len()]);
+        let along = opposite_along(mesh, reach, face, anchor, from, to)?;
+        for (i, change) in along.changes.iter().enumerate() {
+            let (left, right) = (&along.pieces[i], &along.pieces[i + 1]);
+            let p = change.point;
+            let f = match change.kind {
+                ChangeKind::Tie => Affine3 {
+                    grad: left.radius.radius.grad - right.radius.radius.grad,
+                    at0: left.radius.radius.at0 - right.radius.radius.at0,
+                },
+                // The condition of the contact that ends or starts there.
+                _ => {
+                    let ending = if left.radius.margin(p).abs() <= right.radius.margin(p).abs() {
+                        &left.radius
+                    } else {
+                        &right.radius
+                    };
+                    *ending.holds.iter().min_by(|g, h| g.at(p).abs().total_cmp(&h.at(p).abs())).expect("conditions")
+                }
+            };
+            let line = on_face(&f, corners);
+            let values: Vec<f64> = d.iter().map(|&q| line.at(q)).collect();
+            let scale = (line.ca.abs() + line.cb.abs()) * size * 1e-9;
+            if values.iter().any(|&v| v > scale) && values.iter().any(|&v| v < -scale) {
+                return Ok(Cut::Line(line));
+            }
+        }
+        for piece in &along.pieces {
+            disagree |= class.is_some_and(|c| c != piece.opposite);
+            class = Some(piece.opposite);
+        }
+    }
+    // Every edge crossing-free: one class all round, and (with cavities
+    // an island could hide inside) at the centroid too.
+    let g = centroid(d);
+    let there = mesh.tree().maximal_ball_exact_on(corners, g, anchor, reach);
+    let at_centre = there.as_ref().and_then(|b| match b.opposite.as_slice() {
+        [c] => Some(Opposite { ball: c.ball, surface: c.surface, kind: c.kind }),
+        _ => None,
+    });
+    match (class, disagree) {
+        (Some(c), false) if at_centre.is_none_or(|x| x == c) => Ok(Cut::Cell(c)),
+        _ => Err(AlongError::Unresolved { at: 0.0 }),
+    }
+}
+
+/// The polygon moved toward its centroid by [`INSET`] of the way.
+fn inset(d: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    let g = centroid(d);
+    d.iter().map(|&(a, b)| (a + (g.0 - a) * INSET, b + (g.1 - b) * INSET)).collect()
+}
+
+/// The centroid of a convex polygon's corners.
+fn centroid(d: &[(f64, f64)]) -> (f64, f64) {
+    let n = d.len() as f64;
+    let (sa, sb) = d.iter().fold((0.0, 0.0), |(x, y), &(a, b)| (x + a, y + b));
+    (sa / n, sb / n)
+}
+
+/// A convex polygon cut by a line into the parts where it is `≥ 0` and
+/// `≤ 0`, each counter-clockwise.
+fn split(d: &[(f64, f64)], line: &Line2) -> (Polygon2, Polygon2) {
+    let (mut pos, mut neg) = (Vec::new(), Vec::new());
+    for k in 0..d.len() {
+        let (p, q) = (d[k], d[(k + 1) % d.len()]);
+        let (fp, fq) = (line.at(p), line.at(q));
+        if fp >= 0.0 {
+            pos.push(p);
+        }
+        if fp <= 0.0 {
+            neg.push(p);
+        }
+        if (fp > 0.0 && fq < 0.0) || (fp < 0.0 && fq > 0.0) {
+            let s = fp / (fp - fq);
+            let x = (p.0 + (q.0 - p.0) * s, p.1 + (q.1 - p.1) * s);
+            pos.push(x);
+            neg.push(x);
+        }
+    }
+    (pos, neg)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_line_splits_a_square_into_two_counter_clockwise_parts() {
+        let square = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
+        let line = Line2 { ca: 1.0, cb: 0.0, c0: -0.25 };
+        let (pos, neg) = split(&square, &line);
+        let area = |d: &[(f64, f64)]| {
+            (0..d.len()).map(|k| d[k].0 * d[(k + 1) % d.len()].1 - d[(k + 1) % d.len()].0 * d[k].1).sum::<f64>() / 2.0
+        };
+        assert!((area(&pos) - 0.75).abs() < 1e-15 && (area(&neg) - 0.25).abs() < 1e-15);
+        assert!(pos.iter().all(|&p| line.at(p) >= 0.0) && neg.iter().all(|&p| line.at(p) <= 0.0));
+    }
+}
