@@ -14,13 +14,17 @@
 //!   change: ties, handovers, flat continuations, jumps).
 //! * [`arrangement`]: the contact arrangement of a VF class, its face cut
 //!   by projection lines into cells of one opposite class each.
+//! * [`axis`]: the medial axis of a convex solid assembled from its faces'
+//!   arrangements, a triangle mesh of sheets with radii.
 
 pub mod along;
 pub mod arrangement;
+pub mod axis;
 pub mod classes;
 pub mod radius;
 
 pub use along::{opposite_along, Along, AlongChange, AlongError, AlongPiece, ChangeKind, Opposite};
 pub use arrangement::{face_arrangement, Cell, FaceArrangement};
+pub use axis::{medial_axis_3d, Axis3, Axis3Error, Sheet3};
 pub use classes::{contact_classes, ContactClass, ContactClasses};
 pub use radius::{radius_fn, Affine3, RadiusFn};
