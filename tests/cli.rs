@@ -4,6 +4,9 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
+#[path = "common/solids.rs"]
+mod solids;
+
 fn medax() -> Command {
     Command::new(env!("CARGO_BIN_EXE_medax"))
 }
@@ -628,4 +631,63 @@ fn query3d_answers_points_as_json() {
     // --exact without --ball is a usage error.
     let lone = medax().args(["query3d"]).arg(&off).args(["--exact", "--points"]).arg(&pts).output().unwrap();
     assert_eq!(lone.status.code(), Some(2));
+}
+
+/// `medax axis3d`: the axis of a perturbed octahedron under the
+/// tetrahedron as JSON (every triangle in one sheet, radii positive),
+/// OBJ and PLY with radii; a solid with a reflex edge exits 1 naming it.
+#[test]
+fn axis3d_writes_the_axis_of_a_convex_solid() {
+    let dir = scratch("axis3d");
+    let v = [
+        [3.05, 0.02, -0.04],
+        [-2.97, 0.05, 0.03],
+        [0.04, 3.02, 0.01],
+        [-0.03, -2.96, 0.05],
+        [0.02, -0.05, 3.04],
+        [0.01, 0.03, -2.98],
+    ];
+    let t = [[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]];
+    let off = dir.join("octahedron.off");
+    std::fs::write(&off, medax::io::mesh::write_off(&v, &t)).unwrap();
+    let (json, obj, ply) = (dir.join("axis.json"), dir.join("axis.obj"), dir.join("axis.ply"));
+    let out = medax()
+        .arg("axis3d")
+        .arg(&off)
+        .args(["--ball", "tetra", "--json"])
+        .arg(&json)
+        .arg("--obj")
+        .arg(&obj)
+        .arg("--ply")
+        .arg(&ply)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let vertices = doc["vertices"].as_array().unwrap();
+    let triangles = doc["triangles"].as_array().unwrap();
+    assert!(!triangles.is_empty());
+    assert!(vertices.iter().all(|q| q.as_array().unwrap().len() == 4 && q[3].as_f64().unwrap() > 0.0));
+    let mut seen = vec![0; triangles.len()];
+    for s in doc["sheets"].as_array().unwrap() {
+        assert_eq!(s["kind"], "sheet");
+        assert_eq!(s["classes"].as_array().unwrap().len(), 2);
+        for t in s["triangles"].as_array().unwrap() {
+            seen[t.as_u64().unwrap() as usize] += 1;
+        }
+    }
+    assert!(seen.iter().all(|&n| n == 1), "every triangle in exactly one sheet");
+    let obj_text = std::fs::read_to_string(&obj).unwrap();
+    assert_eq!(obj_text.lines().filter(|l| l.starts_with("v ")).count(), vertices.len());
+    let ply_text = std::fs::read_to_string(&ply).unwrap();
+    assert!(
+        ply_text.contains("property double radius") && ply_text.contains(&format!("element face {}", triangles.len()))
+    );
+    // An L-shaped prism has a reflex edge.
+    let l = dir.join("l.off");
+    let (pv, pt) = solids::l_prism(1.0, 0.0);
+    std::fs::write(&l, medax::io::mesh::write_off(&pv, &pt)).unwrap();
+    let out = medax().arg("axis3d").arg(&l).args(["--ball", "tetra"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("reflex"), "{}", String::from_utf8_lossy(&out.stderr));
 }

@@ -17,6 +17,7 @@ fn put(text: &str) {
 }
 
 mod axis;
+mod axis3d;
 mod ball;
 mod demo;
 mod info;
@@ -244,6 +245,24 @@ enum Command {
         #[arg(long)]
         json: Option<PathBuf>,
     },
+    /// The medial axis of a solid under a space ball (convex solids so far): JSON (vertices with radii,
+    /// triangles, sheets with their contact classes), OBJ, or PLY coloured by radius.
+    Axis3d {
+        /// The solid: .obj, .off, .stl or .ply.
+        mesh: PathBuf,
+        /// The space ball: tetra, cube, octa, icosa, geodesic:N, or a mesh file (the hull of its vertices).
+        #[arg(long)]
+        ball: String,
+        /// Write the axis JSON here (default: print it, unless --obj or --ply is given).
+        #[arg(long)]
+        json: Option<PathBuf>,
+        /// Write the axis triangles as OBJ.
+        #[arg(long)]
+        obj: Option<PathBuf>,
+        /// Write the axis as PLY with a radius and a colour by radius per vertex.
+        #[arg(long)]
+        ply: Option<PathBuf>,
+    },
     /// Validate a shape, or the shapes of a drawing, and report loops, elements, joints, area, extent and what was ignored;
     /// or validate a solid (.obj, .off, .stl, .ply) and report its components, volume, area and genus.
     Info {
@@ -322,6 +341,9 @@ pub fn run() -> ExitCode {
         Command::Convert { input, output } => mesh::run_convert(&input, &output),
         Command::Query3d { mesh, ball, points, exact, json } => {
             query3d::run(&mesh, ball.as_deref(), &points, exact, json.as_deref())
+        }
+        Command::Axis3d { mesh, ball, json, obj, ply } => {
+            axis3d::run(&mesh, &ball, json.as_deref(), obj.as_deref(), ply.as_deref())
         }
         Command::Axis(args) => axis::run(&args),
         Command::Voronoi(args) => voronoi::run(&args),

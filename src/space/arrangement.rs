@@ -135,9 +135,20 @@ fn cut_of(
     let size = d.iter().map(|&(a, b)| a.abs() + b.abs()).fold(0.0, f64::max).max(1.0);
     let mut class: Option<Opposite> = None;
     let mut disagree = false;
+    let mut unresolved: Option<AlongError> = None;
     for k in 0..inner.len() {
         let (from, to) = (inner[k], inner[(k + 1) % inner.len()]);
-        let along = opposite_along(mesh, reach, face, anchor, from, to)?;
+        // An edge passing a hair from a junction's projection may hold
+        // changes too close to separate: the other edges may still give
+        // a cut, after which that edge is gone.
+        let along = match opposite_along(mesh, reach, face, anchor, from, to) {
+            Ok(a) => a,
+            Err(e @ AlongError::Unresolved { .. }) => {
+                unresolved = Some(e);
+                continue;
+            }
+            Err(e) => return Err(e),
+        };
         for (i, change) in along.changes.iter().enumerate() {
             let (left, right) = (&along.pieces[i], &along.pieces[i + 1]);
             let p = change.point;
@@ -168,6 +179,9 @@ fn cut_of(
             class = Some(piece.opposite);
         }
     }
+    if let Some(e) = unresolved {
+        return Err(e);
+    }
     // Every edge crossing-free: one class all round, and (with cavities
     // an island could hide inside) at the centroid too.
     let g = centroid(d);
@@ -196,12 +210,23 @@ fn centroid(d: &[(f64, f64)]) -> (f64, f64) {
 }
 
 /// A convex polygon cut by a line into the parts where it is `≥ 0` and
-/// `≤ 0`, each counter-clockwise.
+/// `≤ 0`, each counter-clockwise. Corners within 10^-12 of the line (in
+/// the parameters) count as on it, so a cut through a corner makes no
+/// sliver; corners closer than that to the one before are dropped.
 fn split(d: &[(f64, f64)], line: &Line2) -> (Polygon2, Polygon2) {
+    let tol = 1e-12 * (line.ca.abs() + line.cb.abs());
+    let f = |p: (f64, f64)| {
+        let v = line.at(p);
+        if v.abs() <= tol {
+            0.0
+        } else {
+            v
+        }
+    };
     let (mut pos, mut neg) = (Vec::new(), Vec::new());
     for k in 0..d.len() {
         let (p, q) = (d[k], d[(k + 1) % d.len()]);
-        let (fp, fq) = (line.at(p), line.at(q));
+        let (fp, fq) = (f(p), f(q));
         if fp >= 0.0 {
             pos.push(p);
         }
@@ -215,7 +240,17 @@ fn split(d: &[(f64, f64)], line: &Line2) -> (Polygon2, Polygon2) {
             neg.push(x);
         }
     }
-    (pos, neg)
+    (without_repeats(pos), without_repeats(neg))
+}
+
+/// The polygon without corners within 10^-12 of the one before.
+fn without_repeats(mut d: Polygon2) -> Polygon2 {
+    let near = |p: (f64, f64), q: (f64, f64)| (p.0 - q.0).abs() + (p.1 - q.1).abs() <= 1e-12;
+    d.dedup_by(|q, p| near(*p, *q));
+    while d.len() > 1 && near(d[0], d[d.len() - 1]) {
+        d.pop();
+    }
+    d
 }
 
 #[cfg(test)]

@@ -130,7 +130,19 @@ impl TriangleTree {
             .near_triangles(c, limit, reach)
             .into_iter()
             .map(|(k, _)| k)
-            .filter(|&k| enters_cone(ball, vertex, centre, self.corners(k)))
+            .filter(|&k| {
+                let t = self.corners(k);
+                // The point's own triangle, holding it inside: the open
+                // cone meets it iff it crosses its plane (a few signs; the
+                // general test's linear program is degenerate there, its
+                // best value exactly 0, and runs on integers).
+                match centre {
+                    Centre::On(own, a, b) if t == own && a > 0.0 && b > 0.0 && a + b < 1.0 => {
+                        cone_crosses_plane(ball, vertex, own)
+                    }
+                    _ => enters_cone(ball, vertex, centre, t),
+                }
+            })
             .collect();
         let corners: Vec<[Point3; 3]> = near.iter().map(|&k| self.corners(k)).collect();
         let solved = grow_exact_many(ball, vertex, centre, &corners).filter(|x| x.radius <= up_to)?;

@@ -1,0 +1,94 @@
+//! `medax axis3d`: the medial axis of a solid under a space ball, as the
+//! JSON contract of the README, an OBJ mesh, or a PLY whose vertices carry
+//! the radius and a colour by radius (blue small, red large) for a mesh
+//! viewer.
+
+use super::query3d::parse_ball;
+use super::{write_file, write_streamed};
+use medax::io::mesh::write_obj;
+use medax::shape::{Mesh3d, MeshOptions};
+use medax::space::{medial_axis_3d, Axis3};
+use serde_json::json;
+use std::io::Write;
+use std::path::Path;
+use std::process::ExitCode;
+
+/// The axis JSON: vertices `[x, y, z, r]`, triangles, and the sheets with
+/// their triangles and two contact classes (ball vertex on face).
+fn axis_json(axis: &Axis3) -> serde_json::Value {
+    let sheets: Vec<_> = axis
+        .sheets
+        .iter()
+        .map(|s| {
+            let classes: Vec<_> = (0..2)
+                .map(|k| json!({"kind": "VF", "ball": {"vertex": s.ball_vertices[k]}, "surface": {"face": s.faces[k]}}))
+                .collect();
+            json!({"kind": "sheet", "triangles": s.triangles, "classes": classes})
+        })
+        .collect();
+    json!({"vertices": axis.vertices, "triangles": axis.triangles, "sheets": sheets})
+}
+
+/// PLY (ASCII) with a `radius` and an RGB colour per vertex.
+fn write_ply_radius(w: &mut impl Write, axis: &Axis3) -> std::io::Result<()> {
+    let (lo, hi) =
+        axis.vertices.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| (l.min(v[3]), h.max(v[3])));
+    let span = if hi > lo { hi - lo } else { 1.0 };
+    writeln!(w, "ply\nformat ascii 1.0\ncomment medax axis3d: the medial axis, coloured by radius")?;
+    writeln!(w, "element vertex {}", axis.vertices.len())?;
+    writeln!(w, "property double x\nproperty double y\nproperty double z\nproperty double radius")?;
+    writeln!(w, "property uchar red\nproperty uchar green\nproperty uchar blue")?;
+    writeln!(w, "element face {}\nproperty list uchar uint vertex_indices\nend_header", axis.triangles.len())?;
+    for v in &axis.vertices {
+        let t = (v[3] - lo) / span;
+        let (r, g, b) = ((255.0 * t) as u8, (255.0 * (1.0 - (2.0 * t - 1.0).abs())) as u8, (255.0 * (1.0 - t)) as u8);
+        writeln!(w, "{} {} {} {} {r} {g} {b}", v[0], v[1], v[2], v[3])?;
+    }
+    for t in &axis.triangles {
+        writeln!(w, "3 {} {} {}", t[0], t[1], t[2])?;
+    }
+    Ok(())
+}
+
+pub fn run(
+    mesh_path: &Path,
+    ball: &str,
+    json_out: Option<&Path>,
+    obj: Option<&Path>,
+    ply: Option<&Path>,
+) -> Result<(), ExitCode> {
+    let fail = |msg: String, code: u8| {
+        eprintln!("medax: {msg}");
+        ExitCode::from(code)
+    };
+    let ball = parse_ball(ball).map_err(|m| fail(m, 2))?;
+    let mesh = Mesh3d::from_path(mesh_path, &MeshOptions::default())
+        .map_err(|e| fail(format!("{}: {e}", mesh_path.display()), 1))?;
+    let start = std::time::Instant::now();
+    let axis = medial_axis_3d(&mesh, &ball).map_err(|e| fail(format!("{}: {e}", mesh_path.display()), 1))?;
+    eprintln!(
+        "medax: axis of {} triangles: {} sheets, {} triangles, {} vertices in {:.3} s",
+        mesh.triangles().len(),
+        axis.sheets.len(),
+        axis.triangles.len(),
+        axis.vertices.len(),
+        start.elapsed().as_secs_f64()
+    );
+    if let Some(p) = obj {
+        let pos: Vec<[f64; 3]> = axis.vertices.iter().map(|v| [v[0], v[1], v[2]]).collect();
+        write_file(p, &write_obj(&pos, &axis.triangles))?;
+    }
+    if let Some(p) = ply {
+        write_streamed(p, |w| write_ply_radius(w, &axis))?;
+    }
+    let text = axis_json(&axis).to_string();
+    match json_out {
+        Some(p) => write_file(p, &text),
+        None if obj.is_none() && ply.is_none() => {
+            super::put(&text);
+            super::put("\n");
+            Ok(())
+        }
+        None => Ok(()),
+    }
+}
