@@ -1,0 +1,59 @@
+//! Convex solids from small sets of points on an integer grid (coplanar
+//! and collinear points, faces parallel to ball facets: far from general
+//! position) under the preset balls and random hulls: the 3D medial axis
+//! or a typed error, never a panic or a hang; an axis returned is sound
+//! (every vertex inside, its radius the brute-force largest ball there).
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+use medax::kernel::Point3;
+use medax::shape::{Ball3, Faces, Mesh3d, MeshOptions};
+use medax::space::medial_axis_3d;
+
+fn grid(v: &[(i8, i8, i8)]) -> Vec<Point3> {
+    v.iter().map(|&(x, y, z)| Point3::new(f64::from(x) / 4.0, f64::from(y) / 4.0, f64::from(z) / 4.0)).collect()
+}
+
+fuzz_target!(|input: (Vec<(i8, i8, i8)>, u8, Vec<(i8, i8, i8)>)| {
+    let (points, which, ball_points) = input;
+    if points.len() < 4 || points.len() > 12 || ball_points.len() > 10 {
+        return;
+    }
+    let ball = match which % 5 {
+        0 => Ball3::tetrahedron(),
+        1 => Ball3::cube(),
+        2 => Ball3::octahedron(),
+        3 => Ball3::tetrahedron().rotated([0.3, 0.2, -0.4]).unwrap(),
+        _ => match Ball3::from_points(&grid(&ball_points)) {
+            Ok(b) => b,
+            Err(_) => return,
+        },
+    };
+    // The hull of the points, as a solid.
+    let Ok(hull) = Ball3::from_points(&grid(&points).iter().map(|&p| p + Point3::new(0.01, 0.02, 0.03)).collect::<Vec<_>>())
+    else {
+        return;
+    };
+    let v: Vec<[f64; 3]> = hull.vertices().iter().map(|p| [p.x, p.y, p.z]).collect();
+    let mut indices = Vec::new();
+    let mut starts = vec![0u32];
+    for f in hull.facets() {
+        indices.extend(f.vertices.iter().map(|&i| i as u32));
+        starts.push(indices.len() as u32);
+    }
+    let Ok(m) = Mesh3d::from_polygons(&v, Faces { indices: &indices, starts: &starts, lines: &[] }, &MeshOptions::default())
+    else {
+        return;
+    };
+    let Ok(axis) = medial_axis_3d(&m, &ball) else { return };
+    let tris: Vec<[Point3; 3]> = m.triangles().iter().map(|t| t.map(|i| m.positions()[i as usize])).collect();
+    let diag = m.bbox().diagonal();
+    for q in &axis.vertices {
+        let c = Point3::new(q[0], q[1], q[2]);
+        for t in &tris {
+            assert!((t[1] - t[0]).cross(t[2] - t[0]).dot(c - t[0]) <= 1e-6 * diag * diag, "vertex {q:?} outside");
+        }
+        let r = m.tree().ball_radius(c, &ball).map_or(f64::NAN, |b| b.radius);
+        assert!((r - q[3]).abs() <= 1e-6 * diag, "vertex {q:?}: largest ball {r}");
+    }
+});
