@@ -30,7 +30,8 @@ fuzz_target!(|input: (Vec<(i8, i8, i8)>, u8, Vec<(i8, i8, i8)>)| {
         },
     };
     // The hull of the points, as a solid.
-    let Ok(hull) = Ball3::from_points(&grid(&points).iter().map(|&p| p + Point3::new(0.01, 0.02, 0.03)).collect::<Vec<_>>())
+    let Ok(hull) =
+        Ball3::from_points(&grid(&points).iter().map(|&p| p + Point3::new(0.01, 0.02, 0.03)).collect::<Vec<_>>())
     else {
         return;
     };
@@ -41,7 +42,8 @@ fuzz_target!(|input: (Vec<(i8, i8, i8)>, u8, Vec<(i8, i8, i8)>)| {
         indices.extend(f.vertices.iter().map(|&i| i as u32));
         starts.push(indices.len() as u32);
     }
-    let Ok(m) = Mesh3d::from_polygons(&v, Faces { indices: &indices, starts: &starts, lines: &[] }, &MeshOptions::default())
+    let Ok(m) =
+        Mesh3d::from_polygons(&v, Faces { indices: &indices, starts: &starts, lines: &[] }, &MeshOptions::default())
     else {
         return;
     };
