@@ -37,10 +37,32 @@ impl TriangleTree {
         let bb = BBox3::of(ball.vertices().iter().copied());
         let placed = |c: Point3, r: f64| BBox3 { min: c + bb.min * r, max: c + bb.max * r };
         let hull = placed(c0, r0).union(placed(c1, r1));
+        // A box beyond one facet plane of both end balls is beyond it for
+        // every ball between (the plane's offset is affine in t): outside
+        // the hull. Few-facet balls only: a round ball's many planes cost
+        // more than the boxes they spare.
+        let planes: Vec<(Point3, f64)> = if ball.facets().len() <= 8 {
+            ball.facets()
+                .iter()
+                .map(|f| {
+                    let reach_of = |c: Point3, r: f64| f.normal.dot(c) + f.offset * r;
+                    (f.normal, reach_of(c0, r0).max(reach_of(c1, r1)))
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
+        let slack = tol.max(1e-12 * (hull.max - hull.min).norm());
+        let beyond = |b: &BBox3| {
+            planes.iter().any(|&(n, far)| {
+                let least = |v: f64, lo: f64, hi: f64| if v >= 0.0 { v * lo } else { v * hi };
+                least(n.x, b.min.x, b.max.x) + least(n.y, b.min.y, b.max.y) + least(n.z, b.min.z, b.max.z) > far + slack
+            })
+        };
         let mut deepest: Option<(f64, usize)> = None;
         let mut hint = ReachHint::default();
         let _ = self.visit(
-            |b| b.overlaps(&hull),
+            |b| b.overlaps(&hull) && !beyond(b),
             |k| {
                 let t = self.corners(k);
                 let mut g = |s: f64| reach.triangle(c0 + (c1 - c0) * s, t, &mut hint).radius - (r0 + (r1 - r0) * s);
