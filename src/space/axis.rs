@@ -63,6 +63,13 @@ pub enum Axis3Error {
         /// The face (triangle index).
         face: u32,
     },
+    /// A cell of this face's arrangement touches opposite with an EE or
+    /// FV contact, which a convex solid cannot hold: its piece of the
+    /// axis cannot be assembled yet.
+    OppositeNotVertexFace {
+        /// The face.
+        face: u32,
+    },
     /// A face's arrangement failed.
     Arrangement {
         /// The face.
@@ -80,6 +87,9 @@ impl std::fmt::Display for Axis3Error {
             }
             Axis3Error::FaceParallelToBall { face } => {
                 write!(f, "triangle {face} is parallel to a ball edge or facet (not in general position)")
+            }
+            Axis3Error::OppositeNotVertexFace { face } => {
+                write!(f, "triangle {face}: a maximal* ball touches an edge or vertex opposite (not yet assembled)")
             }
             Axis3Error::Arrangement { face, error } => write!(f, "triangle {face}: {error}"),
         }
@@ -125,11 +135,15 @@ pub fn medial_axis_3d(mesh: &Mesh3d, ball: &Ball3) -> Result<Axis3, Axis3Error> 
         let corners = mesh.triangles()[f as usize].map(|i| mesh.positions()[i as usize]);
         let v = ball.vertices()[arr.anchor];
         for cell in &arr.cells {
-            let SurfacePart::Face(g) = cell.opposite.surface else { continue };
+            // On a convex solid every opposite class is VF; another one
+            // means the solid was not convex after all (a piece of the
+            // axis would be dropped): refused, not skipped.
+            let (Feature3::Vertex(w), SurfacePart::Face(g)) = (cell.opposite.ball, cell.opposite.surface) else {
+                return Err(Axis3Error::OppositeNotVertexFace { face: f });
+            };
             if g < f {
                 continue;
             }
-            let Feature3::Vertex(w) = cell.opposite.ball else { continue };
             let ids: Vec<u32> = cell
                 .polygon
                 .iter()
