@@ -3,17 +3,16 @@
 //! shares nothing with the library (`common::maximal_oracle`): every axis
 //! vertex is inside and its radius is the largest ball there (least gauge
 //! over every triangle); from random face points the maximal* ball's
-//! centre lies on the axis triangles (completeness); a solid with a
-//! reflex edge is refused naming it.
+//! centre lies on the axis triangles (completeness). Solids with reflex
+//! edges: `space_axis_reflex.rs`.
 
 mod common;
 
-use common::maximal_oracle::{balls, least_gauge, oracle_radius, planes, vf_anchor};
-use common::solids::l_prism;
+use common::maximal_oracle::{balls, least_gauge, oracle_radius, planes, to_triangle, vf_anchor};
 use medax::kernel::Point3;
 use medax::shape::mesh_samples::cuboid;
 use medax::shape::{Ball3, Faces, Mesh3d, MeshOptions};
-use medax::space::{medial_axis_3d, Axis3Error};
+use medax::space::medial_axis_3d;
 use rand::rngs::SmallRng;
 use rand::{Rng, SeedableRng};
 
@@ -54,24 +53,6 @@ fn convex_solids() -> Vec<(&'static str, Mesh3d)> {
         ("hull of 30 points on an ellipsoid", hull_solid(&cloud)),
         ("box", Mesh3d::from_triangles(&bv, &bt, &MeshOptions::default()).unwrap()),
     ]
-}
-
-/// Distance from `p` to triangle `t`.
-fn to_triangle(p: Point3, [a, b, c]: [Point3; 3]) -> f64 {
-    let n = (b - a).cross(c - a);
-    let h = n.dot(p - a) / n.norm2();
-    let q = p - n * h;
-    if (0..3).all(|k| {
-        let (s, e) = ([a, b, c][k], [a, b, c][(k + 1) % 3]);
-        (e - s).cross(q - s).dot(n) >= 0.0
-    }) {
-        return (p - q).norm();
-    }
-    let seg = |s: Point3, e: Point3| {
-        let u = ((p - s).dot(e - s) / (e - s).norm2()).clamp(0.0, 1.0);
-        (p - (s + (e - s) * u)).norm()
-    };
-    seg(a, b).min(seg(b, c)).min(seg(c, a))
 }
 
 #[test]
@@ -122,21 +103,5 @@ fn axis_vertices_are_largest_balls_and_every_maximal_ball_lies_on_the_axis() {
                 axis.sheets.len()
             );
         }
-    }
-}
-
-#[test]
-fn a_solid_with_a_reflex_edge_is_refused_naming_it() {
-    let (v, t) = l_prism(1.0, 0.0);
-    let m = Mesh3d::from_triangles(&v, &t, &MeshOptions::default()).unwrap();
-    match medial_axis_3d(&m, &Ball3::tetrahedron()) {
-        Err(Axis3Error::NotConvex { edge }) => {
-            let [a, b] = edge.map(|i| m.positions()[i as usize]);
-            assert!(
-                (a.x - 1.0).abs() + (a.y - 1.0).abs() + (b.x - 1.0).abs() + (b.y - 1.0).abs() < 1e-12,
-                "edge {a:?}–{b:?}"
-            );
-        }
-        other => panic!("{other:?}"),
     }
 }

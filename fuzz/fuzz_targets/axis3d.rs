@@ -1,12 +1,15 @@
 //! Convex solids from small sets of points on an integer grid (coplanar
 //! and collinear points, faces parallel to ball facets: far from general
-//! position) under the preset balls and random hulls: the 3D medial axis
-//! or a typed error, never a panic or a hang; an axis returned is sound
-//! (every vertex inside, its radius the brute-force largest ball there).
+//! position), and L-shaped prisms (a reflex edge: EE classes) with a cut
+//! corner, height and shear from the input, under the preset balls and
+//! random hulls: the 3D medial axis or a typed error, never a panic or a
+//! hang; an axis returned is sound (every vertex inside, its radius the
+//! largest ball there).
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
 use medax::kernel::Point3;
+use medax::shape::mesh_samples::l_prism;
 use medax::shape::{Ball3, Faces, Mesh3d, MeshOptions};
 use medax::space::medial_axis_3d;
 
@@ -29,6 +32,17 @@ fuzz_target!(|input: (Vec<(i8, i8, i8)>, u8, Vec<(i8, i8, i8)>)| {
             Err(_) => return,
         },
     };
+    if which & 0x80 != 0 {
+        // An L prism: the square [0, 4]² less the corner from (cx, cy),
+        // extruded to a height, sheared.
+        let q = |v: i8| 1.0 + f64::from(v.rem_euclid(24)) / 8.0;
+        let (cx, cy, h) = points.first().map_or((2.0, 2.0, 1.0), |&(x, y, z)| (q(x), q(y), q(z)));
+        let shear = points.get(1).map_or(0.0, |&(x, _, _)| f64::from(x) / 64.0);
+        let (v, t) = l_prism(4.0, [cx, cy], h, shear);
+        let Ok(m) = Mesh3d::from_triangles(&v, &t, &MeshOptions::default()) else { return };
+        check(&m, &ball);
+        return;
+    }
     // The hull of the points, as a solid.
     let Ok(hull) =
         Ball3::from_points(&grid(&points).iter().map(|&p| p + Point3::new(0.01, 0.02, 0.03)).collect::<Vec<_>>())
@@ -47,15 +61,29 @@ fuzz_target!(|input: (Vec<(i8, i8, i8)>, u8, Vec<(i8, i8, i8)>)| {
     else {
         return;
     };
-    let Ok(axis) = medial_axis_3d(&m, &ball) else { return };
+    check(&m, &ball);
+});
+
+/// The axis or a typed error; every vertex returned inside with the
+/// largest ball's radius.
+fn check(m: &Mesh3d, ball: &Ball3) {
+    let Ok(axis) = medial_axis_3d(m, ball) else { return };
     let tris: Vec<[Point3; 3]> = m.triangles().iter().map(|t| t.map(|i| m.positions()[i as usize])).collect();
     let diag = m.bbox().diagonal();
     for q in &axis.vertices {
         let c = Point3::new(q[0], q[1], q[2]);
-        for t in &tris {
-            assert!((t[1] - t[0]).cross(t[2] - t[0]).dot(c - t[0]) <= 1e-6 * diag * diag, "vertex {q:?} outside");
-        }
-        let r = m.tree().ball_radius(c, &ball).map_or(f64::NAN, |b| b.radius);
+        assert!(
+            m.tree().inside(c) != Some(false) || tris.iter().any(|t| near(c, *t, 1e-6 * diag)),
+            "vertex {q:?} outside"
+        );
+        let r = m.tree().ball_radius(c, ball).map_or(f64::NAN, |b| b.radius);
         assert!((r - q[3]).abs() <= 1e-6 * diag, "vertex {q:?}: largest ball {r}");
     }
-});
+}
+
+/// Whether `c` lies within `tol` of the plane of `t` (a vertex on the
+/// surface, where the side test may say either).
+fn near(c: Point3, t: [Point3; 3], tol: f64) -> bool {
+    let n = (t[1] - t[0]).cross(t[2] - t[0]);
+    (n.dot(c - t[0]) / n.norm()).abs() <= tol
+}

@@ -6,27 +6,49 @@
 use super::query3d::parse_ball;
 use super::{write_file, write_streamed};
 use medax::io::mesh::write_obj;
+use medax::shape::{ContactKind3, Feature3, SurfacePart};
 use medax::shape::{Mesh3d, MeshOptions};
-use medax::space::{medial_axis_3d, Axis3};
+use medax::space::{medial_axis_3d, Axis3, Opposite};
 use serde_json::json;
 use std::io::Write;
 use std::path::Path;
 use std::process::ExitCode;
 
 /// The axis JSON: vertices `[x, y, z, r]`, triangles, and the sheets with
-/// their triangles and two contact classes (ball vertex on face).
+/// their triangles and two contact classes.
 fn axis_json(axis: &Axis3) -> serde_json::Value {
     let sheets: Vec<_> = axis
         .sheets
         .iter()
         .map(|s| {
-            let classes: Vec<_> = (0..2)
-                .map(|k| json!({"kind": "VF", "ball": {"vertex": s.ball_vertices[k]}, "surface": {"face": s.faces[k]}}))
-                .collect();
+            let classes: Vec<_> = s.classes.iter().map(class_json).collect();
             json!({"kind": "sheet", "triangles": s.triangles, "classes": classes})
         })
         .collect();
     json!({"vertices": axis.vertices, "triangles": axis.triangles, "sheets": sheets})
+}
+
+/// A contact class: its kind (`VF`, `EE`, `FV`), the ball's feature
+/// (`{"vertex": i}`, `{"edge": k}`, `{"facet": f}`) and the surface's
+/// (`{"face": t}`, `{"edge": [i, j]}`, `{"vertex": i}`).
+fn class_json(c: &Opposite) -> serde_json::Value {
+    let kind = match c.kind {
+        ContactKind3::VertexFace => "VF",
+        ContactKind3::EdgeEdge => "EE",
+        ContactKind3::FaceVertex => "FV",
+        _ => "other",
+    };
+    let ball = match c.ball {
+        Feature3::Vertex(i) => json!({"vertex": i}),
+        Feature3::Edge(k) => json!({"edge": k}),
+        Feature3::Facet(f) => json!({"facet": f}),
+    };
+    let surface = match c.surface {
+        SurfacePart::Face(t) => json!({"face": t}),
+        SurfacePart::Edge(e) => json!({"edge": e}),
+        SurfacePart::Vertex(i) => json!({"vertex": i}),
+    };
+    json!({"kind": kind, "ball": ball, "surface": surface})
 }
 
 /// PLY (ASCII) with a `radius` and an RGB colour per vertex.

@@ -1,10 +1,11 @@
-//! The contact arrangement of a VF class along a segment of its domain:
-//! which class the maximal* balls anchored on the segment touch opposite,
+//! The contact arrangement of a contact domain along a segment of it (a
+//! VF class's face, an EE class's plane: [`DomainPlane`]): which class
+//! the maximal* balls anchored on the segment touch opposite,
 //! piece by piece, and where and how that changes (thesis 3.3.2.3, the
 //! one-dimensional step of Algorithms 3 and 4).
 //!
 //! The balls are `p + s·(B − ṽ)` for `p` on the segment and `ṽ` the
-//! class's ball vertex; on each piece the radius `ρ(p)` of the largest
+//! domain's representative vertex; on each piece the radius `ρ(p)` of the largest
 //! one inside the solid equals one opposite class's affine radius
 //! function ([`radius_fn`]). Where the opposite class changes from `A` to
 //! `B`, at `t*`, either `ρ` is continuous, so `ρ_A(t*) = ρ_B(t*)` for the
@@ -32,6 +33,7 @@
 //! triangle) are refused, as are segments whose samples see no ball
 //! (radius 0 or unbounded: the segment leaves the open face).
 
+use super::domain::DomainPlane;
 use super::radius::{radius_fn, RadiusFn};
 use crate::kernel::Point3;
 use crate::shape::ball::{ContactKind3, Feature3, Reach};
@@ -171,12 +173,12 @@ struct Change {
     kind: ChangeKind,
 }
 
-/// One question: the face, its anchor and the segment in the face's own
-/// parameters (`corner0 + a·(corner1 − corner0) + b·(corner2 − corner0)`).
+/// One question: the domain's plane, its anchor and the segment in the
+/// plane's coordinates.
 struct Walk<'a> {
     mesh: &'a Mesh3d,
     reach: &'a Reach<'a>,
-    corners: [Point3; 3],
+    plane: DomainPlane,
     anchor: usize,
     from: (f64, f64),
     to: (f64, f64),
@@ -188,9 +190,7 @@ impl Walk<'_> {
     }
 
     fn point(&self, t: f64) -> Point3 {
-        let (a, b) = self.params(t);
-        let [c0, c1, c2] = self.corners;
-        c0 + (c1 - c0) * a + (c2 - c0) * b
+        self.plane.point(self.params(t))
     }
 
     /// The maximal* ball at `t` and its opposite class, exactly:
@@ -198,9 +198,8 @@ impl Walk<'_> {
     /// non-regular one (a change lies exactly there).
     fn sample_exactly_at(&self, t: f64) -> Result<Option<Sample>, AlongError> {
         let got = self
-            .mesh
-            .tree()
-            .maximal_ball_exact_on(self.corners, self.params(t), self.anchor, self.reach)
+            .plane
+            .maximal_ball(self.mesh, self.params(t), self.anchor, self.reach)
             .ok_or(AlongError::NoBall { at: t })?;
         if !(got.radius > 0.0 && got.radius.is_finite()) {
             return Err(AlongError::NoBall { at: t });
@@ -239,9 +238,9 @@ impl Walk<'_> {
         self.mesh.tree().enters_hull((a.centre, a.radius), (b.centre, b.radius), self.reach, tol).is_none()
     }
 
-    fn radius_of(&self, c: Opposite) -> Result<RadiusFn, AlongError> {
-        radius_fn(self.mesh, self.reach.ball(), self.anchor, c.ball, c.surface)
-            .ok_or(AlongError::NotGeneral { at: 0.0 })
+    /// The radius function of class `c`, seen at `at` (for the error).
+    fn radius_of(&self, c: Opposite, at: f64) -> Result<RadiusFn, AlongError> {
+        radius_fn(self.mesh, self.reach.ball(), self.anchor, c.ball, c.surface).ok_or(AlongError::NotGeneral { at })
     }
 
     /// The changes strictly between samples `a` and `b`, appended in
@@ -280,7 +279,7 @@ impl Walk<'_> {
         b: &Sample,
     ) -> Result<Option<(Sample, ChangeKind, f64, Sample)>, AlongError> {
         let (t0, t1) = (a.t, b.t);
-        let (fa, fb) = (self.radius_of(a.class)?, self.radius_of(b.class)?);
+        let (fa, fb) = (self.radius_of(a.class, a.t)?, self.radius_of(b.class, b.t)?);
         let same = self.same_function(&fa, &fb);
         // Where the radius is continuous, the change lies where the two
         // lines meet; where it jumps, where one of the two contacts
@@ -377,15 +376,41 @@ pub fn opposite_along(
     from: (f64, f64),
     to: (f64, f64),
 ) -> Result<Along, AlongError> {
-    let tri = *mesh.triangles().get(face as usize).ok_or(AlongError::NoClass)?;
-    let ball = reach.ball();
-    let corners = tri.map(|i| mesh.positions()[i as usize]);
+    let plane = vf_plane(mesh, reach, face, anchor)?;
+    opposite_along_in(mesh, reach, &plane, anchor, from, to)
+}
+
+/// The plane of the VF class `(anchor, face)`: its face's. `NoClass` when
+/// the face or the vertex does not exist, or the vertex is not the one
+/// farthest along the face's outward normal.
+pub(crate) fn vf_plane(mesh: &Mesh3d, reach: &Reach<'_>, face: u32, anchor: usize) -> Result<DomainPlane, AlongError> {
+    let plane = DomainPlane::of_face(mesh, face).ok_or(AlongError::NoClass)?;
+    let corners = plane.face.ok_or(AlongError::NoClass)?;
     let n = (corners[1] - corners[0]).cross(corners[2] - corners[0]);
-    let w = ball.vertices();
+    let w = reach.ball().vertices();
     if anchor >= w.len() || w.iter().any(|&x| n.dot(x - w[anchor]) > 0.0) {
         return Err(AlongError::NoClass);
     }
-    let walk = Walk { mesh, reach, corners, anchor, from, to };
+    Ok(plane)
+}
+
+/// The opposite classes of the maximal* balls anchored at ball vertex
+/// `anchor` along the segment from `from` to `to` of a contact domain's
+/// plane (points in its coordinates, both ends inside the domain: every
+/// ball there has a positive finite radius).
+///
+/// # Errors
+///
+/// As [`opposite_along`], less the check of the class.
+pub fn opposite_along_in(
+    mesh: &Mesh3d,
+    reach: &Reach<'_>,
+    plane: &DomainPlane,
+    anchor: usize,
+    from: (f64, f64),
+    to: (f64, f64),
+) -> Result<Along, AlongError> {
+    let walk = Walk { mesh, reach, plane: *plane, anchor, from, to };
     let ts: Vec<f64> = (0..=SAMPLES).map(|k| k as f64 / SAMPLES as f64).collect();
     let mut seen = Vec::with_capacity(ts.len());
     for (k, &t) in ts.iter().enumerate() {
@@ -400,12 +425,12 @@ pub fn opposite_along(
     let mut start = (0.0, seen[0].class);
     let mut out_changes = Vec::with_capacity(changes.len());
     for &Change { at: t, next, kind } in &changes {
-        let radius = walk.radius_of(start.1)?;
+        let radius = walk.radius_of(start.1, start.0)?;
         let p = walk.point(t);
         out_changes.push(AlongChange { at: t, point: p, radius: radius.at(p), kind });
         pieces.push(AlongPiece { from: start.0, to: t, opposite: start.1, radius });
         start = (t, next);
     }
-    pieces.push(AlongPiece { from: start.0, to: 1.0, opposite: start.1, radius: walk.radius_of(start.1)? });
+    pieces.push(AlongPiece { from: start.0, to: 1.0, opposite: start.1, radius: walk.radius_of(start.1, start.0)? });
     Ok(Along { pieces, changes: out_changes })
 }

@@ -1,11 +1,13 @@
-//! The contact arrangement of a VF class (thesis 3.3.2.4, Algorithm 7
-//! `arrang`): its domain, the face itself, split into cells on each of
-//! which the maximal* balls anchored there touch one opposite class.
+//! The contact arrangement of a contact domain (thesis 3.3.2.4,
+//! Algorithm 7 `arrang`): a convex region of it split into cells on each
+//! of which the maximal* balls anchored there touch one opposite class.
+//! A VF class's domain is its face ([`face_arrangement`]); an EE class's
+//! is cut into trapezoids first (`edge_domain`).
 //!
-//! A stack of convex subdomains starts with the face. For a subdomain,
+//! A stack of convex subdomains starts with the region. For a subdomain,
 //! each edge moved a hair inside (the thesis's `e^D`, so that no sample
 //! lies on the projection line the edge came from) is walked by
-//! [`opposite_along`]; the first change found gives a projection line
+//! [`opposite_along_in`]; the first change found gives a projection line
 //! (where the two radius functions tie, or where a contact stops
 //! holding), and the subdomain is cut by it into two convex ones. A
 //! subdomain whose edges are all crossing-free is one cell: for a solid
@@ -13,13 +15,14 @@
 //! (Property 3). With cavities an island of another class could hide
 //! inside a cell; the sample at each cell's centroid is checked too.
 //!
-//! Points are the face's own parameters `(a, b)`:
-//! `corner0 + a·(corner1 − corner0) + b·(corner2 − corner0)`. The cells
-//! are `f64` polygons; their classes are decided exactly at samples.
+//! Points are the domain plane's coordinates `(a, b)` (for a face its own
+//! parameters: `corner0 + a·(corner1 − corner0) + b·(corner2 − corner0)`).
+//! The cells are `f64` polygons; their classes are decided exactly at
+//! samples.
 
-use super::along::{opposite_along, AlongError, ChangeKind, Opposite};
+use super::along::{opposite_along_in, vf_plane, AlongError, ChangeKind, Opposite};
+use super::domain::{DomainPlane, Line2};
 use super::radius::{radius_fn, Affine3, RadiusFn};
-use crate::kernel::Point3;
 use crate::shape::ball::Reach;
 use crate::shape::Mesh3d;
 
@@ -57,30 +60,11 @@ pub struct FaceArrangement {
     pub cells: Vec<Cell>,
 }
 
-/// A projection line in the face's parameters: `F(a, b) = 0`, `F` affine.
-#[derive(Debug, Clone, Copy)]
-struct Line2 {
-    ca: f64,
-    cb: f64,
-    c0: f64,
-}
-
-impl Line2 {
-    fn at(&self, (a, b): (f64, f64)) -> f64 {
-        self.ca * a + self.cb * b + self.c0
-    }
-}
-
-/// `f` (a function of space) on the face's plane, in its parameters.
-fn on_face(f: &Affine3, [c0, c1, c2]: [Point3; 3]) -> Line2 {
-    Line2 { ca: f.grad.dot(c1 - c0), cb: f.grad.dot(c2 - c0), c0: f.at(c0) }
-}
-
 /// The contact arrangement of the VF class `(anchor, face)`.
 ///
 /// # Errors
 ///
-/// As [`opposite_along`]; [`AlongError::Unresolved`] when the cutting
+/// As [`opposite_along_in`]; [`AlongError::Unresolved`] when the cutting
 /// runs away or a subdomain's edges disagree with no line to cut by.
 pub fn face_arrangement(
     mesh: &Mesh3d,
@@ -88,14 +72,31 @@ pub fn face_arrangement(
     face: u32,
     anchor: usize,
 ) -> Result<FaceArrangement, AlongError> {
-    let tri = *mesh.triangles().get(face as usize).ok_or(AlongError::NoClass)?;
-    let corners = tri.map(|i| mesh.positions()[i as usize]);
-    let domain = inset(&[(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)]);
-    let mut stack = vec![domain];
+    let plane = vf_plane(mesh, reach, face, anchor)?;
+    let cells = domain_arrangement(mesh, reach, &plane, anchor, &inset(&[(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)]))?;
+    Ok(FaceArrangement { face, anchor, cells })
+}
+
+/// The cells of a convex region `start` (counter-clockwise, in `plane`'s
+/// coordinates) of a contact domain whose balls are anchored at ball
+/// vertex `anchor`: the region cut by projection lines until each part
+/// has one opposite class.
+///
+/// # Errors
+///
+/// As [`face_arrangement`].
+pub fn domain_arrangement(
+    mesh: &Mesh3d,
+    reach: &Reach<'_>,
+    plane: &DomainPlane,
+    anchor: usize,
+    start: &[(f64, f64)],
+) -> Result<Vec<Cell>, AlongError> {
+    let mut stack = vec![start.to_vec()];
     let mut cells = Vec::new();
     let mut cuts = 0;
     while let Some(d) = stack.pop() {
-        match cut_of(mesh, reach, face, anchor, corners, &d)? {
+        match cut_of(mesh, reach, plane, anchor, &d)? {
             Cut::Line(line) => {
                 cuts += 1;
                 if cuts > MAX_CUTS {
@@ -112,7 +113,7 @@ pub fn face_arrangement(
             }
         }
     }
-    Ok(FaceArrangement { face, anchor, cells })
+    Ok(cells)
 }
 
 /// What a subdomain needs: a cut, or nothing (a cell of this class).
@@ -126,9 +127,8 @@ enum Cut {
 fn cut_of(
     mesh: &Mesh3d,
     reach: &Reach<'_>,
-    face: u32,
+    plane: &DomainPlane,
     anchor: usize,
-    corners: [Point3; 3],
     d: &[(f64, f64)],
 ) -> Result<Cut, AlongError> {
     let inner = inset(d);
@@ -141,7 +141,7 @@ fn cut_of(
         // An edge passing a hair from a junction's projection may hold
         // changes too close to separate: the other edges may still give
         // a cut, after which that edge is gone.
-        let along = match opposite_along(mesh, reach, face, anchor, from, to) {
+        let along = match opposite_along_in(mesh, reach, plane, anchor, from, to) {
             Ok(a) => a,
             Err(e @ AlongError::Unresolved { .. }) => {
                 unresolved = Some(e);
@@ -152,26 +152,54 @@ fn cut_of(
         for (i, change) in along.changes.iter().enumerate() {
             let (left, right) = (&along.pieces[i], &along.pieces[i + 1]);
             let p = change.point;
-            let f = match change.kind {
-                ChangeKind::Tie => Affine3 {
-                    grad: left.radius.radius.grad - right.radius.radius.grad,
-                    at0: left.radius.radius.at0 - right.radius.radius.at0,
-                },
-                // The condition of the contact that ends or starts there.
-                _ => {
-                    let ending = if left.radius.margin(p).abs() <= right.radius.margin(p).abs() {
-                        &left.radius
-                    } else {
-                        &right.radius
-                    };
-                    *ending.holds.iter().min_by(|g, h| g.at(p).abs().total_cmp(&h.at(p).abs())).expect("conditions")
-                }
+            let tie = Affine3 {
+                grad: left.radius.radius.grad - right.radius.radius.grad,
+                at0: left.radius.radius.at0 - right.radius.radius.at0,
             };
-            let line = on_face(&f, corners);
-            let values: Vec<f64> = d.iter().map(|&q| line.at(q)).collect();
-            let scale = (line.ca.abs() + line.cb.abs()) * size * 1e-9;
-            if values.iter().any(|&v| v > scale) && values.iter().any(|&v| v < -scale) {
-                return Ok(Cut::Line(line));
+            // Where the radius functions meet (a tie), or the condition of
+            // the contact that ends or starts there: one that holds inside
+            // its own piece and fails inside the other, crossing 0 nearest
+            // the change. The condition least in magnitude there can be
+            // another line through a nearby corner along which the walk
+            // runs a hair inside; then the two radii also meet at the
+            // change, and their tie is the line.
+            let mut candidates = Vec::with_capacity(4);
+            if change.kind == ChangeKind::Tie {
+                candidates.push(tie);
+            } else {
+                let at = |t: f64| plane.point((from.0 + t * (to.0 - from.0), from.1 + t * (to.1 - from.1)));
+                let (t_in, t_out) = (0.5 * (left.from + left.to), 0.5 * (right.from + right.to));
+                let (p_in, p_out) = (at(t_in), at(t_out));
+                let crossing = |g: &Affine3, own_first: bool| {
+                    let (a, b) = (g.at(p_in), g.at(p_out));
+                    let (mine, other) = if own_first { (a, b) } else { (b, a) };
+                    (mine >= 0.0 && other < 0.0)
+                        .then(|| ((t_in + (t_out - t_in) * (a / (a - b)) - change.at).abs(), *g))
+                };
+                let mut crossings: Vec<(f64, Affine3)> = left
+                    .radius
+                    .holds
+                    .iter()
+                    .filter_map(|g| crossing(g, true))
+                    .chain(right.radius.holds.iter().filter_map(|g| crossing(g, false)))
+                    .collect();
+                crossings.sort_by(|x, y| x.0.total_cmp(&y.0));
+                candidates.extend(crossings.into_iter().map(|x| x.1));
+                candidates.push(tie);
+                let ending = if left.radius.margin(p).abs() <= right.radius.margin(p).abs() {
+                    &left.radius
+                } else {
+                    &right.radius
+                };
+                candidates.extend(ending.holds.iter().min_by(|g, h| g.at(p).abs().total_cmp(&h.at(p).abs())));
+            }
+            for f in candidates {
+                let line = plane.line(&f);
+                let values: Vec<f64> = d.iter().map(|&q| line.at(q)).collect();
+                let scale = (line.ca.abs() + line.cb.abs()) * size * 1e-9;
+                if values.iter().any(|&v| v > scale) && values.iter().any(|&v| v < -scale) {
+                    return Ok(Cut::Line(line));
+                }
             }
         }
         for piece in &along.pieces {
@@ -185,7 +213,7 @@ fn cut_of(
     // Every edge crossing-free: one class all round, and (with cavities
     // an island could hide inside) at the centroid too.
     let g = centroid(d);
-    let there = mesh.tree().maximal_ball_exact_on(corners, g, anchor, reach);
+    let there = plane.maximal_ball(mesh, g, anchor, reach);
     let at_centre = there.as_ref().and_then(|b| match b.opposite.as_slice() {
         [c] => Some(Opposite { ball: c.ball, surface: c.surface, kind: c.kind }),
         _ => None,
@@ -197,7 +225,7 @@ fn cut_of(
 }
 
 /// The polygon moved toward its centroid by [`INSET`] of the way.
-fn inset(d: &[(f64, f64)]) -> Vec<(f64, f64)> {
+pub(crate) fn inset(d: &[(f64, f64)]) -> Vec<(f64, f64)> {
     let g = centroid(d);
     d.iter().map(|&(a, b)| (a + (g.0 - a) * INSET, b + (g.1 - b) * INSET)).collect()
 }

@@ -1,36 +1,44 @@
-//! The medial axis of a convex solid under a polyhedral ball, assembled
-//! from the contact arrangements of its VF classes (thesis 3.3.3.1).
+//! The medial axis of a solid under a polyhedral ball, assembled from the
+//! contact arrangements of its regular classes (thesis 3.3.3.1).
 //!
-//! On a convex solid every contact class is VF (no reflex edge or vertex
-//! admits EE or FV, thesis 3.1.2), one per face. A cell of face `f`'s
-//! arrangement with opposite class `(w̃, g)` is the projection of a piece
-//! of the sheet of the classes of `f` and `g`: the map from a point `p` of
-//! the cell to the centre `p − ρ(p)·ṽ` of its maximal* ball is affine
-//! (`ρ` is the cell's radius function), so the piece is the cell's
-//! polygon mapped corner by corner, a planar convex polygon, fanned into
-//! triangles. Each sheet projects into both of its classes' arrangements;
-//! it is taken from the face with the lesser index. Corners shared by
-//! neighbouring pieces are welded within 10^-9 of the solid's size.
+//! Every face is a VF class's domain, every EE class (a ball edge at a
+//! reflex edge) has the domain of `edge_domain`. A cell of a domain with
+//! opposite class `C'` is the projection of a piece of the sheet of the
+//! two classes: the map from a point `p` of the cell to the centre
+//! `p − ρ(p)·ṽ` of its maximal* ball is affine (`ρ` is the cell's radius
+//! function, `ṽ` the domain's anchor), so the piece is the cell's polygon
+//! mapped corner by corner, a planar convex polygon, fanned into
+//! triangles. Each sheet projects into the domains of both its classes;
+//! where the other class's ball feature holds the domain's representative
+//! vertex it collapses to a line there (a jump sheet: a ball vertex on a
+//! face and an edge through it on a reflex edge), so an EE class has a
+//! domain for each end of its ball edge, and a sheet is taken from the
+//! least domain (VF before EE, then by features and representative
+//! vertex) where it is two-dimensional. Corners shared by neighbouring pieces are welded within
+//! 10^-9 of the solid's size.
 //!
-//! Solids with reflex edges need the EE and FV domains (3.3.2.2.3–4),
-//! not built yet: they are refused, naming a reflex edge.
+//! FV classes (a ball facet on a vertex with reflex edges and no convex
+//! one: the exterior is locally convex there) need the domains of 3.3.2.2.4, not
+//! built yet: such solids are refused, naming the vertex.
 
-use super::arrangement::face_arrangement;
+use super::along::{AlongError, Opposite};
+use super::arrangement::{face_arrangement, Cell};
 use super::classes::contact_classes;
-use super::AlongError;
+use super::domain::DomainPlane;
+use super::edge_domain::edge_arrangement;
+use super::radius::radius_fn;
 use crate::kernel::Point3;
-use crate::shape::ball::{Ball3, Feature3};
+use crate::shape::ball::{Ball3, ContactKind3, Feature3};
 use crate::shape::{Mesh3d, SurfacePart};
 use crate::util::fast_hash::FastMap;
 
 /// A sheet of the axis: the centres of the maximal* balls touching two
-/// contact classes (here two VF classes: a ball vertex on a face each).
+/// contact classes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Sheet3 {
-    /// The faces of its two classes, the lesser first.
-    pub faces: [u32; 2],
-    /// The ball vertices touching them, in the same order.
-    pub ball_vertices: [usize; 2],
+    /// Its two classes, the lesser first (VF before EE; then by ball
+    /// feature and surface feature).
+    pub classes: [Opposite; 2],
     /// Its triangles, indices into [`Axis3::triangles`].
     pub triangles: Vec<u32>,
 }
@@ -51,11 +59,12 @@ pub struct Axis3 {
 /// Why a solid's axis was not computed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Axis3Error {
-    /// The solid has a reflex edge (its ends): only convex solids are
-    /// handled so far.
-    NotConvex {
-        /// The edge's vertices, the lesser first.
-        edge: [u32; 2],
+    /// This vertex has a reflex edge and no convex one (the exterior is
+    /// locally convex there: a ball facet can touch it, an FV contact,
+    /// whose domains are not built yet).
+    ReflexVertex {
+        /// The vertex.
+        vertex: u32,
     },
     /// A ball edge or facet is parallel to this face (its VF class is not
     /// one vertex): outside general position.
@@ -63,17 +72,31 @@ pub enum Axis3Error {
         /// The face (triangle index).
         face: u32,
     },
-    /// A cell of this face's arrangement touches opposite with an EE or
-    /// FV contact, which a convex solid cannot hold: its piece of the
-    /// axis cannot be assembled yet.
-    OppositeNotVertexFace {
-        /// The face.
-        face: u32,
+    /// A ball edge's fan of normals touches this reflex edge's at an end
+    /// (a ball facet parallel to one of its faces): outside general
+    /// position.
+    EdgeParallelToBall {
+        /// The edge's vertices, the lesser first.
+        edge: [u32; 2],
     },
-    /// A face's arrangement failed.
+    /// The solid has reflex edges and this ball facet's corners are not
+    /// exactly coplanar (a turned ball with facets of more than three
+    /// corners): a ball edge sliding along a reflex edge would not lie
+    /// exactly on the wall of its cone.
+    BallFacetNotPlanar {
+        /// The ball facet.
+        facet: usize,
+    },
+    /// A maximal* ball touches opposite with an FV contact, whose domain
+    /// is not built: its sheets cannot be assembled yet.
+    OppositeFaceVertex {
+        /// The surface vertex touched.
+        vertex: u32,
+    },
+    /// A domain's arrangement failed.
     Arrangement {
-        /// The face.
-        face: u32,
+        /// Its class.
+        class: Opposite,
         /// Why.
         error: AlongError,
     },
@@ -82,33 +105,90 @@ pub enum Axis3Error {
 impl std::fmt::Display for Axis3Error {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            Axis3Error::NotConvex { edge } => {
-                write!(f, "edge {}–{} is reflex: only convex solids are handled so far", edge[0], edge[1])
-            }
+            Axis3Error::ReflexVertex { vertex } => write!(
+                f,
+                "vertex {vertex} has reflex edges and no convex one (a ball facet could touch it: FV contacts are not handled yet)"
+            ),
             Axis3Error::FaceParallelToBall { face } => {
                 write!(f, "triangle {face} is parallel to a ball edge or facet (not in general position)")
             }
-            Axis3Error::OppositeNotVertexFace { face } => {
-                write!(f, "triangle {face}: a maximal* ball touches an edge or vertex opposite (not yet assembled)")
+            Axis3Error::EdgeParallelToBall { edge } => {
+                write!(f, "reflex edge {}–{} is parallel to a ball facet (not in general position)", edge[0], edge[1])
             }
-            Axis3Error::Arrangement { face, error } => write!(f, "triangle {face}: {error}"),
+            Axis3Error::BallFacetNotPlanar { facet } => write!(
+                f,
+                "ball facet {facet} is not exactly planar (a turned ball?), and the solid has reflex edges: use a ball of triangles (the hull of its points)"
+            ),
+            Axis3Error::OppositeFaceVertex { vertex } => {
+                write!(f, "a maximal* ball touches vertex {vertex} with a facet (FV contacts are not handled yet)")
+            }
+            Axis3Error::Arrangement { class, error } => match (class.ball, class.surface) {
+                (_, SurfacePart::Face(t)) => write!(f, "triangle {t}: {error}"),
+                (Feature3::Edge(k), SurfacePart::Edge(e)) => {
+                    write!(f, "reflex edge {}–{} with ball edge {k}: {error}", e[0], e[1])
+                }
+                _ => write!(f, "{error}"),
+            },
         }
     }
 }
 
 impl std::error::Error for Axis3Error {}
 
-/// The medial axis of the convex solid `mesh` under `ball` (thesis 3.3).
+/// One domain's arrangement with what maps it to the axis.
+struct Domain {
+    own: Opposite,
+    plane: DomainPlane,
+    anchor_index: usize,
+    anchor: Point3,
+    cells: Vec<Cell>,
+}
+
+/// The domain a sheet of classes `a` and `b` is taken from: the least
+/// (class, representative vertex) among the domains of `a` and `b` in
+/// which it is two-dimensional (the anchored balls reach the other class
+/// by growing: the representative vertex is not on its ball feature). A
+/// VF class has one domain (its vertex); an EE class one per end of its
+/// ball edge. `None` when none is (not a sheet of these two alone).
+fn sheet_domain(mesh: &Mesh3d, ball: &Ball3, a: Opposite, b: Opposite) -> Option<(Opposite, usize)> {
+    let anchors = |c: Opposite| -> Vec<usize> {
+        match c.ball {
+            Feature3::Vertex(v) => vec![v],
+            Feature3::Edge(k) => ball.edges().get(k).map_or(Vec::new(), |e| e.vertices.to_vec()),
+            Feature3::Facet(_) => Vec::new(),
+        }
+    };
+    let mut best: Option<(Opposite, usize)> = None;
+    for (own, other) in [(a, b), (b, a)] {
+        for v in anchors(own) {
+            if radius_fn(mesh, ball, v, other.ball, other.surface).is_some() {
+                best = Some(best.map_or((own, v), |x| x.min((own, v))));
+            }
+        }
+    }
+    best
+}
+
+/// The medial axis of the solid `mesh` under `ball` (thesis 3.3), for
+/// solids whose regular classes are VF and EE (no vertex with reflex
+/// edges and no convex one).
 ///
 /// # Errors
 ///
-/// [`Axis3Error`]: a reflex edge, a face parallel to a ball edge or
-/// facet, a face's arrangement failing (see [`AlongError`]).
+/// [`Axis3Error`]: a vertex with reflex edges and no convex one, a ball
+/// facet not exactly planar (with reflex edges), a face or reflex edge
+/// parallel to a ball feature, a domain's arrangement failing (see
+/// [`AlongError`]).
 pub fn medial_axis_3d(mesh: &Mesh3d, ball: &Ball3) -> Result<Axis3, Axis3Error> {
     use rayon::prelude::*;
     let classes = contact_classes(mesh, ball);
-    if let Some(&edge) = classes.reflex_edges.first() {
-        return Err(Axis3Error::NotConvex { edge });
+    if let Some(vertex) = fully_reflex_vertex(mesh, &classes.reflex_edges, &classes.convex_edges) {
+        return Err(Axis3Error::ReflexVertex { vertex });
+    }
+    if !classes.reflex_edges.is_empty() {
+        if let Some(facet) = ball.non_planar_facet() {
+            return Err(Axis3Error::BallFacetNotPlanar { facet });
+        }
     }
     let mut anchor = vec![usize::MAX; mesh.triangles().len()];
     for c in &classes.vertex_face {
@@ -119,42 +199,61 @@ pub fn medial_axis_3d(mesh: &Mesh3d, ball: &Ball3) -> Result<Axis3, Axis3Error> 
             anchor[t as usize] = v;
         }
     }
+    if let Some(c) = classes.edge_edge.iter().find(|c| c.tie) {
+        if let SurfacePart::Edge(edge) = c.surface {
+            return Err(Axis3Error::EdgeParallelToBall { edge });
+        }
+    }
     let reach = ball.reach();
-    let arrangements: Vec<_> = (0..mesh.triangles().len() as u32)
-        .into_par_iter()
-        .map(|f| {
-            face_arrangement(mesh, &reach, f, anchor[f as usize])
-                .map_err(|error| Axis3Error::Arrangement { face: f, error })
-        })
-        .collect::<Result<_, _>>()?;
+    let w = ball.vertices();
+    let faces = (0..mesh.triangles().len() as u32).into_par_iter().map(|f| {
+        let own = Opposite {
+            ball: Feature3::Vertex(anchor[f as usize]),
+            surface: SurfacePart::Face(f),
+            kind: ContactKind3::VertexFace,
+        };
+        let failed = |error| Axis3Error::Arrangement { class: own, error };
+        let arr = face_arrangement(mesh, &reach, f, anchor[f as usize]).map_err(failed)?;
+        let plane = DomainPlane::of_face(mesh, f).ok_or(failed(AlongError::NoClass))?;
+        Ok(Domain { own, plane, anchor_index: arr.anchor, anchor: w[arr.anchor], cells: arr.cells })
+    });
+    let edge_ends: Vec<_> = classes.edge_edge.iter().flat_map(|c| [(c, 0), (c, 1)]).collect();
+    let edges = edge_ends.par_iter().map(|&(c, end)| {
+        let own = Opposite { ball: c.ball, surface: c.surface, kind: ContactKind3::EdgeEdge };
+        let failed = |error| Axis3Error::Arrangement { class: own, error };
+        let (Feature3::Edge(k), SurfacePart::Edge(e)) = (c.ball, c.surface) else {
+            return Err(failed(AlongError::NoClass));
+        };
+        let arr = edge_arrangement(mesh, &reach, e, k, end).map_err(failed)?;
+        Ok(Domain { own, plane: arr.plane, anchor_index: arr.anchor, anchor: w[arr.anchor], cells: arr.cells })
+    });
+    let domains: Vec<Domain> = faces.chain(edges).collect::<Result<_, _>>()?;
     let mut out = Axis3::default();
     let mut weld = Weld::new(mesh.bbox().diagonal() * 1e-9);
-    let mut sheet_of: FastMap<(u32, u32), usize> = FastMap::default();
-    for arr in &arrangements {
-        let f = arr.face;
-        let corners = mesh.triangles()[f as usize].map(|i| mesh.positions()[i as usize]);
-        let v = ball.vertices()[arr.anchor];
-        for cell in &arr.cells {
-            // On a convex solid every opposite class is VF; another one
-            // means the solid was not convex after all (a piece of the
-            // axis would be dropped): refused, not skipped.
-            let (Feature3::Vertex(w), SurfacePart::Face(g)) = (cell.opposite.ball, cell.opposite.surface) else {
-                return Err(Axis3Error::OppositeNotVertexFace { face: f });
-            };
-            if g < f {
+    let mut sheet_of: FastMap<(Opposite, Opposite), usize> = FastMap::default();
+    for d in &domains {
+        for cell in &d.cells {
+            let other = cell.opposite;
+            if let (ContactKind3::FaceVertex, SurfacePart::Vertex(vertex)) = (other.kind, other.surface) {
+                return Err(Axis3Error::OppositeFaceVertex { vertex });
+            }
+            // Each sheet once: from the least domain where it is
+            // two-dimensional.
+            if sheet_domain(mesh, ball, d.own, other) != Some((d.own, d.anchor_index)) {
                 continue;
             }
             let ids: Vec<u32> = cell
                 .polygon
                 .iter()
-                .map(|&(a, b)| {
-                    let p = corners[0] + (corners[1] - corners[0]) * a + (corners[2] - corners[0]) * b;
+                .map(|&q| {
+                    let p = d.plane.point(q);
                     let r = cell.radius.at(p);
-                    weld.id(p - v * r, r, &mut out.vertices)
+                    weld.id(p - d.anchor * r, r, &mut out.vertices)
                 })
                 .collect();
-            let s = *sheet_of.entry((f, g)).or_insert_with(|| {
-                out.sheets.push(Sheet3 { faces: [f, g], ball_vertices: [arr.anchor, w], triangles: Vec::new() });
+            let key = (d.own.min(other), d.own.max(other));
+            let s = *sheet_of.entry(key).or_insert_with(|| {
+                out.sheets.push(Sheet3 { classes: [key.0, key.1], triangles: Vec::new() });
                 out.sheets.len() - 1
             });
             for k in 1..ids.len().saturating_sub(1) {
@@ -167,6 +266,20 @@ pub fn medial_axis_3d(mesh: &Mesh3d, ball: &Ball3) -> Result<Axis3, Axis3Error> 
         }
     }
     Ok(out)
+}
+
+/// A vertex with a reflex edge and no convex one (its other edges flat:
+/// the exterior is locally convex there), if any: the lowest.
+fn fully_reflex_vertex(mesh: &Mesh3d, reflex: &[[u32; 2]], convex: &[[u32; 2]]) -> Option<u32> {
+    let n = mesh.positions().len();
+    let (mut has_reflex, mut has_convex) = (vec![false; n], vec![false; n]);
+    for e in reflex {
+        e.iter().for_each(|&i| has_reflex[i as usize] = true);
+    }
+    for e in convex {
+        e.iter().for_each(|&i| has_convex[i as usize] = true);
+    }
+    (0..n).find(|&i| has_reflex[i] && !has_convex[i]).map(|i| i as u32)
 }
 
 /// Vertices welded within a distance: a grid of cells that wide, each

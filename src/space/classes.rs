@@ -73,6 +73,8 @@ pub struct ContactClasses {
     pub edge_edge: Vec<ContactClass>,
     /// The reflex edges of the surface (ends, lesser first), sorted.
     pub reflex_edges: Vec<[u32; 2]>,
+    /// The convex edges (ends, lesser first), sorted; the rest are flat.
+    pub convex_edges: Vec<[u32; 2]>,
 }
 
 impl ContactClasses {
@@ -115,11 +117,15 @@ pub fn contact_classes(mesh: &Mesh3d, ball: &Ball3) -> ContactClasses {
         let (t1, k1, t2, k2) = (h / 3, h % 3, twin / 3, twin % 3);
         let (a, b) = (tris[t1][k1], tris[t1][(k1 + 1) % 3]);
         let other = p[tris[t2][(k2 + 2) % 3] as usize];
-        if !reflex(corners(t1), other) {
-            continue;
-        }
         let edge = [a.min(b), a.max(b)];
-        out.reflex_edges.push(edge);
+        match turn(corners(t1), other) {
+            Ordering::Less => {
+                out.convex_edges.push(edge);
+                continue;
+            }
+            Ordering::Equal => continue,
+            Ordering::Greater => out.reflex_edges.push(edge),
+        }
         for (k, e) in ball.edges().iter().enumerate() {
             let fans = [e.facets[0], e.facets[1]].map(|f| facet_corners(ball, f));
             if let Some(tie) = fans_cross(fans, [corners(t1), corners(t2)]) {
@@ -133,6 +139,7 @@ pub fn contact_classes(mesh: &Mesh3d, ball: &Ball3) -> ContactClasses {
         }
     }
     out.reflex_edges.sort_unstable();
+    out.convex_edges.sort_unstable();
     out.edge_edge.sort_by_key(|c| (c.surface, c.ball));
     out
 }
@@ -222,11 +229,11 @@ fn top_vertices(ball: &Ball3, around: &[Vec<usize>], t: [Point3; 3], start: usiz
     (tops, tie)
 }
 
-/// Whether the edge shared by triangle `t` and another triangle whose
-/// third corner is `other` is reflex: `other` lies strictly on the outer
-/// side of `t`'s plane (coplanar triangles make no edge).
-fn reflex(t: [Point3; 3], other: Point3) -> bool {
-    sign_of(&[t[0], t[1], t[2], other], &Along { t, from: t[0], to: other }) == Ordering::Greater
+/// How the edge shared by triangle `t` and another triangle whose third
+/// corner is `other` turns: reflex (`Greater`: `other` lies strictly on
+/// the outer side of `t`'s plane), convex (`Less`) or flat (`Equal`).
+fn turn(t: [Point3; 3], other: Point3) -> Ordering {
+    sign_of(&[t[0], t[1], t[2], other], &Along { t, from: t[0], to: other })
 }
 
 /// A triple product `det(u, v, w)` of the normals `a, b` (two ball

@@ -9,22 +9,31 @@
 //! * [`radius`]: the radius at which a maximal* ball anchored at a point
 //!   of a contact domain reaches a given class: affine in the point, on
 //!   the convex region where that contact holds.
-//! * [`along`]: the contact arrangement of a VF class along a segment of
-//!   its domain (the opposite classes piece by piece, and where they
+//! * [`domain`]: a contact domain's plane, with coordinates in which its
+//!   points are taken exactly.
+//! * [`along`]: the contact arrangement along a segment of a contact
+//!   domain (the opposite classes piece by piece, and where they
 //!   change: ties, handovers, flat continuations, jumps).
-//! * [`arrangement`]: the contact arrangement of a VF class, its face cut
-//!   by projection lines into cells of one opposite class each.
-//! * [`axis`]: the medial axis of a convex solid assembled from its faces'
+//! * [`arrangement`]: the contact arrangement of a convex region of a
+//!   domain (a VF class's face), cut by projection lines into cells of one
+//!   opposite class each.
+//! * [`edge_domain`]: the contact domain of an EE class (between its
+//!   reflex edge and the VE balls' polygonal line) and its arrangement.
+//! * [`axis`]: the medial axis of a solid assembled from its domains'
 //!   arrangements, a triangle mesh of sheets with radii.
 
 pub mod along;
 pub mod arrangement;
 pub mod axis;
 pub mod classes;
+pub mod domain;
+pub mod edge_domain;
 pub mod radius;
 
-pub use along::{opposite_along, Along, AlongChange, AlongError, AlongPiece, ChangeKind, Opposite};
-pub use arrangement::{face_arrangement, Cell, FaceArrangement};
+pub use along::{opposite_along, opposite_along_in, Along, AlongChange, AlongError, AlongPiece, ChangeKind, Opposite};
+pub use arrangement::{domain_arrangement, face_arrangement, Cell, FaceArrangement};
 pub use axis::{medial_axis_3d, Axis3, Axis3Error, Sheet3};
 pub use classes::{contact_classes, ContactClass, ContactClasses};
+pub use domain::{DomainPlane, Line2};
+pub use edge_domain::{edge_arrangement, EdgeArrangement};
 pub use radius::{radius_fn, Affine3, RadiusFn};

@@ -104,6 +104,9 @@ pub fn radius_fn(mesh: &Mesh3d, ball: &Ball3, anchor: usize, x: Feature3, y: Sur
     let v = *ball.vertices().get(anchor)?;
     match (x, y) {
         (Feature3::Vertex(w), SurfacePart::Face(t)) => {
+            if w == anchor {
+                return None;
+            }
             let [a, b, d] = mesh.triangles().get(t as usize)?.map(|i| mesh.positions()[i as usize]);
             let n = (b - a).cross(d - a);
             let u = *ball.vertices().get(w)? - v;
@@ -124,6 +127,11 @@ pub fn radius_fn(mesh: &Mesh3d, ball: &Ball3, anchor: usize, x: Feature3, y: Sur
         }
         (Feature3::Edge(k), SurfacePart::Edge([i, j])) => {
             let edge = ball.edges().get(k)?;
+            // An edge through the anchor keeps its line as the ball grows
+            // (its equation is `0 = …`, which rounding would not show).
+            if edge.vertices.contains(&anchor) {
+                return None;
+            }
             let (ta, tb) = (ball.vertices()[edge.vertices[0]], ball.vertices()[edge.vertices[1]]);
             let (e0, e1) = (pos(i)?, pos(j)?);
             let (u, w, alpha) = (tb - ta, e1 - e0, ta - v);
@@ -148,6 +156,9 @@ pub fn radius_fn(mesh: &Mesh3d, ball: &Ball3, anchor: usize, x: Feature3, y: Sur
         }
         (Feature3::Facet(f), SurfacePart::Vertex(i)) => {
             let facet = ball.facets().get(f)?;
+            if facet.vertices.contains(&anchor) {
+                return None;
+            }
             let q = pos(i)?;
             let (nt, h) = (facet.normal, facet.offset);
             let k = h - nt.dot(v);

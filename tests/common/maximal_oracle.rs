@@ -100,6 +100,20 @@ pub fn least_gauge(ball: &Ball3, planes: &[(Point3, f64)], c: Point3, t: [Point3
 /// at `p`, by bisection on the brute-force gauge (nested balls: once a
 /// triangle enters, it stays in).
 pub fn oracle_radius(m: &Mesh3d, ball: &Ball3, planes: &[(Point3, f64)], own: usize, anchor: usize, p: Point3) -> f64 {
+    try_oracle_radius(m, ball, planes, own, anchor, p)
+        .unwrap_or_else(|| panic!("the oracle's ball grows without bound at {p:?}"))
+}
+
+/// [`oracle_radius`], `None` when the ball grows without bound (the
+/// vertex's cone points out of the solid).
+pub fn try_oracle_radius(
+    m: &Mesh3d,
+    ball: &Ball3,
+    planes: &[(Point3, f64)],
+    own: usize,
+    anchor: usize,
+    p: Point3,
+) -> Option<f64> {
     let v = ball.vertices()[anchor];
     let tris: Vec<[Point3; 3]> = m
         .triangles()
@@ -113,7 +127,9 @@ pub fn oracle_radius(m: &Mesh3d, ball: &Ball3, planes: &[(Point3, f64)], own: us
     while empty(hi) {
         lo = hi;
         hi *= 2.0;
-        assert!(hi < 1e6, "the oracle's ball grows without bound at {p:?}");
+        if hi > 1e6 {
+            return None;
+        }
     }
     for _ in 0..60 {
         let mid = 0.5 * (lo + hi);
@@ -123,7 +139,7 @@ pub fn oracle_radius(m: &Mesh3d, ball: &Ball3, planes: &[(Point3, f64)], own: us
             hi = mid;
         }
     }
-    0.5 * (lo + hi)
+    Some(0.5 * (lo + hi))
 }
 
 /// The ball vertex farthest along the face's outward normal (its VF
@@ -148,4 +164,37 @@ pub fn accepted<T>(got: Result<T, medax::space::AlongError>, what: &str, refused
         }
         Err(e) => panic!("{what}: {e}"),
     }
+}
+
+/// Distance from `p` to triangle `t`.
+pub fn to_triangle(p: Point3, [a, b, c]: [Point3; 3]) -> f64 {
+    let n = (b - a).cross(c - a);
+    let h = n.dot(p - a) / n.norm2();
+    let q = p - n * h;
+    if (0..3).all(|k| {
+        let (s, e) = ([a, b, c][k], [a, b, c][(k + 1) % 3]);
+        (e - s).cross(q - s).dot(n) >= 0.0
+    }) {
+        return (p - q).norm();
+    }
+    let seg = |s: Point3, e: Point3| {
+        let u = ((p - s).dot(e - s) / (e - s).norm2()).clamp(0.0, 1.0);
+        (p - (s + (e - s) * u)).norm()
+    };
+    seg(a, b).min(seg(b, c)).min(seg(c, a))
+}
+
+/// Whether `p` lies inside the closed surface: the solid angles its
+/// triangles subtend (Van Oosterom and Strackee) sum to 4π inside, 0
+/// outside.
+pub fn inside(m: &Mesh3d, p: Point3) -> bool {
+    let mut total = 0.0;
+    for t in m.triangles() {
+        let [a, b, c] = t.map(|i| m.positions()[i as usize] - p);
+        let (la, lb, lc) = (a.norm(), b.norm(), c.norm());
+        let num = a.dot(b.cross(c));
+        let den = la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la;
+        total += 2.0 * num.atan2(den);
+    }
+    total > 2.0 * std::f64::consts::PI
 }

@@ -346,6 +346,20 @@ impl Ball3 {
         &self.edges
     }
 
+    /// The first facet whose corners are not exactly coplanar, if any (a
+    /// turned ball keeps its facets, whose corners were rotated in `f64`:
+    /// see [`rotated`](Self::rotated)). The exact questions take a facet's
+    /// plane through its first three corners; where a ball edge must lie
+    /// exactly along the wall of a cone (a ball edge sliding along a
+    /// reflex edge of a solid) the other corners must lie on it too.
+    pub fn non_planar_facet(&self) -> Option<usize> {
+        let w = &self.vertices;
+        self.facets.iter().position(|f| {
+            let [a, b, c] = [0, 1, 2].map(|k| w[f.vertices[k]]);
+            f.vertices[3..].iter().any(|&d| plane_side(a, b, c, w[d]) != PlaneSide::On)
+        })
+    }
+
     /// The facets around vertex `v`, counter-clockwise seen from outside.
     pub fn facets_around(&self, v: usize) -> &[usize] {
         &self.around[v]

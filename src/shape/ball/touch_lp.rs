@@ -31,6 +31,11 @@ pub(crate) enum Centre {
     /// The point `t0 + a·(t1 − t0) + b·(t2 − t0)` of a triangle's plane,
     /// exactly: on the plane, where an `f64` point seldom is.
     On([Point3; 3], f64, f64),
+    /// The point `base + a·(u₁ − u₀) + b·(w₁ − w₀)` of the plane through
+    /// `base` spanned by two differences of given points, exactly: a
+    /// contact plane of an edge (its line and a ball edge's direction),
+    /// whose direction is a difference of ball vertices.
+    Span(Point3, [Point3; 2], [Point3; 2], f64, f64),
 }
 
 impl Centre {
@@ -39,6 +44,9 @@ impl Centre {
         match *self {
             Centre::At(c) => c.to_array().to_vec(),
             Centre::On(t, a, b) => t.iter().flat_map(|p| p.to_array()).chain([a, b, 1.0]).collect(),
+            Centre::Span(o, u, w, a, b) => {
+                [o, u[0], u[1], w[0], w[1]].iter().flat_map(|p| p.to_array()).chain([a, b, 1.0]).collect()
+            }
         }
     }
 
@@ -47,8 +55,29 @@ impl Centre {
         match *self {
             Centre::At(c) => c,
             Centre::On([t0, t1, t2], a, b) => t0 + (t1 - t0) * a + (t2 - t0) * b,
+            Centre::Span(o, [u0, u1], [w0, w1], a, b) => o + (u1 - u0) * a + (w1 - w0) * b,
         }
     }
+}
+
+/// The centre `o + a·(u₁ − u₀) + b·(w₁ − w₀)` times the denominator `D`
+/// of `a` and `b` (`a = A / D`), that `D`, and the triangles moved so
+/// that the centre is the origin, times `D`.
+#[allow(clippy::type_complexity)]
+fn spanned<R: Ring>(
+    o: Point3,
+    [u0, u1]: [Point3; 2],
+    [w0, w1]: [Point3; 2],
+    a: f64,
+    b: f64,
+    units: Units,
+    ts: &[[Point3; 3]],
+) -> (V3<R>, Option<R>, Vec<[V3<R>; 3]>) {
+    let d = R::of(1.0, units);
+    let (e1, e2) = (V3::<R>::diff(u1, u0, units), V3::<R>::diff(w1, w0, units));
+    let off = e1.scale(&R::of(a, units)).add(&e2.scale(&R::of(b, units)));
+    let moved = ts.iter().map(|t| t.map(|p| V3::diff(p, o, units).scale(&d).sub(&off))).collect();
+    (V3::of(o, units).scale(&d).add(&off), Some(d), moved)
 }
 
 /// "The ring cannot tell": ask again on exact integers.
@@ -141,13 +170,8 @@ impl<'a, R: Ring> Setting<'a, R> {
         // triangle its offset `A·e1 + B·e2` from the triangle's corner.
         let (at_centre, scale, moved): (V3<R>, Option<R>, Vec<[V3<R>; 3]>) = match centre {
             Centre::At(c) => (V3::of(c, units), None, ts.iter().map(|t| t.map(|p| V3::diff(p, c, units))).collect()),
-            Centre::On([t0, t1, t2], a, b) => {
-                let d = R::of(1.0, units);
-                let (e1, e2) = (V3::<R>::diff(t1, t0, units), V3::<R>::diff(t2, t0, units));
-                let off = e1.scale(&R::of(a, units)).add(&e2.scale(&R::of(b, units)));
-                let moved = ts.iter().map(|t| t.map(|p| V3::diff(p, t0, units).scale(&d).sub(&off))).collect();
-                (V3::of(t0, units).scale(&d).add(&off), Some(d), moved)
-            }
+            Centre::On([t0, t1, t2], a, b) => spanned(t0, [t0, t1], [t0, t2], a, b, units, ts),
+            Centre::Span(o, u, w, a, b) => spanned(o, u, w, a, b, units, ts),
         };
         Setting {
             ball,

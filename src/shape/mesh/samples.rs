@@ -1,5 +1,6 @@
 //! Generated solids for tests, benchmarks and the demo: parametric tori
-//! and spheres of any resolution, boxes, and a box with a cavity.
+//! and spheres of any resolution, boxes, a box with a cavity, and
+//! L-shaped prisms (one reflex edge).
 
 /// Vertices and triangles of a generated solid.
 pub type Soup = (Vec<[f64; 3]>, Vec<[u32; 3]>);
@@ -89,4 +90,28 @@ pub fn union(parts: &[Soup]) -> Soup {
         out.1.extend(t.iter().map(|tri| tri.map(|i| i + base)));
     }
     out
+}
+
+/// An L-shaped prism: the square `[0, size]²` less the corner beyond
+/// `corner` (`0 < corner < size` in both coordinates), extruded to
+/// `height`; one reflex edge, the vertical one at `corner`. `shear` tilts
+/// it off the axes (0: axis-aligned), so that no face is parallel to an
+/// axis-aligned ball's facets. Facing outward.
+pub fn l_prism(size: f64, corner: [f64; 2], height: f64, shear: f64) -> Soup {
+    let [cx, cy] = corner;
+    let outline = [[0.0, 0.0], [size, 0.0], [size, cy], [cx, cy], [cx, size], [0.0, size]];
+    let lift = |p: [f64; 2], z: f64| [p[0] + 0.07 * shear * z, p[1] - 0.03 * shear * z, z + 0.05 * shear * p[0]];
+    let mut v: Vec<[f64; 3]> = outline.iter().map(|&p| lift(p, 0.0)).collect();
+    v.extend(outline.iter().map(|&p| lift(p, height)));
+    let mut t = Vec::new();
+    for [a, b, c] in [[0u32, 1, 2], [0, 2, 3], [0, 3, 4], [0, 4, 5]] {
+        t.push([a, c, b]);
+        t.push([a + 6, b + 6, c + 6]);
+    }
+    for i in 0..6u32 {
+        let j = (i + 1) % 6;
+        t.push([i, j, j + 6]);
+        t.push([i, j + 6, i + 6]);
+    }
+    (v, t)
 }

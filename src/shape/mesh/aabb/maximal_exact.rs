@@ -71,9 +71,35 @@ impl TriangleTree {
         self.maximal_exact(Centre::On(corners, a, b), vertex, reach)
     }
 
+    /// [`maximal_ball_exact`](Self::maximal_ball_exact) at the point
+    /// `base + a·(u₁ − u₀) + b·(w₁ − w₀)`, taken exactly: on the plane
+    /// through `base` spanned by the two differences. The contact plane
+    /// of a reflex edge and a ball edge is spanned by the edge and the
+    /// ball edge's direction; a point of it computed in `f64` would lie a
+    /// rounding off it, and a ball whose edge should slide along the
+    /// reflex edge would be stopped by it.
+    pub fn maximal_ball_exact_span(
+        &self,
+        base: Point3,
+        u: [Point3; 2],
+        w: [Point3; 2],
+        (a, b): (f64, f64),
+        vertex: usize,
+        reach: &Reach<'_>,
+    ) -> Option<ExactMaximalBall> {
+        self.maximal_exact(Centre::Span(base, u, w, a, b), vertex, reach)
+    }
+
     fn maximal_exact(&self, centre: Centre, vertex: usize, reach: &Reach<'_>) -> Option<ExactMaximalBall> {
         let p = centre.approx();
-        let found = self.maximal_ball_with(p, vertex, reach)?;
+        let Some(found) = self.maximal_ball_with(p, vertex, reach) else {
+            // The `f64` shrinking did not settle (a ball edge grazing a
+            // face can make it step back and forth within its slack): the
+            // nested balls alone, from a ball of about its rounding up.
+            reach.ball().vertices().get(vertex)?;
+            let start = 256.0 * f64::EPSILON * size_of(p, &self.bbox()) / reach.ball().inradius();
+            return self.maximal_nested(centre, vertex, reach, start);
+        };
         let (r, c) = (found.radius, found.centre);
         if r == 0.0 {
             // A point strictly inside its own triangle lies on no other
@@ -107,7 +133,11 @@ impl TriangleTree {
                 return Some(found);
             }
         }
-        None
+        // Nothing near the `f64` ball stops it exactly: the triangle that
+        // stopped the `f64` growth only grazes the cone's wall (a ball
+        // edge along a face), and the true stop lies farther. The balls
+        // are nested: from twice that radius up.
+        self.maximal_nested(centre, vertex, reach, 2.0 * r)
     }
 
     /// The exact maximal* ball among the triangles whose least gauge from
