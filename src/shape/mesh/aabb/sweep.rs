@@ -25,7 +25,8 @@ const STEPS: usize = 64;
 impl TriangleTree {
     /// A triangle (its index) entering the hull of the balls `c0 + r0·B`
     /// and `c1 + r1·B` (`r0, r1 ≥ 0`) by more than `tol` in radius, if
-    /// any: the one entering deepest.
+    /// any: the first found (the walk stops there, and so does each
+    /// triangle's search once it is below `−tol`).
     pub fn enters_hull(
         &self,
         (c0, r0): (Point3, f64),
@@ -59,27 +60,28 @@ impl TriangleTree {
                 least(n.x, b.min.x, b.max.x) + least(n.y, b.min.y, b.max.y) + least(n.z, b.min.z, b.max.z) > far + slack
             })
         };
-        let mut deepest: Option<(f64, usize)> = None;
         let mut hint = ReachHint::default();
+        let mut found = None;
         let _ = self.visit(
             |b| b.overlaps(&hull) && !beyond(b),
             |k| {
                 let t = self.corners(k);
                 let mut g = |s: f64| reach.triangle(c0 + (c1 - c0) * s, t, &mut hint).radius - (r0 + (r1 - r0) * s);
-                let least = least_convex(&mut g);
-                if least < -tol && deepest.is_none_or(|(d, _)| least < d) {
-                    deepest = Some((least, k));
+                if least_convex(&mut g, -tol) < -tol {
+                    found = Some(self.ids[k]);
+                    std::ops::ControlFlow::Break(())
+                } else {
+                    std::ops::ControlFlow::Continue(())
                 }
-                std::ops::ControlFlow::Continue(())
             },
         );
-        deepest.map(|(_, k)| self.ids[k])
+        found
     }
 }
 
 /// The least value of a convex function on `[0, 1]`, by golden section
-/// (the ends included).
-fn least_convex(g: &mut impl FnMut(f64) -> f64) -> f64 {
+/// (the ends included), or the first value found below `enough`.
+fn least_convex(g: &mut impl FnMut(f64) -> f64, enough: f64) -> f64 {
     let phi = 0.5 * (5f64.sqrt() - 1.0);
     let (mut lo, mut hi) = (0.0f64, 1.0f64);
     let mut best = g(0.0).min(g(1.0));
@@ -87,6 +89,9 @@ fn least_convex(g: &mut impl FnMut(f64) -> f64) -> f64 {
     let (mut g1, mut g2) = (g(x1), g(x2));
     for _ in 0..STEPS {
         best = best.min(g1).min(g2);
+        if best < enough {
+            return best;
+        }
         if g1 <= g2 {
             hi = x2;
             (x2, g2) = (x1, g1);
