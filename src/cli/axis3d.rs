@@ -3,10 +3,9 @@
 //! the radius and a colour by radius (blue small, red large) for a mesh
 //! viewer.
 
-use super::query3d::parse_ball;
+use super::query3d::{feature_json, kind_name, parse_ball, part_json};
 use super::{write_file, write_streamed};
 use medax::io::mesh::write_obj;
-use medax::shape::{ContactKind3, Feature3, SurfacePart};
 use medax::shape::{Mesh3d, MeshOptions};
 use medax::space::{medial_axis_3d, Axis3, Opposite};
 use serde_json::json;
@@ -32,23 +31,7 @@ fn axis_json(axis: &Axis3) -> serde_json::Value {
 /// (`{"vertex": i}`, `{"edge": k}`, `{"facet": f}`) and the surface's
 /// (`{"face": t}`, `{"edge": [i, j]}`, `{"vertex": i}`).
 fn class_json(c: &Opposite) -> serde_json::Value {
-    let kind = match c.kind {
-        ContactKind3::VertexFace => "VF",
-        ContactKind3::EdgeEdge => "EE",
-        ContactKind3::FaceVertex => "FV",
-        _ => "other",
-    };
-    let ball = match c.ball {
-        Feature3::Vertex(i) => json!({"vertex": i}),
-        Feature3::Edge(k) => json!({"edge": k}),
-        Feature3::Facet(f) => json!({"facet": f}),
-    };
-    let surface = match c.surface {
-        SurfacePart::Face(t) => json!({"face": t}),
-        SurfacePart::Edge(e) => json!({"edge": e}),
-        SurfacePart::Vertex(i) => json!({"vertex": i}),
-    };
-    json!({"kind": kind, "ball": ball, "surface": surface})
+    json!({"kind": kind_name(c.kind), "ball": feature_json(c.ball), "surface": part_json(c.surface)})
 }
 
 /// PLY (ASCII) with a `radius` and an RGB colour per vertex.

@@ -51,7 +51,7 @@ fn read_points(path: &Path) -> Result<Vec<Point3>, String> {
         .collect()
 }
 
-fn kind_name(k: ContactKind3) -> &'static str {
+pub(super) fn kind_name(k: ContactKind3) -> &'static str {
     match k {
         ContactKind3::VertexFace => "VF",
         ContactKind3::EdgeEdge => "EE",
@@ -62,6 +62,25 @@ fn kind_name(k: ContactKind3) -> &'static str {
     }
 }
 
+/// A ball feature as JSON: `{"vertex"|"edge"|"facet": i}`.
+pub(super) fn feature_json(f: Feature3) -> Value {
+    match f {
+        Feature3::Vertex(i) => json!({ "vertex": i }),
+        Feature3::Edge(i) => json!({ "edge": i }),
+        Feature3::Facet(i) => json!({ "facet": i }),
+    }
+}
+
+/// A surface feature as JSON: `{"vertex": v}`, `{"edge": [a, b]}` or
+/// `{"face": t}`.
+pub(super) fn part_json(p: SurfacePart) -> Value {
+    match p {
+        SurfacePart::Vertex(v) => json!({ "vertex": v }),
+        SurfacePart::Edge(e) => json!({ "edge": e }),
+        SurfacePart::Face(t) => json!({ "face": t }),
+    }
+}
+
 /// The exact contacts as JSON: `[{"kind", "ball": {"vertex"|"edge"|"facet": i},
 /// "surface": {"vertex": v}|{"edge": [a, b]}|{"face": t}, "triangle", "point", "flat"}, ...]`.
 fn contacts_json(x: &ExactContacts) -> Value {
@@ -69,16 +88,7 @@ fn contacts_json(x: &ExactContacts) -> Value {
         .contacts
         .iter()
         .map(|c| {
-            let ball = match c.ball {
-                Feature3::Vertex(i) => json!({ "vertex": i }),
-                Feature3::Edge(i) => json!({ "edge": i }),
-                Feature3::Facet(i) => json!({ "facet": i }),
-            };
-            let surface = match c.surface {
-                SurfacePart::Vertex(v) => json!({ "vertex": v }),
-                SurfacePart::Edge(e) => json!({ "edge": e }),
-                SurfacePart::Face(t) => json!({ "face": t }),
-            };
+            let (ball, surface) = (feature_json(c.ball), part_json(c.surface));
             json!({"kind": kind_name(c.kind), "ball": ball, "surface": surface, "triangle": c.triangle,
                    "point": c.point.to_array(), "flat": c.flat})
         })
