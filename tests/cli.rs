@@ -636,7 +636,7 @@ fn query3d_answers_points_as_json() {
 /// `medax axis3d`: the axis of a perturbed octahedron under the
 /// tetrahedron as JSON (every triangle in one sheet, radii positive),
 /// OBJ and PLY with radii; a sheared L prism's EE sheets; a box with a
-/// cavity (FV contacts at its corners) exits 1 naming a vertex.
+/// cavity's FV sheets; a turned cube on the prism exits 1 naming a facet.
 #[test]
 fn axis3d_writes_the_axis_of_a_convex_solid() {
     let dir = scratch("axis3d");
@@ -695,16 +695,30 @@ fn axis3d_writes_the_axis_of_a_convex_solid() {
     let ee = doc["sheets"].as_array().unwrap().iter().flat_map(|s| s["classes"].as_array().unwrap().clone());
     let ee: Vec<_> = ee.filter(|c| c["kind"] == "EE").collect();
     assert!(!ee.is_empty() && ee.iter().all(|c| c["ball"]["edge"].is_u64() && c["surface"]["edge"].is_array()));
-    // A box with a box-shaped cavity: the cavity's corners could hold FV
-    // contacts, not handled yet: exit 1 naming the vertex.
+    // A box with a box-shaped cavity: a ball facet rests on the cavity's
+    // corners (FV classes).
     let outer = medax::shape::mesh_samples::cuboid([-6.0, -6.0, -6.0], [6.0, 6.0, 6.0]);
     let inner = medax::shape::mesh_samples::cuboid([-2.0, -2.5, -3.0], [3.0, 2.0, 1.5]);
     let inner = (inner.0, inner.1.iter().map(|t| [t[0], t[2], t[1]]).collect::<Vec<_>>());
     let (cv, ct) = medax::shape::mesh_samples::union(&[outer, inner]);
     let cavity = dir.join("cavity.off");
     std::fs::write(&cavity, medax::io::mesh::write_off(&cv, &ct)).unwrap();
-    let out = medax().arg("axis3d").arg(&cavity).args(["--ball", "tetra"]).output().unwrap();
+    let out = medax()
+        .arg("axis3d")
+        .arg(&cavity)
+        .args(["--ball", "tetra@0.2,0.4,-0.3", "--json"])
+        .arg(&json)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let fv = doc["sheets"].as_array().unwrap().iter().flat_map(|s| s["classes"].as_array().unwrap().clone());
+    let fv: Vec<_> = fv.filter(|c| c["kind"] == "FV").collect();
+    assert!(!fv.is_empty() && fv.iter().all(|c| c["ball"]["facet"].is_u64() && c["surface"]["vertex"].is_u64()));
+    // A turned cube's squares are not exactly planar: refused with the
+    // L prism's reflex edge, exit 1 naming the facet.
+    let out = medax().arg("axis3d").arg(&l).args(["--ball", "cube@0.3,-0.5,0.2"]).output().unwrap();
     assert_eq!(out.status.code(), Some(1));
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("vertex") && err.contains("reflex"), "{err}");
+    assert!(err.contains("facet") && err.contains("planar"), "{err}");
 }

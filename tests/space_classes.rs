@@ -51,7 +51,9 @@ fn every_contact_of_an_inscribed_ball_is_a_class() {
             let reach = ball.reach();
             let what = format!("{solid}, {name}");
             let mut check = |x: &medax::shape::ExactContact, from: &str| {
-                if x.flat || !matches!(x.kind, ContactKind3::VertexFace | ContactKind3::EdgeEdge) {
+                if x.flat
+                    || !matches!(x.kind, ContactKind3::VertexFace | ContactKind3::EdgeEdge | ContactKind3::FaceVertex)
+                {
                     return;
                 }
                 assert!(classes.contains(x.ball, x.surface), "{what}: {from} touches by {x:?}, not a class");
@@ -183,4 +185,77 @@ fn the_l_prism_has_one_reflex_edge_and_its_edge_classes() {
         }
     }
     assert!(crossings >= 4, "only {crossings} crossings");
+}
+
+/// A slab with an L-shaped pocket (concave corners at the pocket's floor,
+/// a saddle at its inner corner, lowered into a valley: a convex edge up
+/// and reflex ones along the floor) and a box with a turned cavity (concave corners), under
+/// turned balls: a ball facet rests on vertex `v` (an FV class) iff a tiny
+/// ball `c + ε·B` with the facet's centroid on `v` lies inside the solid:
+/// `c` is inside (winding number) and its least gauge distance to the
+/// triangles (brute force) is `ε`, for every vertex and facet.
+#[test]
+fn face_vertex_classes_are_the_facets_a_tiny_ball_rests_on() {
+    use common::maximal_oracle::{inside, least_gauge, planes};
+    use medax::shape::mesh_samples::{polycube, union};
+    let mut slab: Vec<[i32; 3]> = Vec::new();
+    for i in 0..4 {
+        for j in 0..4 {
+            slab.push([i, j, 0]);
+            if ![[1, 1], [2, 1], [1, 2]].contains(&[i, j]) {
+                slab.push([i, j, 1]);
+            }
+        }
+    }
+    let outer = cuboid([-6.0, -6.0, -6.0], [6.0, 6.0, 6.0]);
+    let inner = cuboid([-2.0, -2.5, -3.0], [3.0, 2.0, 1.5]);
+    let (s, c) = (0.4f64.sin(), 0.4f64.cos());
+    let turned: Vec<[f64; 3]> = inner.0.iter().map(|&[x, y, z]| [c * x - s * z, y, s * x + c * z]).collect();
+    let cavity = union(&[outer, (turned, inner.1.iter().map(|t| [t[0], t[2], t[1]]).collect())]);
+    let turned_balls = [
+        ("turned tetrahedron", Ball3::tetrahedron().rotated([0.2, 0.4, -0.3]).unwrap()),
+        ("turned octahedron", Ball3::octahedron().rotated([-0.4, 0.1, 0.6]).unwrap()),
+        ("turned icosahedron", Ball3::icosahedron().rotated([0.5, 0.3, 0.1]).unwrap()),
+    ];
+    let (mut classes_seen, mut saddles) = (0, 0);
+    // The floor's corner at the L's inner corner lowered: a valley, whose
+    // exterior (the pocket) lies beyond a plane though it is not convex.
+    let mut pocket = polycube(&slab, 1.0);
+    pocket.0.iter_mut().filter(|p| **p == [2.0, 2.0, 1.0]).for_each(|p| p[2] = 0.4);
+    for (solid, soup) in [("L pocket", pocket), ("turned cavity", cavity)] {
+        let m = mesh(&soup);
+        let tris: Vec<[Point3; 3]> = m.triangles().iter().map(|t| t.map(|i| m.positions()[i as usize])).collect();
+        let eps = 1e-4 * m.bbox().diagonal();
+        for (name, ball) in &turned_balls {
+            let classes = contact_classes(&m, ball);
+            let pl = planes(ball);
+            for (v, &x) in m.positions().iter().enumerate() {
+                for (f, facet) in ball.facets().iter().enumerate() {
+                    let k = facet.vertices.len() as f64;
+                    let g = facet.vertices.iter().fold(Point3::new(0.0, 0.0, 0.0), |a, &i| a + ball.vertices()[i])
+                        * (1.0 / k);
+                    let c = x - g * eps;
+                    let r = tris.iter().map(|&t| least_gauge(ball, &pl, c, t)).fold(f64::INFINITY, f64::min);
+                    let below = r >= eps * (1.0 - 1e-7) && inside(&m, c);
+                    let got = classes
+                        .face_vertex
+                        .iter()
+                        .find(|c| c.surface == SurfacePart::Vertex(v as u32) && c.ball == Feature3::Facet(f));
+                    assert_eq!(
+                        got.is_some(),
+                        below,
+                        "{solid}, {name}: vertex {v} at {x:?}, facet {f} (gauge {} of ε)",
+                        r / eps
+                    );
+                    if let Some(c) = got {
+                        assert!(!c.tie && c.kind == ContactKind3::FaceVertex, "{c:?}");
+                        classes_seen += 1;
+                        saddles += usize::from(solid == "L pocket" && (x.x == 2.0 && x.y == 2.0 && x.z == 0.4));
+                    }
+                }
+            }
+        }
+    }
+    eprintln!("{classes_seen} FV classes, {saddles} at the saddle");
+    assert!(classes_seen >= 20 && saddles >= 1, "{classes_seen} FV classes, {saddles} at the saddle");
 }

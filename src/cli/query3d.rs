@@ -12,8 +12,19 @@ use std::process::ExitCode;
 
 /// The space ball a name or file gives: `tetrahedron` (`tetra`), `cube`,
 /// `octahedron` (`octa`), `icosahedron` (`icosa`), `geodesic:N`, or a mesh
-/// file whose vertices' hull is the ball.
+/// file whose vertices' hull is the ball; `@RX,RY,RZ` after it turns it
+/// (a rotation vector in radians, as `Ball3::rotated`): presets are
+/// aligned with the axes, and so are most CAD solids, which puts a ball
+/// edge or facet parallel to a face (outside general position).
 pub fn parse_ball(spec: &str) -> Result<Ball3, String> {
+    // A file name may hold an `@` too: a rotation only when three numbers
+    // follow the last one.
+    if let Some((name, turn)) = spec.rsplit_once('@') {
+        let r: Result<Vec<f64>, _> = turn.split(',').map(|x| x.trim().parse::<f64>()).collect();
+        if let Ok([x, y, z]) = r.as_deref() {
+            return parse_ball(name)?.rotated([*x, *y, *z]).map_err(|e| format!("--ball {spec}: {e}"));
+        }
+    }
     match spec {
         "tetra" | "tetrahedron" => return Ok(Ball3::tetrahedron()),
         "cube" => return Ok(Ball3::cube()),

@@ -13,17 +13,17 @@
 //! vertex it collapses to a line there (a jump sheet: a ball vertex on a
 //! face and an edge through it on a reflex edge), so an EE class has a
 //! domain for each end of its ball edge, and a sheet is taken from the
-//! least domain (VF before EE, then by features and representative
-//! vertex) where it is two-dimensional. Corners shared by neighbouring pieces are welded within
-//! 10^-9 of the solid's size.
-//!
-//! FV classes (a ball facet on a vertex with reflex edges and no convex
-//! one: the exterior is locally convex there) need the domains of 3.3.2.2.4, not
-//! built yet: such solids are refused, naming the vertex.
+//! least domain (VF before EE before FV, then by features and
+//! representative vertex) where it is two-dimensional. An FV class (a
+//! ball facet on a vertex whose exterior lies beyond the facet's plane)
+//! has a domain per corner of its facet (`corner_domain`), for the same
+//! reason. Corners shared by neighbouring pieces are welded within 10^-9
+//! of the solid's size.
 
 use super::along::{AlongError, Opposite};
 use super::arrangement::{face_arrangement, Cell};
 use super::classes::contact_classes;
+use super::corner_domain::corner_arrangement;
 use super::domain::DomainPlane;
 use super::edge_domain::edge_arrangement;
 use super::radius::radius_fn;
@@ -59,10 +59,9 @@ pub struct Axis3 {
 /// Why a solid's axis was not computed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Axis3Error {
-    /// This vertex has a reflex edge and no convex one (the exterior is
-    /// locally convex there: a ball facet can touch it, an FV contact,
-    /// whose domains are not built yet).
-    ReflexVertex {
+    /// A ball facet rests on this vertex with one of its edges along the
+    /// facet's plane (an FV class at a tie): outside general position.
+    CornerParallelToBall {
         /// The vertex.
         vertex: u32,
     },
@@ -87,8 +86,8 @@ pub enum Axis3Error {
         /// The ball facet.
         facet: usize,
     },
-    /// A maximal* ball touches opposite with an FV contact, whose domain
-    /// is not built: its sheets cannot be assembled yet.
+    /// A maximal* ball touches opposite with an FV contact that is not a
+    /// class (a contradiction of the exact predicates: a defect).
     OppositeFaceVertex {
         /// The surface vertex touched.
         vertex: u32,
@@ -105,10 +104,9 @@ pub enum Axis3Error {
 impl std::fmt::Display for Axis3Error {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            Axis3Error::ReflexVertex { vertex } => write!(
-                f,
-                "vertex {vertex} has reflex edges and no convex one (a ball facet could touch it: FV contacts are not handled yet)"
-            ),
+            Axis3Error::CornerParallelToBall { vertex } => {
+                write!(f, "an edge at vertex {vertex} is parallel to a ball facet resting on it (not in general position)")
+            }
             Axis3Error::FaceParallelToBall { face } => {
                 write!(f, "triangle {face} is parallel to a ball edge or facet (not in general position)")
             }
@@ -120,12 +118,15 @@ impl std::fmt::Display for Axis3Error {
                 "ball facet {facet} is not exactly planar (a turned ball?), and the solid has reflex edges: use a ball of triangles (the hull of its points)"
             ),
             Axis3Error::OppositeFaceVertex { vertex } => {
-                write!(f, "a maximal* ball touches vertex {vertex} with a facet (FV contacts are not handled yet)")
+                write!(f, "a maximal* ball touches vertex {vertex} with a facet that is no contact class there (a defect)")
             }
             Axis3Error::Arrangement { class, error } => match (class.ball, class.surface) {
                 (_, SurfacePart::Face(t)) => write!(f, "triangle {t}: {error}"),
                 (Feature3::Edge(k), SurfacePart::Edge(e)) => {
                     write!(f, "reflex edge {}–{} with ball edge {k}: {error}", e[0], e[1])
+                }
+                (Feature3::Facet(k), SurfacePart::Vertex(v)) => {
+                    write!(f, "vertex {v} with ball facet {k}: {error}")
                 }
                 _ => write!(f, "{error}"),
             },
@@ -155,7 +156,7 @@ fn sheet_domain(mesh: &Mesh3d, ball: &Ball3, a: Opposite, b: Opposite) -> Option
         match c.ball {
             Feature3::Vertex(v) => vec![v],
             Feature3::Edge(k) => ball.edges().get(k).map_or(Vec::new(), |e| e.vertices.to_vec()),
-            Feature3::Facet(_) => Vec::new(),
+            Feature3::Facet(f) => ball.facets().get(f).map_or(Vec::new(), |x| x.vertices.clone()),
         }
     };
     let mut best: Option<(Opposite, usize)> = None;
@@ -169,22 +170,16 @@ fn sheet_domain(mesh: &Mesh3d, ball: &Ball3, a: Opposite, b: Opposite) -> Option
     best
 }
 
-/// The medial axis of the solid `mesh` under `ball` (thesis 3.3), for
-/// solids whose regular classes are VF and EE (no vertex with reflex
-/// edges and no convex one).
+/// The medial axis of the solid `mesh` under `ball` (thesis 3.3).
 ///
 /// # Errors
 ///
-/// [`Axis3Error`]: a vertex with reflex edges and no convex one, a ball
-/// facet not exactly planar (with reflex edges), a face or reflex edge
-/// parallel to a ball feature, a domain's arrangement failing (see
-/// [`AlongError`]).
+/// [`Axis3Error`]: a ball facet not exactly planar (with reflex edges), a
+/// face, reflex edge or vertex's edge parallel to a ball feature, a
+/// domain's arrangement failing (see [`AlongError`]).
 pub fn medial_axis_3d(mesh: &Mesh3d, ball: &Ball3) -> Result<Axis3, Axis3Error> {
     use rayon::prelude::*;
     let classes = contact_classes(mesh, ball);
-    if let Some(vertex) = fully_reflex_vertex(mesh, &classes.reflex_edges, &classes.convex_edges) {
-        return Err(Axis3Error::ReflexVertex { vertex });
-    }
     if !classes.reflex_edges.is_empty() {
         if let Some(facet) = ball.non_planar_facet() {
             return Err(Axis3Error::BallFacetNotPlanar { facet });
@@ -202,6 +197,11 @@ pub fn medial_axis_3d(mesh: &Mesh3d, ball: &Ball3) -> Result<Axis3, Axis3Error> 
     if let Some(c) = classes.edge_edge.iter().find(|c| c.tie) {
         if let SurfacePart::Edge(edge) = c.surface {
             return Err(Axis3Error::EdgeParallelToBall { edge });
+        }
+    }
+    if let Some(c) = classes.face_vertex.iter().find(|c| c.tie) {
+        if let SurfacePart::Vertex(vertex) = c.surface {
+            return Err(Axis3Error::CornerParallelToBall { vertex });
         }
     }
     let reach = ball.reach();
@@ -227,7 +227,33 @@ pub fn medial_axis_3d(mesh: &Mesh3d, ball: &Ball3) -> Result<Axis3, Axis3Error> 
         let arr = edge_arrangement(mesh, &reach, e, k, end).map_err(failed)?;
         Ok(Domain { own, plane: arr.plane, anchor_index: arr.anchor, anchor: w[arr.anchor], cells: arr.cells })
     });
-    let domains: Vec<Domain> = faces.chain(edges).collect::<Result<_, _>>()?;
+    let corner_reps: Vec<_> = classes
+        .face_vertex
+        .iter()
+        .flat_map(|c| {
+            let n = match c.ball {
+                Feature3::Facet(f) => ball.facets().get(f).map_or(0, |x| x.vertices.len()),
+                _ => 0,
+            };
+            (0..n).map(move |k| (c, k))
+        })
+        .collect();
+    let corners = corner_reps.par_iter().map(|&(c, k)| {
+        let own = Opposite { ball: c.ball, surface: c.surface, kind: ContactKind3::FaceVertex };
+        let failed = |error| Axis3Error::Arrangement { class: own, error };
+        let (Feature3::Facet(f), SurfacePart::Vertex(v)) = (c.ball, c.surface) else {
+            return Err(failed(AlongError::NoClass));
+        };
+        let arr = corner_arrangement(mesh, &reach, v, f, k).map_err(failed)?;
+        Ok(arr
+            .sectors
+            .into_iter()
+            .map(|s| Domain { own, plane: s.plane, anchor_index: arr.anchor, anchor: w[arr.anchor], cells: s.cells })
+            .collect::<Vec<_>>())
+    });
+    let corner_domains: Vec<Vec<Domain>> = corners.collect::<Result<_, _>>()?;
+    let mut domains: Vec<Domain> = faces.chain(edges).collect::<Result<_, _>>()?;
+    domains.extend(corner_domains.into_iter().flatten());
     let mut out = Axis3::default();
     let mut weld = Weld::new(mesh.bbox().diagonal() * 1e-9);
     let mut sheet_of: FastMap<(Opposite, Opposite), usize> = FastMap::default();
@@ -235,7 +261,9 @@ pub fn medial_axis_3d(mesh: &Mesh3d, ball: &Ball3) -> Result<Axis3, Axis3Error> 
         for cell in &d.cells {
             let other = cell.opposite;
             if let (ContactKind3::FaceVertex, SurfacePart::Vertex(vertex)) = (other.kind, other.surface) {
-                return Err(Axis3Error::OppositeFaceVertex { vertex });
+                if !classes.face_vertex.iter().any(|c| c.ball == other.ball && c.surface == other.surface) {
+                    return Err(Axis3Error::OppositeFaceVertex { vertex });
+                }
             }
             // Each sheet once: from the least domain where it is
             // two-dimensional.
@@ -266,20 +294,6 @@ pub fn medial_axis_3d(mesh: &Mesh3d, ball: &Ball3) -> Result<Axis3, Axis3Error> 
         }
     }
     Ok(out)
-}
-
-/// A vertex with a reflex edge and no convex one (its other edges flat:
-/// the exterior is locally convex there), if any: the lowest.
-fn fully_reflex_vertex(mesh: &Mesh3d, reflex: &[[u32; 2]], convex: &[[u32; 2]]) -> Option<u32> {
-    let n = mesh.positions().len();
-    let (mut has_reflex, mut has_convex) = (vec![false; n], vec![false; n]);
-    for e in reflex {
-        e.iter().for_each(|&i| has_reflex[i as usize] = true);
-    }
-    for e in convex {
-        e.iter().for_each(|&i| has_convex[i as usize] = true);
-    }
-    (0..n).find(|&i| has_reflex[i] && !has_convex[i]).map(|i| i as u32)
 }
 
 /// Vertices welded within a distance: a grid of cells that wide, each

@@ -26,12 +26,26 @@
 //!   strict sign (Cramer's rule for the dependency of four vectors in
 //!   space). Zeros with the other signs agreeing are fans touching at an
 //!   end: listed, marked `tie`.
+//! * FV `(f̃, v)`: a plane through `v` parallel to the facet `f̃` (outward
+//!   normal `ñ`) has the exterior near `v` strictly on its outer side:
+//!   `ñ·(x − v) > 0` for every neighbour `x` of `v` (the exterior's cone
+//!   is spanned by its edges), and the exterior is the side of `v`'s link
+//!   that lies in that open half-space, not the solid. Where `v` has no
+//!   convex edge the exterior is locally convex and that holds at once; at
+//!   a saddle (convex and reflex edges, the floor corner of an L-shaped
+//!   pocket) the link, projected from `v` onto the plane `ñ·d = 1`, must
+//!   turn counter-clockwise seen from outside: the exterior lies left of
+//!   each link edge (its triangle's normal points there), so it is the
+//!   small side iff the projected polygon's signed area is positive. A
+//!   neighbour on the plane (`ñ·(x − v) = 0`, the others beyond) is a
+//!   facet parallel to an edge at `v`: listed, marked `tie`.
 //!
 //! These are the classes that are locally possible; whether a maximal*
 //! ball features one is what its contact domain tells (empty or not).
 //!
 //! Cost: VF is a short climb per triangle; EE asks every ball edge at
-//! every reflex edge (reflex edges × ball edges tests). Output-sensitive
+//! every reflex edge (reflex edges × ball edges tests), FV every ball
+//! facet at every vertex with a reflex edge. Output-sensitive
 //! would be a walk on the ball's Gauss map: the arc from the reflex edge's
 //! first normal to its second crosses exactly the fans of the ball edges
 //! of its classes, from the region of the vertex farthest along the first
@@ -52,11 +66,12 @@ use std::cmp::Ordering;
 /// inscribed ball can touch with.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct ContactClass {
-    /// The contact type (VF or EE here).
+    /// The contact type (VF, EE or FV).
     pub kind: ContactKind3,
     /// The ball's feature.
     pub ball: Feature3,
-    /// The surface's feature (a triangle's interior, or an edge).
+    /// The surface's feature (a triangle's interior, an edge or a
+    /// vertex).
     pub surface: SurfacePart,
     /// True when a normal of the ball lies on the boundary of the
     /// surface feature's normal cone or the other way round: a ball
@@ -71,6 +86,8 @@ pub struct ContactClasses {
     pub vertex_face: Vec<ContactClass>,
     /// EE classes, by surface edge then ball edge.
     pub edge_edge: Vec<ContactClass>,
+    /// FV classes, by surface vertex then ball facet.
+    pub face_vertex: Vec<ContactClass>,
     /// The reflex edges of the surface (ends, lesser first), sorted.
     pub reflex_edges: Vec<[u32; 2]>,
     /// The convex edges (ends, lesser first), sorted; the rest are flat.
@@ -80,7 +97,7 @@ pub struct ContactClasses {
 impl ContactClasses {
     /// Every class, VF first.
     pub fn all(&self) -> impl Iterator<Item = &ContactClass> {
-        self.vertex_face.iter().chain(&self.edge_edge)
+        self.vertex_face.iter().chain(&self.edge_edge).chain(&self.face_vertex)
     }
 
     /// Whether `(ball, surface)` is a class (of any kind listed here).
@@ -89,7 +106,8 @@ impl ContactClasses {
     }
 }
 
-/// The VF and EE contact classes of `mesh` under `ball` (thesis 3.1.2).
+/// The VF, EE and FV contact classes of `mesh` under `ball` (thesis
+/// 3.1.2).
 pub fn contact_classes(mesh: &Mesh3d, ball: &Ball3) -> ContactClasses {
     let p = mesh.positions();
     let tris = mesh.triangles();
@@ -141,7 +159,107 @@ pub fn contact_classes(mesh: &Mesh3d, ball: &Ball3) -> ContactClasses {
     out.reflex_edges.sort_unstable();
     out.convex_edges.sort_unstable();
     out.edge_edge.sort_by_key(|c| (c.surface, c.ball));
+    out.face_vertex = face_vertex_classes(mesh, ball, &out.reflex_edges, &out.convex_edges);
     out
+}
+
+/// The FV classes: at every vertex with a reflex edge, the ball facets
+/// whose plane through the vertex leaves the exterior strictly outside
+/// near it (see the module's notes).
+fn face_vertex_classes(mesh: &Mesh3d, ball: &Ball3, reflex: &[[u32; 2]], convex: &[[u32; 2]]) -> Vec<ContactClass> {
+    let p = mesh.positions();
+    let (mut has_reflex, mut has_convex) = (vec![false; p.len()], vec![false; p.len()]);
+    reflex.iter().flatten().for_each(|&i| has_reflex[i as usize] = true);
+    convex.iter().flatten().for_each(|&i| has_convex[i as usize] = true);
+    // A half-edge out of each vertex.
+    let mut out_of = vec![usize::MAX; p.len()];
+    for (h, &v) in mesh.triangles().iter().flatten().enumerate() {
+        out_of[v as usize] = h;
+    }
+    let mut out = Vec::new();
+    for v in (0..p.len()).filter(|&v| has_reflex[v] && out_of[v] != usize::MAX) {
+        let link = link_of(mesh, out_of[v]);
+        let x = p[v];
+        for f in 0..ball.facets().len() {
+            let t = facet_corners(ball, f);
+            let mut tie = false;
+            let beyond = link.iter().all(|&i| {
+                let s = sign_of(&[t[0], t[1], t[2], x, p[i as usize]], &Along { t, from: x, to: p[i as usize] });
+                tie |= s == Ordering::Equal;
+                s != Ordering::Less
+            });
+            if !beyond
+                || (has_convex[v]
+                    && !exterior_is_small_side(t, x, &link.iter().map(|&i| p[i as usize]).collect::<Vec<_>>()))
+            {
+                continue;
+            }
+            out.push(ContactClass {
+                kind: ContactKind3::FaceVertex,
+                ball: Feature3::Facet(f),
+                surface: SurfacePart::Vertex(v as u32),
+                tie,
+            });
+        }
+    }
+    out
+}
+
+/// The neighbours of the vertex that half-edge `start` leaves, in the
+/// order of its triangles around it: triangle `(v, xⱼ, xⱼ₊₁)` is
+/// counter-clockwise seen from outside.
+fn link_of(mesh: &Mesh3d, start: usize) -> Vec<u32> {
+    let tris = mesh.triangles();
+    // Round by twins: the edge into `v` of one triangle, turned, leaves
+    // `v` in the next one (the surface is vertex-manifold).
+    let mut link = Vec::new();
+    let mut h = start;
+    loop {
+        let (t, k) = (h / 3, h % 3);
+        link.push(tris[t][(k + 1) % 3]);
+        h = mesh.twin(3 * t + (k + 2) % 3);
+        if h == start || link.len() > tris.len() {
+            return link;
+        }
+    }
+}
+
+/// Whether the exterior near `x` is the side of its link (`xⱼ` in order,
+/// all beyond the plane through `x` parallel to facet `t`) inside that
+/// half-space: the link projected from `x` onto `ñ·d = 1` turns
+/// counter-clockwise seen from outside, `Σⱼ det(ñ, dⱼ, dⱼ₊₁) / (ñ·dⱼ ñ·dⱼ₊₁)
+/// > 0` for `dⱼ = xⱼ − x`, taken over the common positive denominator.
+fn exterior_is_small_side(t: [Point3; 3], x: Point3, link: &[Point3]) -> bool {
+    let mut values = vec![t[0], t[1], t[2], x];
+    values.extend_from_slice(link);
+    sign_of(&values, &LinkTurn { t, x, link: link.to_vec() }) == Ordering::Greater
+}
+
+/// `Σⱼ det(ñ, dⱼ, dⱼ₊₁) · Πᵢ≠ⱼ,ⱼ₊₁ ñ·dᵢ` (see `exterior_is_small_side`).
+struct LinkTurn {
+    t: [Point3; 3],
+    x: Point3,
+    link: Vec<Point3>,
+}
+
+impl Expr for LinkTurn {
+    fn eval<R: Ring>(&self, units: Units) -> R {
+        let n = normal::<R>(self.t, units);
+        let d: Vec<V3<R>> = self.link.iter().map(|&q| V3::diff(q, self.x, units)).collect();
+        let heights: Vec<R> = d.iter().map(|dj| n.dot(dj)).collect();
+        let k = d.len();
+        let mut sum = R::of(0.0, units);
+        for j in 0..k {
+            let mut term = n.det(&d[j], &d[(j + 1) % k]);
+            for (i, h) in heights.iter().enumerate() {
+                if i != j && i != (j + 1) % k {
+                    term = term.mul(h);
+                }
+            }
+            sum = sum.add(&term);
+        }
+        sum
+    }
 }
 
 /// Each ball vertex's neighbours along the ball's edges.

@@ -7,7 +7,12 @@
 //! is parallel to the ball edge: the point `(a, b)` is
 //! `e₀ + a·(e₁ − e₀) + b·(ṽ* − ṽ)`, so `b = 0` is the edge's line and the
 //! ball `p + s·(B − ṽ)` anchored at `p` reaches that line with its edge
-//! at `s = −b` (at `a` along the edge). Both are differences of given
+//! at `s = −b` (at `a` along the edge). An FV class `(f̃, v)`'s plane
+//! holds `v` and is parallel to the facet: for a representative corner
+//! `ṽ` and two consecutive corners `x̃ₖ, x̃ₖ₊₁` of `f̃` the point `(a, b)`
+//! is `v + a·(ṽ − x̃ₖ) + b·(ṽ − x̃ₖ₊₁)`, so the anchored ball's facet holds
+//! `v` in its sector `ṽ, x̃ₖ, x̃ₖ₊₁` from radius `a + b` on. All are
+//! differences of given
 //! points, so a point with `f64` coordinates `(a, b)` is a rational point
 //! of the plane exactly (the maximal* ball there is decided on it, not a
 //! rounding beside it).
@@ -61,6 +66,13 @@ impl DomainPlane {
     /// from `anchor` (`ṽ`) to `far` (`ṽ*`).
     pub fn of_edge(e0: Point3, e1: Point3, anchor: Point3, far: Point3) -> DomainPlane {
         DomainPlane { base: e0, u: [e0, e1], w: [anchor, far], face: None }
+    }
+
+    /// The contact plane of the vertex `v` and a ball facet, for its
+    /// corner `anchor` (`ṽ`) and the sector towards its corners `xk`,
+    /// `xk1` (consecutive).
+    pub fn of_corner(v: Point3, anchor: Point3, xk: Point3, xk1: Point3) -> DomainPlane {
+        DomainPlane { base: v, u: [xk, anchor], w: [xk1, anchor], face: None }
     }
 
     /// The point `(a, b)`, rounded.

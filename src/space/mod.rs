@@ -19,6 +19,9 @@
 //!   opposite class each.
 //! * [`edge_domain`]: the contact domain of an EE class (between its
 //!   reflex edge and the VE balls' polygonal line) and its arrangement.
+//! * [`corner_domain`]: the contact domain of an FV class (a ball facet
+//!   on a vertex, between its sides and the EV balls' polygonal line) and
+//!   its arrangement.
 //! * [`axis`]: the medial axis of a solid assembled from its domains'
 //!   arrangements, a triangle mesh of sheets with radii.
 
@@ -26,6 +29,7 @@ pub mod along;
 pub mod arrangement;
 pub mod axis;
 pub mod classes;
+pub mod corner_domain;
 pub mod domain;
 pub mod edge_domain;
 pub mod radius;
@@ -34,6 +38,7 @@ pub use along::{opposite_along, opposite_along_in, Along, AlongChange, AlongErro
 pub use arrangement::{domain_arrangement, face_arrangement, Cell, FaceArrangement};
 pub use axis::{medial_axis_3d, Axis3, Axis3Error, Sheet3};
 pub use classes::{contact_classes, ContactClass, ContactClasses};
+pub use corner_domain::{corner_arrangement, CornerArrangement, CornerSector};
 pub use domain::{DomainPlane, Line2};
 pub use edge_domain::{edge_arrangement, EdgeArrangement};
 pub use radius::{radius_fn, Affine3, RadiusFn};

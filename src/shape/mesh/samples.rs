@@ -115,3 +115,54 @@ pub fn l_prism(size: f64, corner: [f64; 2], height: f64, shear: f64) -> Soup {
     }
     (v, t)
 }
+
+/// The union of unit cubes at the integer cells `cells` (`[i, j, k]` is
+/// the cube `[i, i + 1] × [j, j + 1] × [k, k + 1]`), scaled by `size`:
+/// every face between a cell and an empty one as two triangles, facing
+/// outward, vertices shared. Concave corners, saddles and pockets for the
+/// tests of chapter 3; cells meeting only along an edge or at a corner
+/// give a surface that is not manifold there (which validation refuses).
+pub fn polycube(cells: &[[i32; 3]], size: f64) -> Soup {
+    use std::collections::{HashMap, HashSet};
+    let filled: HashSet<[i32; 3]> = cells.iter().copied().collect();
+    let mut index: HashMap<[i32; 3], u32> = HashMap::new();
+    let mut v: Vec<[f64; 3]> = Vec::new();
+    let mut id = |p: [i32; 3]| {
+        *index.entry(p).or_insert_with(|| {
+            v.push(p.map(|x| f64::from(x) * size));
+            (v.len() - 1) as u32
+        })
+    };
+    let mut t = Vec::new();
+    let mut sorted: Vec<[i32; 3]> = filled.iter().copied().collect();
+    sorted.sort_unstable();
+    for c in sorted {
+        for axis in 0..3 {
+            for side in [0, 1] {
+                let mut n = c;
+                n[axis] += if side == 1 { 1 } else { -1 };
+                if filled.contains(&n) {
+                    continue;
+                }
+                // The face's corners counter-clockwise seen along the
+                // outward normal (+axis for side 1, −axis for side 0).
+                let (u, w) = ((axis + 1) % 3, (axis + 2) % 3);
+                let corner = |du: i32, dw: i32| {
+                    let mut p = c;
+                    p[axis] += side;
+                    p[u] += du;
+                    p[w] += dw;
+                    p
+                };
+                let mut q = [corner(0, 0), corner(1, 0), corner(1, 1), corner(0, 1)];
+                if side == 0 {
+                    q.reverse();
+                }
+                let q = q.map(&mut id);
+                t.push([q[0], q[1], q[2]]);
+                t.push([q[0], q[2], q[3]]);
+            }
+        }
+    }
+    (v, t)
+}
