@@ -16,7 +16,7 @@ use common::maximal_oracle::{
 };
 use common::solids::l_prism;
 use medax::kernel::Point3;
-use medax::shape::mesh_samples::{cuboid, torus, union};
+use medax::shape::mesh_samples::{cuboid, polycube, torus, union};
 use medax::shape::{Ball3, Mesh3d, MeshOptions};
 use medax::space::{medial_axis_3d, Axis3, Axis3Error};
 use rand::rngs::SmallRng;
@@ -212,6 +212,75 @@ fn the_axis_of_a_box_with_a_cavity_holds_every_maximal_ball() {
 #[ignore]
 fn axes_of_a_box_with_a_cavity_hold_every_maximal_ball_under_more_balls() {
     check_solids_with(&[("box with a turned cavity", box_with_cavity())], &reflex_balls()[1..], 60, 12);
+}
+
+/// A slab with an L-shaped pocket whose floor has a valley at the L's
+/// inner corner (a saddle a ball facet rests on: a convex edge up,
+/// reflex ones along the floor), and a cube with a corner notched out (a
+/// concave corner where three reflex edges meet): in the slow tier
+/// (release, about a minute).
+#[test]
+#[ignore]
+fn axes_of_a_pocket_and_a_notched_cube_hold_every_maximal_ball() {
+    let mut slab: Vec<[i32; 3]> = Vec::new();
+    for i in 0..4 {
+        for j in 0..4 {
+            slab.push([i, j, 0]);
+            if ![[1, 1], [2, 1], [1, 2]].contains(&[i, j]) {
+                slab.push([i, j, 1]);
+            }
+        }
+    }
+    let mut pocket = polycube(&slab, 1.0);
+    pocket.0.iter_mut().filter(|p| **p == [2.0, 2.0, 1.0]).for_each(|p| p[2] = 0.4);
+    let notch = polycube(&[[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0], [0, 0, 1], [1, 0, 1], [0, 1, 1]], 1.0);
+    let two = &reflex_balls()[..2];
+    check_solids_with(&[("pocket with a valley", solid(pocket)), ("notched cube", solid(notch))], two, 61, 0);
+}
+
+/// Terraces: columns of 1–3 unit cubes on a 4 × 4 grid, every vertex
+/// jittered by up to 0.12 (so no two faces are coplanar and the squares
+/// bend along their diagonals): concave corners, saddles, valleys and
+/// reflex edges of every kind. Where two diagonal columns rise above
+/// both others at a level (cubes meeting along an edge only) one of the
+/// others is raised. `None` when the jitter made the surface cross
+/// itself (refused by validation).
+fn terraces(seed: u64) -> Option<Mesh3d> {
+    let mut rng = SmallRng::seed_from_u64(seed);
+    let mut h = [[0i32; 4]; 4];
+    h.iter_mut().flatten().for_each(|x| *x = rng.gen_range(1..4));
+    let mut changed = true;
+    while changed {
+        changed = false;
+        for i in 0..3 {
+            for j in 0..3 {
+                for k in 1..3 {
+                    let up = |x: i32| x > k;
+                    let (a, b, c, d) = (h[i][j], h[i + 1][j], h[i][j + 1], h[i + 1][j + 1]);
+                    if (up(a) && up(d) && !up(b) && !up(c)) || (up(b) && up(c) && !up(a) && !up(d)) {
+                        let x = if up(a) { &mut h[i + 1][j] } else { &mut h[i][j] };
+                        *x = k + 1;
+                        changed = true;
+                    }
+                }
+            }
+        }
+    }
+    let cells: Vec<[i32; 3]> =
+        (0..4).flat_map(|i| (0..4).flat_map(move |j| (0..h[i][j]).map(move |k| [i as i32, j as i32, k]))).collect();
+    let mut soup = polycube(&cells, 1.0);
+    soup.0.iter_mut().flatten().for_each(|x| *x += rng.gen_range(-0.12..0.12));
+    Mesh3d::from_triangles(&soup.0, &soup.1, &MeshOptions::default()).ok()
+}
+
+/// Two terraces under the turned tetrahedron: in the slow tier (release,
+/// about half a minute).
+#[test]
+#[ignore]
+fn axes_of_jittered_terraces_hold_every_maximal_ball() {
+    let solids: Vec<(&str, Mesh3d)> = (0..40).filter_map(terraces).take(2).map(|m| ("terraces", m)).collect();
+    assert_eq!(solids.len(), 2);
+    check_solids_with(&solids, &reflex_balls()[..1], 62, 0);
 }
 
 /// Balls resting with a facet on a concave corner `v`: for the facet's

@@ -1,7 +1,9 @@
 //! Convex solids from small sets of points on an integer grid (coplanar
 //! and collinear points, faces parallel to ball facets: far from general
-//! position), and L-shaped prisms (a reflex edge: EE classes) with a cut
-//! corner, height and shear from the input, under the preset balls and
+//! position), L-shaped prisms (a reflex edge: EE classes) with a cut
+//! corner, height and shear from the input, and polycubes of up to 12
+//! cells on a 3 × 3 × 2 grid, jittered or not (concave corners, saddles,
+//! valleys: FV classes), under the preset balls and
 //! random hulls: the 3D medial axis or a typed error, never a panic or a
 //! hang; an axis returned is sound (every vertex inside, its radius the
 //! largest ball there).
@@ -9,7 +11,7 @@
 
 use libfuzzer_sys::fuzz_target;
 use medax::kernel::Point3;
-use medax::shape::mesh_samples::l_prism;
+use medax::shape::mesh_samples::{l_prism, polycube};
 use medax::shape::{Ball3, Faces, Mesh3d, MeshOptions};
 use medax::space::medial_axis_3d;
 
@@ -32,6 +34,25 @@ fuzz_target!(|input: (Vec<(i8, i8, i8)>, u8, Vec<(i8, i8, i8)>)| {
             Err(_) => return,
         },
     };
+    if which & 0x40 != 0 {
+        // A polycube; with 0x20 every vertex moved by up to ±0.12 (a
+        // fixed pattern), so no two faces are coplanar.
+        let cells: Vec<[i32; 3]> = points
+            .iter()
+            .map(|&(x, y, z)| [i32::from(x).rem_euclid(3), i32::from(y).rem_euclid(3), i32::from(z).rem_euclid(2)])
+            .collect();
+        let (mut v, t) = polycube(&cells, 1.0);
+        if which & 0x20 != 0 {
+            for (i, p) in v.iter_mut().enumerate() {
+                for (k, x) in p.iter_mut().enumerate() {
+                    *x += (((i * 7919 + k * 104_729) % 17) as f64 / 16.0 - 0.5) * 0.24;
+                }
+            }
+        }
+        let Ok(m) = Mesh3d::from_triangles(&v, &t, &MeshOptions::default()) else { return };
+        check(&m, &ball);
+        return;
+    }
     if which & 0x80 != 0 {
         // An L prism: the square [0, 4]² less the corner from (cx, cy),
         // extruded to a height, sheared.
