@@ -171,6 +171,7 @@ fn check_solids_with(solids: &[(&str, Mesh3d)], balls: &[(&str, Ball3)], seed: u
             assert!(probes == 12, "{what}: only {probes} sliding balls found");
             let corners = corner_probes(m, ball, &pl, &reflex, &axis, &mut rng, &what);
             worst = worst.max(corners.1);
+            check_jump_sheets(m, ball, &pl, &axis, &what);
             assert!(corners.0 >= want_corners, "{what}: only {} balls resting on a corner found", corners.0);
             eprintln!(
                 "{what}: {} vertices, {} triangles, {} sheets; worst probe {:.1e} of the diagonal",
@@ -281,6 +282,53 @@ fn axes_of_jittered_terraces_hold_every_maximal_ball() {
     let solids: Vec<(&str, Mesh3d)> = (0..40).filter_map(terraces).take(2).map(|m| ("terraces", m)).collect();
     assert_eq!(solids.len(), 2);
     check_solids_with(&solids, &reflex_balls()[..1], 62, 0);
+}
+
+/// A sheet is a jump sheet iff its balls grow by scaling about a point
+/// of both ball features (thesis 3.1.4): at the centroid of each sheet's
+/// largest triangle, the ball scaled by 1 + 10^-6 about the copy of one
+/// of the features' ball vertices stays inside (the oracle's largest ball
+/// at the new centre is as large) for a jump sheet, for none of them
+/// otherwise (the other contact pokes out).
+fn check_jump_sheets(m: &Mesh3d, ball: &Ball3, pl: &[(Point3, f64)], axis: &Axis3, what: &str) {
+    use medax::shape::Feature3;
+    let tris: Vec<[Point3; 3]> = m.triangles().iter().map(|t| t.map(|i| m.positions()[i as usize])).collect();
+    let corners = |x: Feature3| match x {
+        Feature3::Vertex(v) => vec![v],
+        Feature3::Edge(k) => ball.edges()[k].vertices.to_vec(),
+        Feature3::Facet(f) => ball.facets()[f].vertices.clone(),
+    };
+    let (mut jumps, mut checked) = (0, 0);
+    for sheet in &axis.sheets {
+        let corner = |k: u32| axis.vertices[k as usize];
+        let area = |t: u32| {
+            let [a, b, c] = axis.triangles[t as usize].map(|k| {
+                let q = corner(k);
+                Point3::new(q[0], q[1], q[2])
+            });
+            (b - a).cross(c - a).norm()
+        };
+        let Some(&t) = sheet.triangles.iter().max_by(|&&x, &&y| area(x).total_cmp(&area(y))) else { continue };
+        if area(t) < 1e-6 * m.bbox().diagonal().powi(2) {
+            continue;
+        }
+        let q = axis.triangles[t as usize].map(corner);
+        let mean = |k: usize| (q[0][k] + q[1][k] + q[2][k]) / 3.0;
+        let (c, r) = (Point3::new(mean(0), mean(1), mean(2)), mean(3));
+        let mut from: Vec<usize> = corners(sheet.classes[0].ball);
+        from.extend(corners(sheet.classes[1].ball));
+        let f = 1.0 + 1e-6;
+        let grows = from.iter().any(|&v| {
+            let p = c + ball.vertices()[v] * r;
+            let c2 = p + (c - p) * f;
+            let r2 = tris.iter().map(|&x| least_gauge(ball, pl, c2, x)).fold(f64::INFINITY, f64::min);
+            r2 >= r * f - 1e-9 * r
+        });
+        assert_eq!(grows, sheet.jump, "{what}: sheet {:?} (jump {}) at {c:?}", sheet.classes, sheet.jump);
+        jumps += usize::from(sheet.jump);
+        checked += 1;
+    }
+    eprintln!("{what}: {checked} sheets checked for jumps, {jumps} jump sheets");
 }
 
 /// Balls resting with a facet on a concave corner `v`: for the facet's

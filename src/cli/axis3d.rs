@@ -21,7 +21,7 @@ fn axis_json(axis: &Axis3) -> serde_json::Value {
         .iter()
         .map(|s| {
             let classes: Vec<_> = s.classes.iter().map(class_json).collect();
-            json!({"kind": "sheet", "triangles": s.triangles, "classes": classes})
+            json!({"kind": if s.jump { "jump_sheet" } else { "sheet" }, "triangles": s.triangles, "classes": classes})
         })
         .collect();
     json!({"vertices": axis.vertices, "triangles": axis.triangles, "sheets": sheets})

@@ -36,9 +36,14 @@ use crate::util::fast_hash::FastMap;
 /// contact classes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Sheet3 {
-    /// Its two classes, the lesser first (VF before EE; then by ball
-    /// feature and surface feature).
+    /// Its two classes, the lesser first (VF before EE before FV; then by
+    /// ball feature and surface feature).
     pub classes: [Opposite; 2],
+    /// A jump sheet: the two classes' ball features share a vertex
+    /// (neighbouring on the ball, Definition 3.1.10), so its balls are
+    /// maximal* but not maximal inscribed — scaled about the shared part
+    /// they grow or shrink along the sheet (thesis 3.1.4).
+    pub jump: bool,
     /// Its triangles, indices into [`Axis3::triangles`].
     pub triangles: Vec<u32>,
 }
@@ -152,13 +157,7 @@ struct Domain {
 /// VF class has one domain (its vertex); an EE class one per end of its
 /// ball edge. `None` when none is (not a sheet of these two alone).
 fn sheet_domain(mesh: &Mesh3d, ball: &Ball3, a: Opposite, b: Opposite) -> Option<(Opposite, usize)> {
-    let anchors = |c: Opposite| -> Vec<usize> {
-        match c.ball {
-            Feature3::Vertex(v) => vec![v],
-            Feature3::Edge(k) => ball.edges().get(k).map_or(Vec::new(), |e| e.vertices.to_vec()),
-            Feature3::Facet(f) => ball.facets().get(f).map_or(Vec::new(), |x| x.vertices.clone()),
-        }
-    };
+    let anchors = |c: Opposite| corners_of(ball, c.ball);
     let mut best: Option<(Opposite, usize)> = None;
     for (own, other) in [(a, b), (b, a)] {
         for v in anchors(own) {
@@ -168,6 +167,17 @@ fn sheet_domain(mesh: &Mesh3d, ball: &Ball3, a: Opposite, b: Opposite) -> Option
         }
     }
     best
+}
+
+/// The ball vertices of a ball feature (a domain's representative
+/// vertices: a VF class has one, an EE class one per end of its edge, an
+/// FV class one per corner of its facet).
+fn corners_of(ball: &Ball3, x: Feature3) -> Vec<usize> {
+    match x {
+        Feature3::Vertex(v) => vec![v],
+        Feature3::Edge(k) => ball.edges().get(k).map_or(Vec::new(), |e| e.vertices.to_vec()),
+        Feature3::Facet(f) => ball.facets().get(f).map_or(Vec::new(), |x| x.vertices.clone()),
+    }
 }
 
 /// The medial axis of the solid `mesh` under `ball` (thesis 3.3).
@@ -281,7 +291,9 @@ pub fn medial_axis_3d(mesh: &Mesh3d, ball: &Ball3) -> Result<Axis3, Axis3Error> 
                 .collect();
             let key = (d.own.min(other), d.own.max(other));
             let s = *sheet_of.entry(key).or_insert_with(|| {
-                out.sheets.push(Sheet3 { classes: [key.0, key.1], triangles: Vec::new() });
+                let shared = corners_of(ball, key.1.ball);
+                let jump = corners_of(ball, key.0.ball).iter().any(|v| shared.contains(v));
+                out.sheets.push(Sheet3 { classes: [key.0, key.1], jump, triangles: Vec::new() });
                 out.sheets.len() - 1
             });
             for k in 1..ids.len().saturating_sub(1) {
