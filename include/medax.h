@@ -228,73 +228,6 @@ typedef enum mx_conic_kind {
 } mx_conic_kind;
 
 /**
- * Which features of ball and shape are in contact (thesis 3.1.2).
- */
-typedef enum mx_contact_kind {
-  /**
-   * A ball vertex on the inside of a shape edge.
-   */
-  MX_CONTACT_VE = 0,
-  /**
-   * A ball edge on a (reflex) shape vertex.
-   */
-  MX_CONTACT_EV = 1,
-  /**
-   * A ball edge along a parallel shape edge (outside general position).
-   */
-  MX_CONTACT_EE = 2,
-} mx_contact_kind;
-
-/**
- * `mx_ignored.kind`: why something of a drawing is in no shape.
- */
-typedef enum mx_ignored_kind {
-  /**
-   * Curves that close no loop.
-   */
-  MX_IGNORED_OPEN_CHAIN = 1,
-  /**
-   * An entity that is not a curve medax reads.
-   */
-  MX_IGNORED_ENTITY = 2,
-  /**
-   * The curves of a layer left out by the selection.
-   */
-  MX_IGNORED_OTHER_LAYER = 3,
-  /**
-   * A loop enclosing no area in sum.
-   */
-  MX_IGNORED_FLAT_LOOP = 4,
-  /**
-   * A copy of a loop drawn twice.
-   */
-  MX_IGNORED_DUPLICATE_LOOP = 5,
-  /**
-   * A hole touching or crossing another loop of its shape.
-   */
-  MX_IGNORED_TOUCHING_LOOP = 6,
-  /**
-   * An outer loop with its holes that does not validate.
-   */
-  MX_IGNORED_INVALID_SHAPE = 7,
-} mx_ignored_kind;
-
-/**
- * `mx_warning.kind`.
- */
-typedef enum mx_warning_kind {
-  /**
-   * Curve ends that did not meet within the validation tolerance were
-   * joined (within the chaining tolerance).
-   */
-  MX_WARNING_GAP_CLOSED = 1,
-  /**
-   * Two shapes touch or cross (both kept).
-   */
-  MX_WARNING_TOUCHING_SHAPES = 2,
-} mx_warning_kind;
-
-/**
  * The contact type of a ball touching a surface (thesis 3.1.2).
  */
 typedef enum mx_contact3_kind {
@@ -360,6 +293,73 @@ typedef enum mx_surface_part3 {
    */
   MX_SURFACE_FACE = 2,
 } mx_surface_part3;
+
+/**
+ * Which features of ball and shape are in contact (thesis 3.1.2).
+ */
+typedef enum mx_contact_kind {
+  /**
+   * A ball vertex on the inside of a shape edge.
+   */
+  MX_CONTACT_VE = 0,
+  /**
+   * A ball edge on a (reflex) shape vertex.
+   */
+  MX_CONTACT_EV = 1,
+  /**
+   * A ball edge along a parallel shape edge (outside general position).
+   */
+  MX_CONTACT_EE = 2,
+} mx_contact_kind;
+
+/**
+ * `mx_ignored.kind`: why something of a drawing is in no shape.
+ */
+typedef enum mx_ignored_kind {
+  /**
+   * Curves that close no loop.
+   */
+  MX_IGNORED_OPEN_CHAIN = 1,
+  /**
+   * An entity that is not a curve medax reads.
+   */
+  MX_IGNORED_ENTITY = 2,
+  /**
+   * The curves of a layer left out by the selection.
+   */
+  MX_IGNORED_OTHER_LAYER = 3,
+  /**
+   * A loop enclosing no area in sum.
+   */
+  MX_IGNORED_FLAT_LOOP = 4,
+  /**
+   * A copy of a loop drawn twice.
+   */
+  MX_IGNORED_DUPLICATE_LOOP = 5,
+  /**
+   * A hole touching or crossing another loop of its shape.
+   */
+  MX_IGNORED_TOUCHING_LOOP = 6,
+  /**
+   * An outer loop with its holes that does not validate.
+   */
+  MX_IGNORED_INVALID_SHAPE = 7,
+} mx_ignored_kind;
+
+/**
+ * `mx_warning.kind`.
+ */
+typedef enum mx_warning_kind {
+  /**
+   * Curve ends that did not meet within the validation tolerance were
+   * joined (within the chaining tolerance).
+   */
+  MX_WARNING_GAP_CLOSED = 1,
+  /**
+   * Two shapes touch or cross (both kept).
+   */
+  MX_WARNING_TOUCHING_SHAPES = 2,
+} mx_warning_kind;
 
 /**
  * Where a point lies relative to a solid.
@@ -512,6 +512,13 @@ typedef enum mx_pocket_order {
  * threads at once.
  */
 typedef struct mx_axis mx_axis;
+
+/**
+ * The medial axis of a solid under a space ball (`mx_mesh3d_axis`).
+ * Immutable: a `const mx_axis3d*` may be used from several threads at
+ * once.
+ */
+typedef struct mx_axis3d mx_axis3d;
 
 /**
  * A unit ball: a convex polygon (plane) or polytope (space) holding the
@@ -685,6 +692,79 @@ typedef struct mx_axis_edge {
    */
   struct mx_axis_site sites[2];
 } mx_axis_edge;
+
+/**
+ * Options for `mx_mesh3d_axis`. Initialise with
+ * `mx_axis3d_options_init(&o, sizeof o)`, then change fields.
+ */
+typedef struct mx_axis3d_options {
+  /**
+   * `sizeof(mx_axis3d_options)` as the caller was compiled.
+   */
+  size_t struct_size;
+  /**
+   * Worker threads: 0 = the shared pool (all cores), else a pool of
+   * exactly this many (at most `MX_AXIS_MAX_THREADS`).
+   */
+  size_t threads;
+  /**
+   * Called on the calling thread about every 50 ms with the fraction of
+   * the contact domains done; a nonzero return cancels
+   * (`MX_ERR_CANCELLED`, soon after: the domains under way finish).
+   * NULL: none.
+   */
+  mx_progress_fn progress;
+  /**
+   * Passed to `progress`.
+   */
+  void *user;
+} mx_axis3d_options;
+
+/**
+ * A contact class of a sheet: a ball feature and a surface feature.
+ */
+typedef struct mx_axis3d_class {
+  /**
+   * The contact type: VF, EE or FV.
+   */
+  enum mx_contact3_kind kind;
+  /**
+   * The ball's feature: a vertex, an edge or a facet.
+   */
+  enum mx_ball_part3 ball_part;
+  /**
+   * Its index into the ball's vertices, edges or facets.
+   */
+  size_t ball_part_index;
+  /**
+   * The surface's feature: a face (VF), an edge (EE) or a vertex (FV).
+   */
+  enum mx_surface_part3 surface_part;
+  /**
+   * A face: its triangle index twice; an edge: its two vertices, the
+   * lesser first; a vertex: its index twice.
+   */
+  size_t surface_index[2];
+} mx_axis3d_class;
+
+/**
+ * A sheet of the axis: its two contact classes and triangles.
+ */
+typedef struct mx_axis3d_sheet {
+  /**
+   * The two classes, the lesser first.
+   */
+  struct mx_axis3d_class classes[2];
+  /**
+   * 1 for a jump sheet (the classes' ball features share a vertex: its
+   * balls are maximal* but not maximal inscribed), else 0.
+   */
+  int jump;
+  /**
+   * Its number of triangles (`mx_axis3d_sheet_triangles`).
+   */
+  size_t triangle_count;
+} mx_axis3d_sheet;
 
 /**
  * The contact classes on the two sides of an edge of an axis under a
@@ -1878,6 +1958,107 @@ enum mx_status mx_axis_edge_sample(const struct mx_axis *axis,
                                    double *xyr,
                                    size_t capacity,
                                    size_t *count);
+
+/**
+ * Fills the caller's `mx_axis3d_options` with the defaults (`size` its
+ * `sizeof`; as `mx_axis_options_init`).
+ *
+ * # Safety
+ * `out` NULL or valid for `size` bytes of writes.
+ */
+enum mx_status mx_axis3d_options_init(struct mx_axis3d_options *out, size_t size);
+
+/**
+ * Computes the medial axis of the solid `mesh` under the space ball
+ * `ball` (thesis 3.3): a non-manifold triangle mesh of planar sheets
+ * whose vertices carry the radius of their largest ball. `options` NULL:
+ * the defaults. Errors: `MX_ERR_INVALID_ARGUMENT` for a plane ball or bad
+ * options, `MX_ERR_DEGENERATE` for input outside general position (a
+ * face, reflex edge or vertex's edge parallel to a ball feature, or a
+ * turned ball's facet not exactly planar with reflex edges; the message
+ * names the element), `MX_ERR_NUMERICAL` when a contact arrangement could
+ * not be resolved, `MX_ERR_CANCELLED`; `*out` is then untouched.
+ *
+ * # Safety
+ * `mesh`, `ball` NULL or live handles; `options` NULL or valid; `out`
+ * NULL or writable.
+ */
+enum mx_status mx_mesh3d_axis(const struct mx_mesh3d *mesh,
+                              const struct mx_ball *ball,
+                              const struct mx_axis3d_options *options,
+                              struct mx_axis3d **out);
+
+/**
+ * Releases an axis. NULL is a no-op.
+ *
+ * # Safety
+ * `axis` NULL or a handle from medax not yet freed.
+ */
+void mx_axis3d_free(struct mx_axis3d *axis);
+
+/**
+ * Copies the vertices as x, y, z, r quadruples (`r` the radius of the
+ * largest ball `c + r·B` inside the solid there) into `xyzr` of
+ * `capacity` vertices and writes their number to `*count` (capacity 0: a
+ * size query; a shorter buffer: `MX_ERR_BUFFER_TOO_SMALL`, nothing
+ * written).
+ *
+ * # Safety
+ * `axis` NULL or a live handle; `xyzr` NULL or `4 * capacity` writable
+ * doubles; `count` NULL or writable.
+ */
+enum mx_status mx_axis3d_vertices(const struct mx_axis3d *axis,
+                                  double *xyzr,
+                                  size_t capacity,
+                                  size_t *count);
+
+/**
+ * Copies the triangles as vertex index triples into `abc` of `capacity`
+ * triangles and writes their number to `*count` (the buffer protocol of
+ * `mx_axis3d_vertices`).
+ *
+ * # Safety
+ * `axis` NULL or a live handle; `abc` NULL or `3 * capacity` writable
+ * `uint32_t`; `count` NULL or writable.
+ */
+enum mx_status mx_axis3d_triangles(const struct mx_axis3d *axis,
+                                   uint32_t *abc,
+                                   size_t capacity,
+                                   size_t *count);
+
+/**
+ * Number of sheets.
+ *
+ * # Safety
+ * `axis` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_axis3d_sheet_count(const struct mx_axis3d *axis, size_t *out);
+
+/**
+ * Sheet `index` (`MX_ERR_INDEX_OUT_OF_RANGE` unless below
+ * `mx_axis3d_sheet_count`).
+ *
+ * # Safety
+ * `axis` NULL or a live handle; `out` NULL or writable.
+ */
+enum mx_status mx_axis3d_get_sheet(const struct mx_axis3d *axis,
+                                   size_t index,
+                                   struct mx_axis3d_sheet *out);
+
+/**
+ * Copies the triangle indices (into `mx_axis3d_triangles`) of sheet
+ * `index` into `triangles` of `capacity` and writes their number to
+ * `*count` (the buffer protocol of `mx_axis3d_vertices`).
+ *
+ * # Safety
+ * `axis` NULL or a live handle; `triangles` NULL or `capacity` writable
+ * `uint32_t`; `count` NULL or writable.
+ */
+enum mx_status mx_axis3d_sheet_triangles(const struct mx_axis3d *axis,
+                                         size_t index,
+                                         uint32_t *triangles,
+                                         size_t capacity,
+                                         size_t *count);
 
 /**
  * A plane ball from `count` vertices `xy` (x0, y0, x1, y1, …, either

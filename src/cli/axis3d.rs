@@ -6,8 +6,8 @@
 use super::query3d::{feature_json, kind_name, parse_ball, part_json};
 use super::{write_file, write_streamed};
 use medax::io::mesh::write_obj;
-use medax::shape::{Mesh3d, MeshOptions};
-use medax::space::{medial_axis_3d, Axis3, Opposite};
+use medax::shape::{Ball3, Mesh3d, MeshOptions};
+use medax::space::{medial_axis_3d_watched, Axis3, Opposite, Watch};
 use serde_json::json;
 use std::io::Write;
 use std::path::Path;
@@ -55,9 +55,34 @@ fn write_ply_radius(w: &mut impl Write, axis: &Axis3) -> std::io::Result<()> {
     Ok(())
 }
 
+/// The axis, with a line of progress on stderr every five seconds while
+/// it runs (a large solid takes minutes).
+fn axis_with_progress(mesh: &Mesh3d, ball: &Ball3, threads: Option<usize>) -> Result<Axis3, String> {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.unwrap_or(0))
+        .build()
+        .map_err(|e| format!("cannot start threads: {e}"))?;
+    let watch = Watch::default();
+    std::thread::scope(|scope| {
+        let job = scope.spawn(|| pool.install(|| medial_axis_3d_watched(mesh, ball, &watch)));
+        let start = std::time::Instant::now();
+        let mut said = 0;
+        while !job.is_finished() {
+            std::thread::sleep(std::time::Duration::from_millis(50));
+            let secs = start.elapsed().as_secs();
+            if secs >= 5 * (said + 1) {
+                said = secs / 5;
+                eprintln!("medax: axis3d {:.0} % of the contact domains ({secs} s)", 100.0 * watch.fraction());
+            }
+        }
+        job.join().map_err(|_| "the axis computation panicked (a defect)".to_string())?.map_err(|e| e.to_string())
+    })
+}
+
 pub fn run(
     mesh_path: &Path,
     ball: &str,
+    threads: Option<usize>,
     json_out: Option<&Path>,
     obj: Option<&Path>,
     ply: Option<&Path>,
@@ -70,7 +95,8 @@ pub fn run(
     let mesh = Mesh3d::from_path(mesh_path, &MeshOptions::default())
         .map_err(|e| fail(format!("{}: {e}", mesh_path.display()), 1))?;
     let start = std::time::Instant::now();
-    let axis = medial_axis_3d(&mesh, &ball).map_err(|e| fail(format!("{}: {e}", mesh_path.display()), 1))?;
+    let axis =
+        axis_with_progress(&mesh, &ball, threads).map_err(|e| fail(format!("{}: {e}", mesh_path.display()), 1))?;
     eprintln!(
         "medax: axis of {} triangles: {} sheets, {} triangles, {} vertices in {:.3} s",
         mesh.triangles().len(),

@@ -245,14 +245,18 @@ enum Command {
         #[arg(long)]
         json: Option<PathBuf>,
     },
-    /// The medial axis of a solid under a space ball (convex solids so far): JSON (vertices with radii,
-    /// triangles, sheets with their contact classes), OBJ, or PLY coloured by radius.
+    /// The medial axis of a solid under a space ball: JSON (vertices with radii, triangles, sheets with
+    /// their contact classes), OBJ, or PLY coloured by radius; progress on stderr.
     Axis3d {
         /// The solid: .obj, .off, .stl or .ply.
         mesh: PathBuf,
-        /// The space ball: tetra, cube, octa, icosa, geodesic:N, or a mesh file (the hull of its vertices).
+        /// The space ball: tetra, cube, octa, icosa, geodesic:N, or a mesh file (the hull of its vertices);
+        /// NAME@RX,RY,RZ turns it by a rotation vector (radians).
         #[arg(long)]
         ball: String,
+        /// Worker threads (default: all cores).
+        #[arg(long)]
+        threads: Option<usize>,
         /// Write the axis JSON here (default: print it, unless --obj or --ply is given).
         #[arg(long)]
         json: Option<PathBuf>,
@@ -342,8 +346,8 @@ pub fn run() -> ExitCode {
         Command::Query3d { mesh, ball, points, exact, json } => {
             query3d::run(&mesh, ball.as_deref(), &points, exact, json.as_deref())
         }
-        Command::Axis3d { mesh, ball, json, obj, ply } => {
-            axis3d::run(&mesh, &ball, json.as_deref(), obj.as_deref(), ply.as_deref())
+        Command::Axis3d { mesh, ball, threads, json, obj, ply } => {
+            axis3d::run(&mesh, &ball, threads, json.as_deref(), obj.as_deref(), ply.as_deref())
         }
         Command::Axis(args) => axis::run(&args),
         Command::Voronoi(args) => voronoi::run(&args),

@@ -13,6 +13,7 @@
 #![allow(non_camel_case_types, reason = "C names: the `mx_` prefix and snake_case, as in include/medax.h")]
 
 mod axis;
+mod axis3d;
 mod ball;
 mod ball3;
 mod ball_axis;
@@ -37,6 +38,7 @@ mod version;
 mod voronoi;
 
 pub use axis::*;
+pub use axis3d::*;
 pub use ball::*;
 pub use ball3::*;
 pub use ball_axis::*;

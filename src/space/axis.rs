@@ -22,7 +22,7 @@
 
 use super::along::{AlongError, Opposite};
 use super::arrangement::{face_arrangement, Cell};
-use super::classes::contact_classes;
+use super::classes::{contact_classes, ContactClass};
 use super::corner_domain::corner_arrangement;
 use super::domain::DomainPlane;
 use super::edge_domain::edge_arrangement;
@@ -31,6 +31,7 @@ use crate::kernel::Point3;
 use crate::shape::ball::{Ball3, ContactKind3, Feature3};
 use crate::shape::{Mesh3d, SurfacePart};
 use crate::util::fast_hash::FastMap;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 /// A sheet of the axis: the centres of the maximal* balls touching two
 /// contact classes.
@@ -97,6 +98,8 @@ pub enum Axis3Error {
         /// The surface vertex touched.
         vertex: u32,
     },
+    /// Cancelled through [`Watch::cancel`].
+    Cancelled,
     /// A domain's arrangement failed.
     Arrangement {
         /// Its class.
@@ -125,6 +128,7 @@ impl std::fmt::Display for Axis3Error {
             Axis3Error::OppositeFaceVertex { vertex } => {
                 write!(f, "a maximal* ball touches vertex {vertex} with a facet that is no contact class there (a defect)")
             }
+            Axis3Error::Cancelled => write!(f, "cancelled"),
             Axis3Error::Arrangement { class, error } => match (class.ball, class.surface) {
                 (_, SurfacePart::Face(t)) => write!(f, "triangle {t}: {error}"),
                 (Feature3::Edge(k), SurfacePart::Edge(e)) => {
@@ -140,6 +144,49 @@ impl std::fmt::Display for Axis3Error {
 }
 
 impl std::error::Error for Axis3Error {}
+
+/// Progress of a 3D axis computation, shared with another thread: how
+/// many contact domains are done of how many, and a request to stop.
+#[derive(Debug, Default)]
+pub struct Watch {
+    done: AtomicUsize,
+    total: AtomicUsize,
+    cancel: AtomicBool,
+}
+
+impl Watch {
+    /// The fraction of the domains done, in `[0, 1]` (0 before they are
+    /// counted).
+    pub fn fraction(&self) -> f64 {
+        let total = self.total.load(Ordering::Relaxed);
+        if total == 0 {
+            0.0
+        } else {
+            self.done.load(Ordering::Relaxed) as f64 / total as f64
+        }
+    }
+
+    /// Asks the computation to stop.
+    pub fn cancel(&self) {
+        self.cancel.store(true, Ordering::Relaxed);
+    }
+
+    /// Whether [`cancel`](Self::cancel) was called.
+    pub fn is_cancelled(&self) -> bool {
+        self.cancel.load(Ordering::Relaxed)
+    }
+}
+
+/// One contact domain to build.
+#[derive(Debug, Clone, Copy)]
+enum Job {
+    /// A face (its VF class).
+    Face(u32),
+    /// An EE class, for one end of its ball edge.
+    Edge(ContactClass, usize),
+    /// An FV class, for one corner of its facet.
+    Corner(ContactClass, usize),
+}
 
 /// One domain's arrangement with what maps it to the axis.
 struct Domain {
@@ -188,6 +235,17 @@ fn corners_of(ball: &Ball3, x: Feature3) -> Vec<usize> {
 /// face, reflex edge or vertex's edge parallel to a ball feature, a
 /// domain's arrangement failing (see [`AlongError`]).
 pub fn medial_axis_3d(mesh: &Mesh3d, ball: &Ball3) -> Result<Axis3, Axis3Error> {
+    medial_axis_3d_watched(mesh, ball, &Watch::default())
+}
+
+/// [`medial_axis_3d`] reporting its progress to `watch` (domains done of
+/// all) and stopping with [`Axis3Error::Cancelled`] soon after
+/// [`Watch::cancel`] (each domain checks it before it starts).
+///
+/// # Errors
+///
+/// As [`medial_axis_3d`], and [`Axis3Error::Cancelled`].
+pub fn medial_axis_3d_watched(mesh: &Mesh3d, ball: &Ball3, watch: &Watch) -> Result<Axis3, Axis3Error> {
     use rayon::prelude::*;
     let classes = contact_classes(mesh, ball);
     if !classes.reflex_edges.is_empty() {
@@ -216,54 +274,75 @@ pub fn medial_axis_3d(mesh: &Mesh3d, ball: &Ball3) -> Result<Axis3, Axis3Error> 
     }
     let reach = ball.reach();
     let w = ball.vertices();
-    let faces = (0..mesh.triangles().len() as u32).into_par_iter().map(|f| {
-        let own = Opposite {
-            ball: Feature3::Vertex(anchor[f as usize]),
-            surface: SurfacePart::Face(f),
-            kind: ContactKind3::VertexFace,
+    // Every domain is one job: a face, an EE class for one end of its
+    // ball edge, an FV class for one corner of its facet.
+    let mut jobs: Vec<Job> = (0..mesh.triangles().len() as u32).map(Job::Face).collect();
+    for c in &classes.edge_edge {
+        jobs.extend([Job::Edge(*c, 0), Job::Edge(*c, 1)]);
+    }
+    for c in &classes.face_vertex {
+        let corners = match c.ball {
+            Feature3::Facet(f) => ball.facets().get(f).map_or(0, |x| x.vertices.len()),
+            _ => 0,
         };
-        let failed = |error| Axis3Error::Arrangement { class: own, error };
-        let arr = face_arrangement(mesh, &reach, f, anchor[f as usize]).map_err(failed)?;
-        let plane = DomainPlane::of_face(mesh, f).ok_or(failed(AlongError::NoClass))?;
-        Ok(Domain { own, plane, anchor_index: arr.anchor, anchor: w[arr.anchor], cells: arr.cells })
-    });
-    let edge_ends: Vec<_> = classes.edge_edge.iter().flat_map(|c| [(c, 0), (c, 1)]).collect();
-    let edges = edge_ends.par_iter().map(|&(c, end)| {
-        let own = Opposite { ball: c.ball, surface: c.surface, kind: ContactKind3::EdgeEdge };
-        let failed = |error| Axis3Error::Arrangement { class: own, error };
-        let (Feature3::Edge(k), SurfacePart::Edge(e)) = (c.ball, c.surface) else {
-            return Err(failed(AlongError::NoClass));
+        jobs.extend((0..corners).map(|k| Job::Corner(*c, k)));
+    }
+    watch.total.store(jobs.len(), Ordering::Relaxed);
+    let domain = |job: &Job| -> Result<Vec<Domain>, Axis3Error> {
+        if watch.is_cancelled() {
+            return Err(Axis3Error::Cancelled);
+        }
+        let got = match *job {
+            Job::Face(f) => {
+                let own = Opposite {
+                    ball: Feature3::Vertex(anchor[f as usize]),
+                    surface: SurfacePart::Face(f),
+                    kind: ContactKind3::VertexFace,
+                };
+                let failed = |error| Axis3Error::Arrangement { class: own, error };
+                let arr = face_arrangement(mesh, &reach, f, anchor[f as usize]).map_err(failed)?;
+                let plane = DomainPlane::of_face(mesh, f).ok_or(failed(AlongError::NoClass))?;
+                vec![Domain { own, plane, anchor_index: arr.anchor, anchor: w[arr.anchor], cells: arr.cells }]
+            }
+            Job::Edge(c, end) => {
+                let own = Opposite { ball: c.ball, surface: c.surface, kind: ContactKind3::EdgeEdge };
+                let failed = |error| Axis3Error::Arrangement { class: own, error };
+                let (Feature3::Edge(k), SurfacePart::Edge(e)) = (c.ball, c.surface) else {
+                    return Err(failed(AlongError::NoClass));
+                };
+                let arr = edge_arrangement(mesh, &reach, e, k, end).map_err(failed)?;
+                vec![Domain {
+                    own,
+                    plane: arr.plane,
+                    anchor_index: arr.anchor,
+                    anchor: w[arr.anchor],
+                    cells: arr.cells,
+                }]
+            }
+            Job::Corner(c, k) => {
+                let own = Opposite { ball: c.ball, surface: c.surface, kind: ContactKind3::FaceVertex };
+                let failed = |error| Axis3Error::Arrangement { class: own, error };
+                let (Feature3::Facet(f), SurfacePart::Vertex(v)) = (c.ball, c.surface) else {
+                    return Err(failed(AlongError::NoClass));
+                };
+                let arr = corner_arrangement(mesh, &reach, v, f, k).map_err(failed)?;
+                let sectors = arr.sectors.into_iter();
+                sectors
+                    .map(|s| Domain {
+                        own,
+                        plane: s.plane,
+                        anchor_index: arr.anchor,
+                        anchor: w[arr.anchor],
+                        cells: s.cells,
+                    })
+                    .collect()
+            }
         };
-        let arr = edge_arrangement(mesh, &reach, e, k, end).map_err(failed)?;
-        Ok(Domain { own, plane: arr.plane, anchor_index: arr.anchor, anchor: w[arr.anchor], cells: arr.cells })
-    });
-    let corner_reps: Vec<_> = classes
-        .face_vertex
-        .iter()
-        .flat_map(|c| {
-            let n = match c.ball {
-                Feature3::Facet(f) => ball.facets().get(f).map_or(0, |x| x.vertices.len()),
-                _ => 0,
-            };
-            (0..n).map(move |k| (c, k))
-        })
-        .collect();
-    let corners = corner_reps.par_iter().map(|&(c, k)| {
-        let own = Opposite { ball: c.ball, surface: c.surface, kind: ContactKind3::FaceVertex };
-        let failed = |error| Axis3Error::Arrangement { class: own, error };
-        let (Feature3::Facet(f), SurfacePart::Vertex(v)) = (c.ball, c.surface) else {
-            return Err(failed(AlongError::NoClass));
-        };
-        let arr = corner_arrangement(mesh, &reach, v, f, k).map_err(failed)?;
-        Ok(arr
-            .sectors
-            .into_iter()
-            .map(|s| Domain { own, plane: s.plane, anchor_index: arr.anchor, anchor: w[arr.anchor], cells: s.cells })
-            .collect::<Vec<_>>())
-    });
-    let corner_domains: Vec<Vec<Domain>> = corners.collect::<Result<_, _>>()?;
-    let mut domains: Vec<Domain> = faces.chain(edges).collect::<Result<_, _>>()?;
-    domains.extend(corner_domains.into_iter().flatten());
+        watch.done.fetch_add(1, Ordering::Relaxed);
+        Ok(got)
+    };
+    let domains: Vec<Vec<Domain>> = jobs.par_iter().map(domain).collect::<Result<_, _>>()?;
+    let domains: Vec<Domain> = domains.into_iter().flatten().collect();
     let mut out = Axis3::default();
     let mut weld = Weld::new(mesh.bbox().diagonal() * 1e-9);
     let mut sheet_of: FastMap<(Opposite, Opposite), usize> = FastMap::default();

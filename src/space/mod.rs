@@ -36,7 +36,7 @@ pub mod radius;
 
 pub use along::{opposite_along, opposite_along_in, Along, AlongChange, AlongError, AlongPiece, ChangeKind, Opposite};
 pub use arrangement::{domain_arrangement, face_arrangement, Cell, FaceArrangement};
-pub use axis::{medial_axis_3d, Axis3, Axis3Error, Sheet3};
+pub use axis::{medial_axis_3d, medial_axis_3d_watched, Axis3, Axis3Error, Sheet3, Watch};
 pub use classes::{contact_classes, ContactClass, ContactClasses};
 pub use corner_domain::{corner_arrangement, CornerArrangement, CornerSector};
 pub use domain::{DomainPlane, Line2};
