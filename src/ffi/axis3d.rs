@@ -10,10 +10,10 @@ use super::boundary::{check_threads, fill_items, guard, in_pool, nth};
 use super::handles::{arg, create, free, impl_options, options_init, query, Boxed, Handle, Options};
 use super::last_error::FfiError;
 use super::mesh3d::mx_mesh3d;
-use super::mesh3d_contacts::{mx_ball_part3, mx_surface_part3};
+use super::mesh3d_contacts::{ball_part_of, mx_ball_part3, mx_surface_part3};
 use super::mesh3d_query::{kind_of, mx_contact3_kind};
 use super::status::mx_status;
-use crate::shape::{Feature3, SurfacePart};
+use crate::shape::SurfacePart;
 use crate::space::{medial_axis_3d_watched, Axis3, Axis3Error, Opposite, Watch};
 use std::ffi::{c_int, c_void};
 use std::mem::size_of;
@@ -98,11 +98,7 @@ pub struct mx_axis3d_sheet {
 }
 
 fn class_of(c: &Opposite) -> mx_axis3d_class {
-    let (ball_part, ball_part_index) = match c.ball {
-        Feature3::Vertex(v) => (mx_ball_part3::MX_BALL_VERTEX, v),
-        Feature3::Edge(e) => (mx_ball_part3::MX_BALL_EDGE, e),
-        Feature3::Facet(f) => (mx_ball_part3::MX_BALL_FACET, f),
-    };
+    let (ball_part, ball_part_index) = ball_part_of(c.ball);
     let (surface_part, surface_index) = match c.surface {
         SurfacePart::Vertex(v) => (mx_surface_part3::MX_SURFACE_VERTEX, [v as usize; 2]),
         SurfacePart::Edge([a, b]) => (mx_surface_part3::MX_SURFACE_EDGE, [a as usize, b as usize]),

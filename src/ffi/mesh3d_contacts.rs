@@ -66,12 +66,17 @@ pub struct mx_contact3 {
     pub flat: i32,
 }
 
-fn to_c(x: &ExactContact, (radius, centre): (f64, Point3), corners: impl Fn(u32) -> [u32; 3]) -> mx_contact3 {
-    let (ball_part, ball_part_index) = match x.ball {
+/// A ball feature as C sees it: its kind and index.
+pub(super) fn ball_part_of(x: Feature3) -> (mx_ball_part3, usize) {
+    match x {
         Feature3::Vertex(v) => (mx_ball_part3::MX_BALL_VERTEX, v),
         Feature3::Edge(e) => (mx_ball_part3::MX_BALL_EDGE, e),
         Feature3::Facet(f) => (mx_ball_part3::MX_BALL_FACET, f),
-    };
+    }
+}
+
+fn to_c(x: &ExactContact, (radius, centre): (f64, Point3), corners: impl Fn(u32) -> [u32; 3]) -> mx_contact3 {
+    let (ball_part, ball_part_index) = ball_part_of(x.ball);
     let (surface_part, surface_vertices) = match x.surface {
         SurfacePart::Vertex(v) => (mx_surface_part3::MX_SURFACE_VERTEX, [v as usize; 2]),
         SurfacePart::Edge([a, b]) => (mx_surface_part3::MX_SURFACE_EDGE, [a as usize, b as usize]),
