@@ -635,7 +635,7 @@ fn query3d_answers_points_as_json() {
 
 /// `medax axis3d`: the axis of a perturbed octahedron under the
 /// tetrahedron as JSON (every triangle in one sheet, radii positive),
-/// OBJ and PLY with radii; a sheared L prism's EE sheets; a box with a
+/// OBJ and PLY with radii; a sheared L prism's EE sheets and picture; a box with a
 /// cavity's FV sheets; a turned cube on the prism exits 1 naming a facet.
 #[test]
 fn axis3d_writes_the_axis_of_a_convex_solid() {
@@ -689,8 +689,27 @@ fn axis3d_writes_the_axis_of_a_convex_solid() {
     let l = dir.join("l.off");
     let (pv, pt) = solids::l_prism(1.3, 1.0);
     std::fs::write(&l, medax::io::mesh::write_off(&pv, &pt)).unwrap();
-    let out = medax().arg("axis3d").arg(&l).args(["--ball", "tetra", "--json"]).arg(&json).output().unwrap();
+    let svg = dir.join("l.svg");
+    let out = medax()
+        .arg("axis3d")
+        .arg(&l)
+        .args(["--ball", "tetra", "--json"])
+        .arg(&json)
+        .arg("--svg")
+        .arg(&svg)
+        .output()
+        .unwrap();
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    // The picture: one filled path per axis triangle, over the outline.
+    let picture = std::fs::read_to_string(&svg).unwrap();
+    let filled = picture.matches("<path").count();
+    let n_tri = serde_json::from_str::<serde_json::Value>(&std::fs::read_to_string(&json).unwrap()).unwrap()
+        ["triangles"]
+        .as_array()
+        .unwrap()
+        .len();
+    assert!(picture.contains("<svg"), "not an SVG");
+    assert!(filled > n_tri && picture.contains("medial axis:"), "{filled} paths for {n_tri} triangles");
     let doc: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
     let ee = doc["sheets"].as_array().unwrap().iter().flat_map(|s| s["classes"].as_array().unwrap().clone());
     let ee: Vec<_> = ee.filter(|c| c["kind"] == "EE").collect();

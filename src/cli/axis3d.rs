@@ -7,7 +7,7 @@ use super::query3d::{feature_json, kind_name, parse_ball, part_json};
 use super::{write_file, write_streamed};
 use medax::io::mesh::write_obj;
 use medax::shape::{Ball3, Mesh3d, MeshOptions};
-use medax::space::{medial_axis_3d_watched, Axis3, Opposite, Watch};
+use medax::space::{axis3d_svg, medial_axis_3d_watched, radius_rgb, Axis3, Opposite, Watch};
 use serde_json::json;
 use std::io::Write;
 use std::path::Path;
@@ -45,8 +45,7 @@ fn write_ply_radius(w: &mut impl Write, axis: &Axis3) -> std::io::Result<()> {
     writeln!(w, "property uchar red\nproperty uchar green\nproperty uchar blue")?;
     writeln!(w, "element face {}\nproperty list uchar uint vertex_indices\nend_header", axis.triangles.len())?;
     for v in &axis.vertices {
-        let t = (v[3] - lo) / span;
-        let (r, g, b) = ((255.0 * t) as u8, (255.0 * (1.0 - (2.0 * t - 1.0).abs())) as u8, (255.0 * (1.0 - t)) as u8);
+        let [r, g, b] = radius_rgb((v[3] - lo) / span);
         writeln!(w, "{} {} {} {} {r} {g} {b}", v[0], v[1], v[2], v[3])?;
     }
     for t in &axis.triangles {
@@ -86,6 +85,7 @@ pub fn run(
     json_out: Option<&Path>,
     obj: Option<&Path>,
     ply: Option<&Path>,
+    svg: Option<&Path>,
 ) -> Result<(), ExitCode> {
     let fail = |msg: String, code: u8| {
         eprintln!("medax: {msg}");
@@ -112,10 +112,13 @@ pub fn run(
     if let Some(p) = ply {
         write_streamed(p, |w| write_ply_radius(w, &axis))?;
     }
+    if let Some(p) = svg {
+        write_file(p, &axis3d_svg(&mesh, &axis, 900.0))?;
+    }
     let text = axis_json(&axis).to_string();
     match json_out {
         Some(p) => write_file(p, &text),
-        None if obj.is_none() && ply.is_none() => {
+        None if obj.is_none() && ply.is_none() && svg.is_none() => {
             super::put(&text);
             super::put("\n");
             Ok(())

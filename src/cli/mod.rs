@@ -266,6 +266,9 @@ enum Command {
         /// Write the axis as PLY with a radius and a colour by radius per vertex.
         #[arg(long)]
         ply: Option<PathBuf>,
+        /// Write a picture: the axis coloured by radius over the solid's outline, an oblique view.
+        #[arg(long)]
+        svg: Option<PathBuf>,
     },
     /// Validate a shape, or the shapes of a drawing, and report loops, elements, joints, area, extent and what was ignored;
     /// or validate a solid (.obj, .off, .stl, .ply) and report its components, volume, area and genus.
@@ -346,8 +349,8 @@ pub fn run() -> ExitCode {
         Command::Query3d { mesh, ball, points, exact, json } => {
             query3d::run(&mesh, ball.as_deref(), &points, exact, json.as_deref())
         }
-        Command::Axis3d { mesh, ball, threads, json, obj, ply } => {
-            axis3d::run(&mesh, &ball, threads, json.as_deref(), obj.as_deref(), ply.as_deref())
+        Command::Axis3d { mesh, ball, threads, json, obj, ply, svg } => {
+            axis3d::run(&mesh, &ball, threads, json.as_deref(), obj.as_deref(), ply.as_deref(), svg.as_deref())
         }
         Command::Axis(args) => axis::run(&args),
         Command::Voronoi(args) => voronoi::run(&args),

@@ -22,6 +22,7 @@
 //! * [`corner_domain`]: the contact domain of an FV class (a ball facet
 //!   on a vertex, between its sides and the EV balls' polygonal line) and
 //!   its arrangement.
+//! * [`draw`]: an SVG picture of an axis over its solid's outline.
 //! * [`axis`]: the medial axis of a solid assembled from its domains'
 //!   arrangements, a triangle mesh of sheets with radii.
 
@@ -31,6 +32,7 @@ pub mod axis;
 pub mod classes;
 pub mod corner_domain;
 pub mod domain;
+pub mod draw;
 pub mod edge_domain;
 pub mod radius;
 
@@ -40,5 +42,6 @@ pub use axis::{medial_axis_3d, medial_axis_3d_watched, Axis3, Axis3Error, Sheet3
 pub use classes::{contact_classes, ContactClass, ContactClasses};
 pub use corner_domain::{corner_arrangement, CornerArrangement, CornerSector};
 pub use domain::{DomainPlane, Line2};
+pub use draw::{axis3d_svg, radius_rgb};
 pub use edge_domain::{edge_arrangement, EdgeArrangement};
 pub use radius::{radius_fn, Affine3, RadiusFn};
