@@ -223,17 +223,7 @@ fn axes_of_a_box_with_a_cavity_hold_every_maximal_ball_under_more_balls() {
 #[test]
 #[ignore]
 fn axes_of_a_pocket_and_a_notched_cube_hold_every_maximal_ball() {
-    let mut slab: Vec<[i32; 3]> = Vec::new();
-    for i in 0..4 {
-        for j in 0..4 {
-            slab.push([i, j, 0]);
-            if ![[1, 1], [2, 1], [1, 2]].contains(&[i, j]) {
-                slab.push([i, j, 1]);
-            }
-        }
-    }
-    let mut pocket = polycube(&slab, 1.0);
-    pocket.0.iter_mut().filter(|p| **p == [2.0, 2.0, 1.0]).for_each(|p| p[2] = 0.4);
+    let pocket = common::solids::pocket_with_valley();
     let notch = polycube(&[[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0], [0, 0, 1], [1, 0, 1], [0, 1, 1]], 1.0);
     let two = &reflex_balls()[..2];
     check_solids_with(&[("pocket with a valley", solid(pocket)), ("notched cube", solid(notch))], two, 61, 0);

@@ -197,16 +197,7 @@ fn the_l_prism_has_one_reflex_edge_and_its_edge_classes() {
 #[test]
 fn face_vertex_classes_are_the_facets_a_tiny_ball_rests_on() {
     use common::maximal_oracle::{inside, least_gauge, planes};
-    use medax::shape::mesh_samples::{polycube, union};
-    let mut slab: Vec<[i32; 3]> = Vec::new();
-    for i in 0..4 {
-        for j in 0..4 {
-            slab.push([i, j, 0]);
-            if ![[1, 1], [2, 1], [1, 2]].contains(&[i, j]) {
-                slab.push([i, j, 1]);
-            }
-        }
-    }
+    use medax::shape::mesh_samples::union;
     let outer = cuboid([-6.0, -6.0, -6.0], [6.0, 6.0, 6.0]);
     let inner = cuboid([-2.0, -2.5, -3.0], [3.0, 2.0, 1.5]);
     let (s, c) = (0.4f64.sin(), 0.4f64.cos());
@@ -218,10 +209,7 @@ fn face_vertex_classes_are_the_facets_a_tiny_ball_rests_on() {
         ("turned icosahedron", Ball3::icosahedron().rotated([0.5, 0.3, 0.1]).unwrap()),
     ];
     let (mut classes_seen, mut saddles) = (0, 0);
-    // The floor's corner at the L's inner corner lowered: a valley, whose
-    // exterior (the pocket) lies beyond a plane though it is not convex.
-    let mut pocket = polycube(&slab, 1.0);
-    pocket.0.iter_mut().filter(|p| **p == [2.0, 2.0, 1.0]).for_each(|p| p[2] = 0.4);
+    let pocket = common::solids::pocket_with_valley();
     for (solid, soup) in [("L pocket", pocket), ("turned cavity", cavity)] {
         let m = mesh(&soup);
         let tris: Vec<[Point3; 3]> = m.triangles().iter().map(|t| t.map(|i| m.positions()[i as usize])).collect();
